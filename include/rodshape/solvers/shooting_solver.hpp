@@ -1,0 +1,58 @@
+// shooting_solver.hpp: solve the clamped rod's boundary-value problem for the unknown base wrench
+// w = (n(0), m(0)) with Levenberg–Marquardt on the exact Jacobian, warm-started from a guess, and
+// with continuation of the boundary condition from a solved state when the direct solve fails.
+#pragma once
+
+#include <limits>
+#include <string>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/solvers/solve_status.hpp"
+#include "rodshape/solvers/tip_condition.hpp"
+
+namespace rodshape {
+
+struct ShootingOptions {
+  int max_iterations = 100;          // Levenberg–Marquardt iterations (accepted steps) per solve
+  double residual_tolerance = 1e-10; // converged when ||r(w)||_∞ ≤ residual_tolerance (m, rad, N, N·m)
+  /// When the direct solve fails, step the boundary condition from the rest (or a solved) state:
+  /// clamped and grasped tips move from where the guess puts them (position linear, rotation slerp),
+  /// a free tip's loads are scaled from 0. Steps are halved on failure down to 1/max_continuation_steps.
+  bool continuation = true;
+  int max_continuation_steps = 256;
+  /// Derivatives stored in the returned configuration.
+  Derivatives output_derivatives = Derivatives::AllNodes;
+
+  /// Throws InputError naming the field, e.g. "residual_tolerance = -1 must be > 0".
+  void validate() const;
+};
+
+struct ShootingSummary {
+  SolveStatus status = SolveStatus::NotRun;
+  std::string message = "solve_equilibrium() was not called";
+  int iterations = 0;              // accepted Levenberg–Marquardt steps, all stages together
+  int integrations = 0;            // forward integrations of the rod (each with Tip derivatives)
+  int continuation_steps = 0;      // 0 when the direct solve converged
+  double residual_norm = std::numeric_limits<double>::quiet_NaN();  // ||r||_∞ at the end
+
+  bool converged() const { return status == SolveStatus::Converged; }
+  /// One line: "converged in 5 iterations (6 integrations), |r| = 3.1e-13".
+  std::string brief() const;
+};
+
+struct ShootingSolution {
+  ShootingSummary summary;
+  BaseWrench base_wrench;          // the last iterate (the solution when converged)
+  RodConfiguration configuration;  // integrated at base_wrench, with options.output_derivatives
+};
+
+/// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
+/// Throws InputError for bad input (rod, tip condition, options); a solve that does not converge is
+/// reported in the summary's status, never thrown.
+ShootingSolution solve_equilibrium(const ClampedRod& rod,
+                                   const TipCondition& tip,
+                                   const BaseWrench& guess = {},
+                                   const ShootingOptions& options = {});
+
+}  // namespace rodshape

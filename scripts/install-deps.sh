@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages rodshape builds, tests and benchmarks with.
+# Usage: scripts/install-deps.sh        (as root, or with sudo available)
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev            # core linear algebra
+  libyaml-cpp-dev          # task files
+  nlohmann-json3-dev       # results
+  libcli11-dev             # command line
+  libgtest-dev             # tests
+  libbenchmark-dev         # bench/
+  coinor-libipopt-dev      # shape optimisation (interior point)
+  liborocos-kdl-dev liburdfdom-dev  # robot arms
+  python3                  # test helpers
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: installed ${missing[*]}"
