@@ -15,13 +15,17 @@ struct StabilityReport {
   bool stable = false;
   /// Where the first conjugate point lies (J(s) singular), if any.
   std::optional<double> conjugate_point_s;
-  /// min over nodes s_i > 0 of σ_min(J̃(s_i)), where J̃ is J made dimensionless with the
-  /// cantilever scales of length s: positions / s, forces · s²/EI, moments · s/EI (EI the mean of
-  /// EIx and EIy). J̃ tends to a constant as s → 0, so this is comparable along the rod; 0 at a
+  /// min over nodes s_i > 0 of σ_min(J̃(s_i)), where J̃ = diag(1/s, 1/s, 1/s, 1, 1, 1) J
+  /// diag(EI/s², EI/s², EI/s², EI/s, EI/s, EI/s) is J made dimensionless with the scales of a
+  /// cantilever of length s (EI the mean of EIx and EIy). J̃ tends to a constant as s → 0 (its
+  /// bending blocks to [[1/3, 1/2], [1/2, 1]]), so this is comparable along the rod; 0 at a
   /// conjugate point.
   double min_singular_value = 0.0;
   /// σ_min(J̃(L)): how far the tip pose is from losing control of the shape.
   double tip_singular_value = 0.0;
+  /// J(s) is singular along the whole rod, so the test does not apply: a straight Kirchhoff rod,
+  /// whose tip cannot move along its tangent. `stable` is then false and means "not shown stable".
+  bool degenerate = false;
 };
 
 /// `configuration` must come from integrate(rod, ..., Derivatives::AllNodes). A sign change of

@@ -1,0 +1,20 @@
+// result_json.hpp: an equilibrium result as JSON text (the schema is in docs/task-file.md).
+// Non-finite numbers are written as null. The JSON library stays private to rodshape.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+#include "rodshape/solvers/stability.hpp"
+
+namespace rodshape {
+
+/// The whole result document, ending with a newline. `stability` is absent when it was not assessed
+/// (a free tip, or a solve that did not converge): "stable" and "stability" are then null.
+std::string equilibrium_result_json(const ShootingSolution& solution,
+                                    const std::optional<StabilityReport>& stability,
+                                    const ClampedRod& rod);
+
+}  // namespace rodshape

@@ -1,0 +1,21 @@
+// task_reader.hpp: task files (YAML) in. Every error is an InputError whose one-line message names
+// the file, the line and the field path, e.g. "task.yaml:4: rod.length = -0.3 must be > 0".
+// Unknown keys are rejected ("rod.lenght: unknown key; did you mean 'length'?"). The format is
+// documented in docs/task-file.md.
+#pragma once
+
+#include <string>
+
+#include "rodshape/io/equilibrium_task.hpp"
+
+namespace rodshape {
+
+/// Reads and checks the task file at `path` (messages name the path as given). Throws InputError
+/// when the file cannot be read, is not valid YAML, or describes an invalid task.
+EquilibriumTask read_equilibrium_task(const std::string& path);
+
+/// The same for a task already in memory; `source_name` stands for the file in messages.
+EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
+                                       const std::string& source_name);
+
+}  // namespace rodshape

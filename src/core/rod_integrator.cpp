@@ -1,0 +1,86 @@
+#include "rodshape/core/rod_integrator.hpp"
+
+#include "rk4_step.hpp"
+
+namespace rodshape {
+
+namespace {
+
+using detail::Matrix63d;
+using detail::NodeState;
+using detail::OdePoint;
+using detail::Slot;
+
+void store_node(const OdePoint& point, const NodeState& state, int i, double s,
+                RodConfiguration& out) {
+  out.s[i] = s;
+  out.p[i] = state.y.segment<3>(Slot::p);
+  out.R[i] = point.R;
+  out.n[i] = state.y.segment<3>(Slot::n);
+  out.m[i] = state.y.segment<3>(Slot::m);
+  out.v[i] = point.v;
+  out.u[i] = point.u;
+}
+
+void store_node_tangent(const Matrix63d& theta, const NodeState& state, int i,
+                        RodConfiguration& out) {
+  out.dp_dw[i] = state.Y.middleCols<3>(Slot::p).transpose();
+  out.dtheta_dw[i] = theta.transpose();
+  out.dn_dw[i] = state.Y.middleCols<3>(Slot::n).transpose();
+  out.dm_dw[i] = state.Y.middleCols<3>(Slot::m).transpose();
+}
+
+template <bool WithTangent>
+void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& out) {
+  const detail::CosseratOde ode(rod);
+  const int N = rod.intervals;
+  const double h = rod.step();
+  const bool all_nodes = out.derivatives == Derivatives::AllNodes;
+  OdePoint point;
+  Matrix63d theta;
+  for (int i = 0; i < N; ++i) {
+    const NodeState at_node = state;
+    detail::rk4_step<WithTangent>(ode, h, state, point, theta);
+    store_node(point, at_node, i, i * h, out);  // `point` and `theta` are at node i
+    if (WithTangent && all_nodes) store_node_tangent(theta, at_node, i, out);
+  }
+  // The tip: one more evaluation for R, v, u at s = L (no step).
+  detail::OdeState unused;
+  detail::evaluate(ode, state.y, unused, point);
+  store_node(point, state, N, rod.properties.length, out);
+  out.energy = state.y[Slot::e];
+  if constexpr (WithTangent) {
+    theta = detail::body_rotation_tangent(state.y.segment<4>(Slot::q), point.q_scale, state.Y);
+    if (all_nodes) store_node_tangent(theta, state, N, out);
+    out.tip_dp_dw = state.Y.middleCols<3>(Slot::p).transpose();
+    out.tip_dtheta_dw = theta.transpose();
+    out.tip_dn_dw = state.Y.middleCols<3>(Slot::n).transpose();
+    out.tip_dm_dw = state.Y.middleCols<3>(Slot::m).transpose();
+    out.denergy_dw = state.Y.col(Slot::e).transpose();
+  }
+}
+
+}  // namespace
+
+void integrate(const ClampedRod& rod,
+               const BaseWrench& base_wrench,
+               RodConfiguration& out,
+               Derivatives derivatives) {
+  out.resize(rod.nodes(), derivatives);
+  NodeState state = detail::initial_node_state(rod, base_wrench.force, base_wrench.moment);
+  if (derivatives == Derivatives::None) {
+    integrate_nodes<false>(rod, state, out);
+  } else {
+    integrate_nodes<true>(rod, state, out);
+  }
+}
+
+RodConfiguration integrate(const ClampedRod& rod,
+                           const BaseWrench& base_wrench,
+                           Derivatives derivatives) {
+  RodConfiguration out;
+  integrate(rod, base_wrench, out, derivatives);
+  return out;
+}
+
+}  // namespace rodshape

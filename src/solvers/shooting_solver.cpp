@@ -1,0 +1,330 @@
+#include "rodshape/solvers/shooting_solver.hpp"
+
+#include <unsupported/Eigen/LevenbergMarquardt>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/core/so3.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/solvers/shooting_residual.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+void ShootingOptions::validate() const {
+  if (max_iterations < 1)
+    throw InputError("solver.max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_positive("solver.tolerance", residual_tolerance);
+  if (max_continuation_steps < 1)
+    throw InputError("solver.max_continuation_steps = " + std::to_string(max_continuation_steps) +
+                     " must be >= 1");
+}
+
+std::string ShootingSummary::brief() const {
+  std::ostringstream out;
+  out << to_string(status) << " in " << iterations << " iterations (" << integrations
+      << " integrations";
+  if (continuation_steps > 0) out << ", " << continuation_steps << " continuation steps";
+  out << "), |r| = ";
+  out.precision(3);
+  out << residual_norm;
+  return out.str();
+}
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+void validate_pose(const Pose& pose, const std::string& field) {
+  detail::require_finite(field + ".position", pose.position);
+  if (!pose.rotation.allFinite()) throw InputError(field + ".rotation must be finite");
+  if (!is_rotation(pose.rotation, 1e-6))
+    throw InputError(field + ".rotation is not a rotation (RᵀR = I and det R = 1 within 1e-6)");
+}
+
+void validate_tip(const TipCondition& tip) {
+  std::visit(Overloaded{
+                 [](const FreeTip& t) {
+                   detail::require_finite("tip.wrench.force", t.wrench.force);
+                   detail::require_finite("tip.wrench.moment", t.wrench.moment);
+                 },
+                 [](const ClampedTip& t) { validate_pose(t.pose, "tip"); },
+                 [](const GraspedTip& t) { validate_pose(t.pose, "tip"); },
+             },
+             tip);
+}
+
+/// Row scales that make the residual dimensionless for Levenberg–Marquardt's trust region:
+/// positions / L, angles as they are, forces · L²/EI, moments · L/EI.
+Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
+  const double L = rod.properties.length;
+  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
+  const double force = L * L / EI, moment = L / EI;
+  Vector6d scale;
+  std::visit(Overloaded{
+                 [&](const FreeTip&) { scale << force, force, force, moment, moment, moment; },
+                 [&](const ClampedTip&) { scale << 1 / L, 1 / L, 1 / L, 1, 1, 1; },
+                 [&](const GraspedTip& t) {
+                   for (int i = 0; i < 3; ++i) {
+                     scale[i] = t.released[i] ? force : 1 / L;
+                     scale[3 + i] = t.released[3 + i] ? moment : 1.0;
+                   }
+                 },
+             },
+             tip);
+  return scale;
+}
+
+/// The shooting residual as Eigen's Levenberg–Marquardt sees it. Every evaluation integrates with
+/// tip derivatives and keeps the Jacobian, so that df() at an accepted point costs nothing.
+class ShootingProblem : public Eigen::DenseFunctor<double> {
+ public:
+  ShootingProblem(const ClampedRod& rod, const TipCondition& tip, RodConfiguration& work)
+      : Eigen::DenseFunctor<double>(6, 6),
+        rod_(rod),
+        tip_(tip),
+        work_(work),
+        row_scale_(residual_row_scale(rod, tip)) {}
+
+  int operator()(const InputType& w, ValueType& f) {
+    evaluate(w);
+    // A non-finite shape is a very bad point, not an error: the trust region shrinks.
+    if (residual_.allFinite()) {
+      f = row_scale_.cwiseProduct(residual_);
+    } else {
+      f.setConstant(6, 1e150);
+    }
+    return 0;
+  }
+
+  int df(const InputType& w, JacobianType& J) {
+    if (!has_cache_ || Vector6d(w) != w_cached_) evaluate(w);
+    J = row_scale_.asDiagonal() * jacobian_;
+    return 0;
+  }
+
+  /// The unscaled residual at w (re-using the last evaluation when it was at w).
+  const Vector6d& residual_at(const Vector6d& w) {
+    if (!has_cache_ || w != w_cached_) evaluate(w);
+    return residual_;
+  }
+  const Matrix6d& jacobian() const { return jacobian_; }
+  int integrations() const { return integrations_; }
+
+ private:
+  void evaluate(const Vector6d& w) {
+    integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip);
+    shooting_residual(tip_, work_, residual_, jacobian_);
+    w_cached_ = w;
+    has_cache_ = true;
+    ++integrations_;
+  }
+
+  const ClampedRod& rod_;
+  const TipCondition& tip_;
+  RodConfiguration& work_;
+  Vector6d row_scale_;
+  Vector6d w_cached_ = Vector6d::Zero();
+  Vector6d residual_ = Vector6d::Zero();
+  Matrix6d jacobian_ = Matrix6d::Zero();
+  bool has_cache_ = false;
+  int integrations_ = 0;
+};
+
+struct DirectResult {
+  SolveStatus status = SolveStatus::NotRun;
+  std::string message;
+  int iterations = 0;
+  int integrations = 0;
+  double residual_norm = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// Levenberg–Marquardt from w (in: guess, out: last iterate).
+DirectResult solve_direct(const ClampedRod& rod,
+                          const TipCondition& tip,
+                          const ShootingOptions& options,
+                          RodConfiguration& work,
+                          Vector6d& w) {
+  ShootingProblem problem(rod, tip, work);
+  Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
+  // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
+  lm.setFtol(0.0);
+  lm.setXtol(0.0);
+  lm.setGtol(0.0);
+  lm.setMaxfev(20 * options.max_iterations);
+  // The trust region is measured in bending units of the unknown: forces in EI/L², moments in EI/L,
+  // and starts at one such unit. Column-norm scaling (MINPACK's default) lets the first step from a
+  // straight rod jump to an axial force of order EA/L, because shortening by bending is of second
+  // order; the physical scale keeps it to the bending forces that actually move the tip.
+  const double L = rod.properties.length;
+  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
+  lm.setExternalScaling(true);
+  lm.diag().resize(6);
+  lm.diag() << L * L / EI, L * L / EI, L * L / EI, L / EI, L / EI, L / EI;
+  lm.setFactor(1.0);
+
+  DirectResult result;
+  Eigen::VectorXd x = w;
+  auto lm_status = lm.minimizeInit(x);
+  while (true) {
+    const Vector6d& r = problem.residual_at(x);
+    result.residual_norm = r.allFinite() ? r.lpNorm<Eigen::Infinity>()
+                                         : std::numeric_limits<double>::infinity();
+    if (result.residual_norm <= options.residual_tolerance) {
+      result.status = SolveStatus::Converged;
+      result.message = "converged";
+      break;
+    }
+    if (!x.allFinite()) {
+      result.status = SolveStatus::Diverged;
+      result.message = "the base wrench became non-finite";
+      break;
+    }
+    if (result.iterations >= options.max_iterations) {
+      result.status = SolveStatus::IterationLimit;
+      result.message = "reached solver.max_iterations = " + std::to_string(options.max_iterations);
+      break;
+    }
+    lm_status = lm.minimizeOneStep(x);
+    ++result.iterations;
+    using Eigen::LevenbergMarquardtSpace::Status;
+    if (lm_status == Status::TooManyFunctionEvaluation) {
+      result.status = SolveStatus::IterationLimit;
+      result.message = "too many rejected steps";
+      break;
+    }
+    if (lm_status != Status::Running) {
+      // No step reduces |r| any more while r ≠ 0: a local minimum of |r|², where Jᵀr = 0, so the
+      // Jacobian is singular (or the problem has no solution near the guess).
+      const Vector6d& r_end = problem.residual_at(x);
+      result.residual_norm = r_end.lpNorm<Eigen::Infinity>();
+      if (result.residual_norm <= options.residual_tolerance) {
+        result.status = SolveStatus::Converged;
+        result.message = "converged";
+      } else {
+        result.status = SolveStatus::Singular;
+        result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
+                         ": the Jacobian is singular there, no step reduces the residual";
+      }
+      break;
+    }
+  }
+  w = x;
+  result.integrations = problem.integrations();
+  return result;
+}
+
+/// The homotopy of the boundary-value problem: at t = 0 the rod is unloaded and the tip is where
+/// the unloaded rod puts it (w = 0 solves it exactly); at t = 1 it is the problem asked.
+struct Homotopy {
+  const ClampedRod& rod;
+  const TipCondition& tip;
+  Pose rest_tip;
+
+  ClampedRod rod_at(double t) const {
+    ClampedRod scaled = rod;
+    scaled.load.force *= t;
+    scaled.load.moment *= t;
+    return scaled;
+  }
+
+  TipCondition tip_at(double t) const {
+    const auto blend = [&](const Pose& target) {
+      Pose pose;
+      pose.position = (1.0 - t) * rest_tip.position + t * target.position;
+      const Eigen::Quaterniond q0(rest_tip.rotation), q1(target.rotation);
+      pose.rotation = q0.slerp(t, q1).toRotationMatrix();
+      return pose;
+    };
+    return std::visit(Overloaded{
+                          [&](const FreeTip& f) -> TipCondition {
+                            return FreeTip{{t * f.wrench.force, t * f.wrench.moment}};
+                          },
+                          [&](const ClampedTip& c) -> TipCondition {
+                            return ClampedTip{blend(c.pose)};
+                          },
+                          [&](const GraspedTip& g) -> TipCondition {
+                            return GraspedTip{blend(g.pose), g.released};
+                          },
+                      },
+                      tip);
+  }
+};
+
+}  // namespace
+
+ShootingSolution solve_equilibrium(const ClampedRod& rod,
+                                   const TipCondition& tip,
+                                   const BaseWrench& guess,
+                                   const ShootingOptions& options) {
+  rod.validate();
+  validate_tip(tip);
+  options.validate();
+  detail::require_finite("initial_wrench.force", guess.force);
+  detail::require_finite("initial_wrench.moment", guess.moment);
+
+  ShootingSolution solution;
+  ShootingSummary& summary = solution.summary;
+  RodConfiguration work;
+  work.resize(rod.nodes(), Derivatives::Tip);
+
+  Vector6d w = guess.to_vector();
+  DirectResult direct = solve_direct(rod, tip, options, work, w);
+  summary.iterations = direct.iterations;
+  summary.integrations = direct.integrations;
+
+  if (direct.status != SolveStatus::Converged && options.continuation) {
+    // Continuation from the unloaded rod, with adaptive steps in t and a secant predictor.
+    Homotopy homotopy{rod, tip, {}};
+    homotopy.rest_tip = integrate(homotopy.rod_at(0.0), BaseWrench{}).tip();
+    Vector6d w_solved = Vector6d::Zero(), w_previous = Vector6d::Zero();
+    double t = 0.0, dt = 0.125, dt_previous = 0.0;
+    const double dt_min = 1.0 / options.max_continuation_steps;
+    DirectResult step;
+    while (t < 1.0) {
+      dt = std::min(dt, 1.0 - t);
+      const double t_next = t + dt;
+      Vector6d w_step = w_solved;
+      if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
+      const ClampedRod rod_t = homotopy.rod_at(t_next);
+      step = solve_direct(rod_t, homotopy.tip_at(t_next), options, work, w_step);
+      summary.iterations += step.iterations;
+      summary.integrations += step.integrations;
+      ++summary.continuation_steps;
+      if (step.status == SolveStatus::Converged) {
+        w_previous = w_solved;
+        w_solved = w_step;
+        dt_previous = dt;
+        t = t_next;
+        dt *= 2.0;
+      } else if (dt * 0.5 >= dt_min) {
+        dt *= 0.5;
+      } else {
+        break;
+      }
+    }
+    if (step.status == SolveStatus::Converged && t >= 1.0) {
+      direct = step;
+      w = w_solved;
+    } else {
+      direct.message += "; continuation stopped at t = " + detail::format_value(t) + " (" +
+                        step.message + ")";
+    }
+  }
+
+  summary.status = direct.status;
+  summary.message = direct.message;
+  summary.residual_norm = direct.residual_norm;
+  solution.base_wrench = Wrench::from_vector(w);
+  integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
+  return solution;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,158 @@
+#include "rodshape/solvers/stability.hpp"
+
+#include <Eigen/SVD>
+#include <cmath>
+
+#include "core/rk4_step.hpp"
+#include "rodshape/error.hpp"
+
+namespace rodshape {
+
+namespace {
+
+using detail::NodeState;
+using detail::Slot;
+
+constexpr double kConjugateTolerance = 1e-6;  // σ_min(J̃) below this after refinement: singular
+
+/// J̃(s) from the position and rotation derivatives at s (see StabilityReport).
+Matrix6d scaled_jacobian(const Matrix36d& dp_dw, const Matrix36d& dtheta_dw, double s, double EI) {
+  Matrix6d J;
+  J << dp_dw / s, dtheta_dw;
+  J.leftCols<3>() *= EI / (s * s);
+  J.rightCols<3>() *= EI / s;
+  return J;
+}
+
+double smallest_singular_value(const Matrix6d& J) {
+  return Eigen::JacobiSVD<Matrix6d>(J).singularValues()(5);
+}
+
+/// Re-enters the integration at node i: y from the stored node, the tangent from the stored
+/// derivatives (δq = ½ q ⊗ (0, θ) for each direction).
+NodeState node_state(const RodConfiguration& c, int i) {
+  NodeState state;
+  const Eigen::Quaterniond q(c.R[i]);
+  state.y << q.w(), q.x(), q.y(), q.z(), c.p[i], c.n[i], c.m[i], 0.0;
+  state.Y.setZero();
+  for (int j = 0; j < 6; ++j) {
+    const Eigen::Vector3d theta = c.dtheta_dw[i].col(j);
+    const Eigen::Quaterniond dq = q * Eigen::Quaterniond(0.0, 0.5 * theta.x(), 0.5 * theta.y(),
+                                                         0.5 * theta.z());
+    state.Y(j, Slot::q) = dq.w();
+    state.Y.block<1, 3>(j, Slot::q + 1) = dq.vec().transpose();
+  }
+  state.Y.middleCols<3>(Slot::p) = c.dp_dw[i].transpose();
+  state.Y.middleCols<3>(Slot::n) = c.dn_dw[i].transpose();
+  state.Y.middleCols<3>(Slot::m) = c.dm_dw[i].transpose();
+  return state;
+}
+
+/// Evaluates J̃ between nodes by one Runge–Kutta step from node i.
+class JacobianBetweenNodes {
+ public:
+  JacobianBetweenNodes(const ClampedRod& rod, const RodConfiguration& c, double EI)
+      : ode_(rod), c_(c), EI_(EI) {}
+
+  Matrix6d at(int i, double s) const {
+    NodeState state = node_state(c_, i);
+    detail::OdePoint start;
+    detail::Matrix63d theta;
+    detail::rk4_step<true>(ode_, s - c_.s[i], state, start, theta);
+    const double q_scale = 2.0 / state.y.segment<4>(Slot::q).squaredNorm();
+    const detail::Matrix63d theta_s =
+        detail::body_rotation_tangent(state.y.segment<4>(Slot::q), q_scale, state.Y);
+    return scaled_jacobian(state.Y.middleCols<3>(Slot::p).transpose(), theta_s.transpose(), s, EI_);
+  }
+
+ private:
+  detail::CosseratOde ode_;
+  const RodConfiguration& c_;
+  double EI_;
+};
+
+}  // namespace
+
+StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+  if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
+    throw InputError("assess_stability needs a configuration integrated with Derivatives::AllNodes");
+  if (c.nodes() != rod.nodes())
+    throw InputError("assess_stability: the configuration has " + std::to_string(c.nodes()) +
+                     " nodes, the rod " + std::to_string(rod.nodes()));
+
+  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
+  const int N = c.nodes() - 1;
+  std::vector<double> sigma(N + 1, 0.0), det(N + 1, 0.0);
+  for (int i = 1; i <= N; ++i) {
+    const Matrix6d J = scaled_jacobian(c.dp_dw[i], c.dtheta_dw[i], c.s[i], EI);
+    sigma[i] = smallest_singular_value(J);
+    det[i] = J.determinant();
+  }
+
+  StabilityReport report;
+  report.tip_singular_value = sigma[N];
+  report.min_singular_value = *std::min_element(sigma.begin() + 1, sigma.end());
+  int singular_nodes = 0;
+  for (int i = 1; i <= N; ++i) singular_nodes += sigma[i] <= kConjugateTolerance;
+  if (2 * singular_nodes > N) {
+    report.degenerate = true;
+    report.stable = false;
+    return report;
+  }
+
+  const JacobianBetweenNodes between(rod, c, EI);
+  const auto sigma_at = [&](int i, double s) { return smallest_singular_value(between.at(i, s)); };
+  std::optional<double> conjugate;
+
+  // 1. A sign change of det J̃ between nodes i-1 and i: bisect on the sign.
+  for (int i = 2; i <= N && !conjugate; ++i) {
+    if (std::signbit(det[i]) == std::signbit(det[i - 1])) continue;
+    double a = c.s[i - 1], b = c.s[i];
+    const bool sign_a = std::signbit(det[i - 1]);
+    for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
+      const double mid = 0.5 * (a + b);
+      (std::signbit(between.at(i - 1, mid).determinant()) == sign_a ? a : b) = mid;
+    }
+    conjugate = 0.5 * (a + b);
+  }
+
+  // 2. A local minimum of σ_min at a node: golden-section search on (s_{i-1}, s_{i+1}) for a root
+  //    that keeps the sign of det (a double root, as when EIx = EIy), or two roots within one
+  //    interval.
+  for (int i = 1; i <= N && !conjugate; ++i) {
+    const bool left_ok = i == 1 || sigma[i] <= sigma[i - 1];
+    const bool right_ok = i == N || sigma[i] <= sigma[i + 1];
+    if (!left_ok || !right_ok) continue;
+    if (sigma[i] <= kConjugateTolerance) {
+      conjugate = c.s[i];
+      break;
+    }
+    const int from = i - 1;
+    double a = i == 1 ? 0.5 * c.s[1] : c.s[i - 1];
+    double b = i == N ? c.s[N] : c.s[i + 1];
+    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+    double f1 = sigma_at(from, x1), f2 = sigma_at(from, x2);
+    for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
+      if (f1 < f2) {
+        b = x2, x2 = x1, f2 = f1;
+        x1 = b - golden * (b - a);
+        f1 = sigma_at(from, x1);
+      } else {
+        a = x1, x1 = x2, f1 = f2;
+        x2 = a + golden * (b - a);
+        f2 = sigma_at(from, x2);
+      }
+    }
+    const double f_min = std::min(f1, f2);
+    report.min_singular_value = std::min(report.min_singular_value, f_min);
+    if (f_min <= kConjugateTolerance) conjugate = f1 < f2 ? x1 : x2;
+  }
+
+  report.conjugate_point_s = conjugate;
+  report.stable = !conjugate.has_value();
+  if (conjugate) report.min_singular_value = 0.0;
+  return report;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,43 @@
+// validation.hpp (private): checks that throw InputError with a message naming the field and value,
+// e.g. "rod.length = -0.3 must be > 0".
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "rodshape/error.hpp"
+
+namespace rodshape::detail {
+
+inline std::string format_value(double value) {
+  std::ostringstream out;
+  out.precision(6);
+  out << value;
+  return out.str();
+}
+
+inline void require_finite(const std::string& field, double value) {
+  if (!std::isfinite(value)) throw InputError(field + " = " + format_value(value) + " must be finite");
+}
+
+inline void require_positive(const std::string& field, double value) {
+  require_finite(field, value);
+  if (!(value > 0.0)) throw InputError(field + " = " + format_value(value) + " must be > 0");
+}
+
+inline void require_non_negative(const std::string& field, double value) {
+  require_finite(field, value);
+  if (value < 0.0) throw InputError(field + " = " + format_value(value) + " must be >= 0");
+}
+
+template <typename Derived>
+void require_finite(const std::string& field, const Eigen::MatrixBase<Derived>& value) {
+  for (Eigen::Index i = 0; i < value.size(); ++i)
+    if (!std::isfinite(value(i)))
+      throw InputError(field + "[" + std::to_string(i) + "] = " + format_value(value(i)) +
+                       " must be finite");
+}
+
+}  // namespace rodshape::detail
