@@ -12,6 +12,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstring>
 
 #include "rodshape/core/clamped_rod.hpp"
 
@@ -52,15 +53,6 @@ struct OdePoint {
   double q_scale;                  // 2/|q|²
 };
 
-/// a × d for each row d of D.
-inline Matrix63d cross_rows(const Eigen::Vector3d& a, const Matrix63d& D) {
-  Matrix63d out;
-  out.col(0) = a.y() * D.col(2) - a.z() * D.col(1);
-  out.col(1) = a.z() * D.col(0) - a.x() * D.col(2);
-  out.col(2) = a.x() * D.col(1) - a.y() * D.col(0);
-  return out;
-}
-
 /// R(q/|q|), exactly orthonormal for any q ≠ 0.
 inline Eigen::Matrix3d rotation_of(const Eigen::Vector4d& q, double q_scale) {
   const double w = q[0], x = q[1], y = q[2], z = q[3];
@@ -84,7 +76,9 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   const double r00 = 1.0 - s * (yq * yq + z * z), r01 = s * (x * yq - w * z), r02 = s * (x * z + w * yq);
   const double r10 = s * (x * yq + w * z), r11 = 1.0 - s * (x * x + z * z), r12 = s * (yq * z - w * x);
   const double r20 = s * (x * z - w * yq), r21 = s * (yq * z + w * x), r22 = 1.0 - s * (x * x + yq * yq);
-  point.R << r00, r01, r02, r10, r11, r12, r20, r21, r22;
+  double* const R = point.R.data();  // column-major
+  R[0] = r00, R[1] = r10, R[2] = r20, R[3] = r01, R[4] = r11, R[5] = r21, R[6] = r02, R[7] = r12,
+  R[8] = r22;
   // n̄ = Rᵀn, m̄ = Rᵀm
   const double nb0 = r00 * nx + r10 * ny + r20 * nz;
   const double nb1 = r01 * nx + r11 * ny + r21 * nz;
@@ -92,8 +86,8 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   const double mb0 = r00 * mx + r10 * my + r20 * mz;
   const double mb1 = r01 * mx + r11 * my + r21 * mz;
   const double mb2 = r02 * mx + r12 * my + r22 * mz;
-  point.n_body = {nb0, nb1, nb2};
-  point.m_body = {mb0, mb1, mb2};
+  point.n_body[0] = nb0, point.n_body[1] = nb1, point.n_body[2] = nb2;
+  point.m_body[0] = mb0, point.m_body[1] = mb1, point.m_body[2] = mb2;
   // Δu = K_rot⁻¹ m̄, u = Δu + ũ;  Δv = K_tra⁻¹ n̄, v = Δv + ṽ (Kirchhoff: v = ṽ)
   const double du0 = ode.C_rot[0] * mb0, du1 = ode.C_rot[1] * mb1, du2 = ode.C_rot[2] * mb2;
   const double u0 = du0 + ode.u_rest[0], u1 = du1 + ode.u_rest[1], u2 = du2 + ode.u_rest[2];
@@ -106,13 +100,13 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
     v2 += dv2;
     e_tra = 0.5 * (nb0 * dv0 + nb1 * dv1 + nb2 * dv2);
   }
-  point.v = {v0, v1, v2};
-  point.u = {u0, u1, u2};
+  point.v[0] = v0, point.v[1] = v1, point.v[2] = v2;
+  point.u[0] = u0, point.u[1] = u1, point.u[2] = u2;
   // p' = R v
   const double px = r00 * v0 + r01 * v1 + r02 * v2;
   const double py = r10 * v0 + r11 * v1 + r12 * v2;
   const double pz = r20 * v0 + r21 * v1 + r22 * v2;
-  point.p_prime = {px, py, pz};
+  point.p_prime[0] = px, point.p_prime[1] = py, point.p_prime[2] = pz;
   // q' = ½ q ⊗ (0, u) = ½ (-x·u, w u + x × u)
   dy[0] = -0.5 * (x * u0 + yq * u1 + z * u2);
   dy[1] = 0.5 * (w * u0 + yq * u2 - z * u1);
@@ -133,54 +127,126 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   dy[Slot::e] = e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2);
 }
 
+/// Two doubles in one SIMD register (GCC and Clang vector extension; a scalar operand is broadcast).
+/// The tangent's six directions go through the same arithmetic two at a time.
+typedef double Lanes __attribute__((vector_size(16)));
+
+inline Lanes load(const double* column, int j) {
+  Lanes lanes;
+  std::memcpy(&lanes, column + j, sizeof(Lanes));
+  return lanes;
+}
+
+inline void store(double* column, int j, const Lanes& lanes) {
+  std::memcpy(column + j, &lanes, sizeof(Lanes));
+}
+
 /// θ: the body-frame rotation of each direction, δR = R θ̂, from the quaternion tangent:
 /// θ = 2 vec(q* ⊗ δq)/|q|² = (2/|q|²)(w δx - δw x - x × δx).
 inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
                                        double q_scale,
                                        const OdeTangent& Y) {
-  const Eigen::Vector3d x = q.tail<3>();
-  const Matrix63d dX = Y.middleCols<3>(Slot::q + 1);
-  return q_scale * (q[0] * dX - Y.col(Slot::q) * x.transpose() - cross_rows(x, dX));
+  const double w = q[0], x0 = q[1], x1 = q[2], x2 = q[3];
+  Matrix63d theta;
+  for (int j = 0; j < 6; ++j) {
+    const double dw = Y(j, Slot::q);
+    const double dx0 = Y(j, Slot::q + 1), dx1 = Y(j, Slot::q + 2), dx2 = Y(j, Slot::q + 3);
+    theta(j, 0) = q_scale * (w * dx0 - x0 * dw - x1 * dx2 + x2 * dx1);
+    theta(j, 1) = q_scale * (w * dx1 - x1 * dw - x2 * dx0 + x0 * dx2);
+    theta(j, 2) = q_scale * (w * dx2 - x2 * dw - x0 * dx1 + x1 * dx0);
+  }
+  return theta;
 }
 
-/// Y' = dF(y)[Y]: the variational equations, all six directions at once. Returns θ (see above).
+/// Y' = dF(y)[Y]: the variational equations. Each direction j (row of Y) is independent; the loop
+/// body runs two directions at a time in SIMD lanes.
+/// Since f is constant, δn = e_j for the force directions j < 3 and 0 for the moment directions at
+/// every s; that is used rather than read from Y. Returns θ (see above).
 inline Matrix63d evaluate_tangent(const CosseratOde& ode,
                                   const OdeState& y,
                                   const OdePoint& point,
                                   const OdeTangent& Y,
                                   OdeTangent& dY) {
-  const Eigen::Vector4d q = y.segment<4>(Slot::q);
-  const Eigen::Vector3d n = y.segment<3>(Slot::n);
-  const Matrix63d theta = body_rotation_tangent(q, point.q_scale, Y);
-  const Matrix63d dN = Y.middleCols<3>(Slot::n);
-  const Matrix63d dM = Y.middleCols<3>(Slot::m);
+  const double w = y[0], x0 = y[1], x1 = y[2], x2 = y[3];
+  const double n0 = y[Slot::n], n1 = y[Slot::n + 1], n2 = y[Slot::n + 2];
+  const double s = point.q_scale;
+  const Eigen::Matrix3d& R = point.R;
+  const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2);
+  const double r10 = R(1, 0), r11 = R(1, 1), r12 = R(1, 2);
+  const double r20 = R(2, 0), r21 = R(2, 1), r22 = R(2, 2);
+  const double nb0 = point.n_body[0], nb1 = point.n_body[1], nb2 = point.n_body[2];
+  const double mb0 = point.m_body[0], mb1 = point.m_body[1], mb2 = point.m_body[2];
+  const double v0 = point.v[0], v1 = point.v[1], v2 = point.v[2];
+  const double u0 = point.u[0], u1 = point.u[1], u2 = point.u[2];
+  const double pp0 = point.p_prime[0], pp1 = point.p_prime[1], pp2 = point.p_prime[2];
+  const double cr0 = ode.C_rot[0], cr1 = ode.C_rot[1], cr2 = ode.C_rot[2];
+  const double ct0 = ode.extensible ? ode.C_tra[0] : 0.0;  // Kirchhoff: δv = 0
+  const double ct1 = ode.extensible ? ode.C_tra[1] : 0.0;
+  const double ct2 = ode.extensible ? ode.C_tra[2] : 0.0;
+  // δe' weights: Δv = K_tra⁻¹ n̄ and Δu = K_rot⁻¹ m̄
+  const double ev0 = ct0 * nb0, ev1 = ct1 * nb1, ev2 = ct2 * nb2;
+  const double eu0 = cr0 * mb0, eu1 = cr1 * mb1, eu2 = cr2 * mb2;
 
-  // δn̄ = n̄ × θ + Rᵀδn,  δm̄ = m̄ × θ + Rᵀδm   (rows: (Rᵀδn)ᵀ = δnᵀR)
-  const Matrix63d dn_body = cross_rows(point.n_body, theta) + dN * point.R;
-  const Matrix63d dm_body = cross_rows(point.m_body, theta) + dM * point.R;
-  // δv = K_tra⁻¹ δn̄ (Kirchhoff: 0),  δu = K_rot⁻¹ δm̄
-  const Matrix63d du = dm_body * ode.C_rot.asDiagonal();
-  // δp' = R (δv - v × θ)
-  Matrix63d dv_body = -cross_rows(point.v, theta);
-  if (ode.extensible) dv_body.noalias() += dn_body * ode.C_tra.asDiagonal();
-  const Matrix63d dp_prime = dv_body * point.R.transpose();
+  // The δn terms over the directions (δn = e_j for j < 3, else 0), as columns: Rᵀδn and p' × δn.
+  alignas(16) const double Rt_dn0[6] = {r00, r10, r20, 0.0, 0.0, 0.0};
+  alignas(16) const double Rt_dn1[6] = {r01, r11, r21, 0.0, 0.0, 0.0};
+  alignas(16) const double Rt_dn2[6] = {r02, r12, r22, 0.0, 0.0, 0.0};
+  alignas(16) const double pp_x_dn0[6] = {0.0, -pp2, pp1, 0.0, 0.0, 0.0};
+  alignas(16) const double pp_x_dn1[6] = {pp2, 0.0, -pp0, 0.0, 0.0, 0.0};
+  alignas(16) const double pp_x_dn2[6] = {-pp1, pp0, 0.0, 0.0, 0.0, 0.0};
+  // Column k of Y (all six directions of state component k) is contiguous: Y.data() + 6 k.
+  const double* const dw = Y.data() + 6 * Slot::q;
+  const double* const dx0 = Y.data() + 6 * (Slot::q + 1);
+  const double* const dx1 = Y.data() + 6 * (Slot::q + 2);
+  const double* const dx2 = Y.data() + 6 * (Slot::q + 3);
+  const double* const dm0 = Y.data() + 6 * Slot::m;
+  const double* const dm1 = Y.data() + 6 * (Slot::m + 1);
+  const double* const dm2 = Y.data() + 6 * (Slot::m + 2);
+  double* const out = dY.data();
+  Matrix63d theta;
 
-  // δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu))
-  const double w = q[0];
-  const Eigen::Vector3d x = q.tail<3>();
-  const Matrix63d dX = Y.middleCols<3>(Slot::q + 1);
-  dY.col(Slot::q) = -0.5 * (dX * point.u + du * x);
-  dY.middleCols<3>(Slot::q + 1) =
-      0.5 * (Y.col(Slot::q) * point.u.transpose() - cross_rows(point.u, dX) + w * du +
-             cross_rows(x, du));
-  dY.middleCols<3>(Slot::p) = dp_prime;
+  // Two directions per iteration, one per SIMD lane.
+  for (int j = 0; j < 6; j += 2) {
+    // θ = (2/|q|²)(w δx - δw x - x × δx)
+    const Lanes t0 = s * (w * load(dx0, j) - x0 * load(dw, j) - x1 * load(dx2, j) + x2 * load(dx1, j));
+    const Lanes t1 = s * (w * load(dx1, j) - x1 * load(dw, j) - x2 * load(dx0, j) + x0 * load(dx2, j));
+    const Lanes t2 = s * (w * load(dx2, j) - x2 * load(dw, j) - x0 * load(dx1, j) + x1 * load(dx0, j));
+    store(theta.data(), j, t0);
+    store(theta.data() + 6, j, t1);
+    store(theta.data() + 12, j, t2);
+    // δn̄ = n̄ × θ + Rᵀδn,  δm̄ = m̄ × θ + Rᵀδm
+    const Lanes dnb0 = nb1 * t2 - nb2 * t1 + load(Rt_dn0, j);
+    const Lanes dnb1 = nb2 * t0 - nb0 * t2 + load(Rt_dn1, j);
+    const Lanes dnb2 = nb0 * t1 - nb1 * t0 + load(Rt_dn2, j);
+    const Lanes m0 = load(dm0, j), m1 = load(dm1, j), m2 = load(dm2, j);
+    const Lanes dmb0 = mb1 * t2 - mb2 * t1 + r00 * m0 + r10 * m1 + r20 * m2;
+    const Lanes dmb1 = mb2 * t0 - mb0 * t2 + r01 * m0 + r11 * m1 + r21 * m2;
+    const Lanes dmb2 = mb0 * t1 - mb1 * t0 + r02 * m0 + r12 * m1 + r22 * m2;
+    // δu = K_rot⁻¹ δm̄;  a = δv - v × θ with δv = K_tra⁻¹ δn̄;  δp' = R a
+    const Lanes du0 = cr0 * dmb0, du1 = cr1 * dmb1, du2 = cr2 * dmb2;
+    const Lanes a0 = ct0 * dnb0 + v2 * t1 - v1 * t2;
+    const Lanes a1 = ct1 * dnb1 + v0 * t2 - v2 * t0;
+    const Lanes a2 = ct2 * dnb2 + v1 * t0 - v0 * t1;
+    const Lanes dp0 = r00 * a0 + r01 * a1 + r02 * a2;
+    const Lanes dp1 = r10 * a0 + r11 * a1 + r12 * a2;
+    const Lanes dp2 = r20 * a0 + r21 * a1 + r22 * a2;
+    // δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu))
+    const Lanes qw = load(dw, j), q0 = load(dx0, j), q1 = load(dx1, j), q2 = load(dx2, j);
+    store(out + 6 * Slot::q, j, -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du0 + x1 * du1 + x2 * du2));
+    store(out + 6 * (Slot::q + 1), j, 0.5 * (u0 * qw + u2 * q1 - u1 * q2 + w * du0 + x1 * du2 - x2 * du1));
+    store(out + 6 * (Slot::q + 2), j, 0.5 * (u1 * qw + u0 * q2 - u2 * q0 + w * du1 + x2 * du0 - x0 * du2));
+    store(out + 6 * (Slot::q + 3), j, 0.5 * (u2 * qw + u1 * q0 - u0 * q1 + w * du2 + x0 * du1 - x1 * du0));
+    store(out + 6 * Slot::p, j, dp0);
+    store(out + 6 * (Slot::p + 1), j, dp1);
+    store(out + 6 * (Slot::p + 2), j, dp2);
+    // δm' = n × δp' - p' × δn
+    store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - load(pp_x_dn0, j));
+    store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - load(pp_x_dn1, j));
+    store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - load(pp_x_dn2, j));
+    // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
+    store(out + 6 * Slot::e, j, ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
+  }
   dY.middleCols<3>(Slot::n).setZero();  // f is constant
-  // δm' = n × δp' - p' × δn
-  dY.middleCols<3>(Slot::m) = cross_rows(n, dp_prime) - cross_rows(point.p_prime, dN);
-  // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
-  Vector6 de = dm_body * ode.C_rot.cwiseProduct(point.m_body);
-  if (ode.extensible) de.noalias() += dn_body * ode.C_tra.cwiseProduct(point.n_body);
-  dY.col(Slot::e) = de;
   return theta;
 }
 

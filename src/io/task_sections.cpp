@@ -25,7 +25,7 @@ std::string format_number(double value) {
   return out.str();
 }
 
-/// Keys that users put under `rod` but that belong at the top level.
+/// Keys that users put directly under `rod` but that belong elsewhere.
 const std::vector<KeyHint>& rod_key_hints() {
   static const std::vector<KeyHint> hints = {
       {"gravity", "gravity is a top-level section, not part of rod"},
@@ -35,6 +35,15 @@ const std::vector<KeyHint>& rod_key_hints() {
       {"density", "density belongs in rod.material"},
       {"young_modulus", "young_modulus belongs in rod.material"},
       {"poisson_ratio", "poisson_ratio belongs in rod.material"},
+      {"EA", "EA belongs in rod.stiffness"},
+      {"GA", "GA belongs in rod.stiffness"},
+      {"EIx", "EIx belongs in rod.stiffness"},
+      {"EIy", "EIy belongs in rod.stiffness"},
+      {"GJ", "GJ belongs in rod.stiffness"},
+      {"shape", "shape belongs in rod.section"},
+      {"width", "width belongs in rod.section"},
+      {"height", "height belongs in rod.section"},
+      {"radius", "radius belongs in rod.section"},
   };
   return hints;
 }

@@ -15,14 +15,51 @@ using detail::Slot;
 
 constexpr double kConjugateTolerance = 1e-6;  // σ_min(J̃) below this after refinement: singular
 
-/// J̃(s) from the position and rotation derivatives at s (see StabilityReport).
-Matrix6d scaled_jacobian(const Matrix36d& dp_dw, const Matrix36d& dtheta_dw, double s, double EI) {
-  Matrix6d J;
-  J << dp_dw / s, dtheta_dw;
-  J.leftCols<3>() *= EI / (s * s);
-  J.rightCols<3>() *= EI / s;
-  return J;
+/// C(s) = d(pose at s)/d(base wrench) of the unloaded straight rod of length s, clamp frame,
+/// from the linearised equations m(σ) = m(0) - σ e_z × n(0), θ' = K_rot⁻¹ m, δp' = K_tra⁻¹ n + θ × e_z:
+///   δp_x = (c_x s - b_y s³/6) n_x + b_y s²/2 m_y      θ_x = b_x (s m_x + s²/2 n_y)
+///   δp_y = (c_y s - b_x s³/6) n_y - b_x s²/2 m_x      θ_y = b_y (s m_y - s²/2 n_x)
+///   δp_z = c_z s n_z                                  θ_z = b_z s m_z
+/// with b = K_rot⁻¹, c = K_tra⁻¹. A Kirchhoff rod has c = 0; its axial entry, which would vanish,
+/// takes the bending value s³/(3 EI) so that C stays a scale.
+Matrix6d straight_rod_compliance(const RodProperties& props, double s) {
+  const Eigen::Vector3d b = props.K_rot.cwiseInverse();
+  Eigen::Vector3d c = props.K_tra.cwiseInverse();
+  if (props.model == ConstitutiveModel::Kirchhoff) c << 0.0, 0.0, s * s * (b.x() + b.y()) / 6.0;
+  const double s2 = s * s, s3 = s2 * s;
+  Matrix6d C = Matrix6d::Zero();
+  C(0, 0) = c.x() * s - b.y() * s3 / 6.0;
+  C(0, 4) = b.y() * s2 / 2.0;
+  C(1, 1) = c.y() * s - b.x() * s3 / 6.0;
+  C(1, 3) = -b.x() * s2 / 2.0;
+  C(2, 2) = c.z() * s;
+  C(3, 3) = b.x() * s;
+  C(3, 1) = b.x() * s2 / 2.0;
+  C(4, 4) = b.y() * s;
+  C(4, 0) = -b.y() * s2 / 2.0;
+  C(5, 5) = b.z() * s;
+  return C;
 }
+
+/// J̃(s) = J_c(s) C(s)⁻¹, J_c the Jacobian in the clamp frame (positions R0ᵀδp, rotations R0ᵀRθ,
+/// wrench components along the clamp axes). J̃ = I for the unloaded straight rod.
+class ScaledJacobian {
+ public:
+  ScaledJacobian(const RodProperties& props, const Eigen::Matrix3d& R0) : props_(props), R0_(R0) {}
+
+  Matrix6d operator()(const Matrix36d& dp_dw, const Matrix36d& dtheta_dw, const Eigen::Matrix3d& R,
+                      double s) const {
+    Matrix6d J;
+    J << R0_.transpose() * dp_dw, R0_.transpose() * R * dtheta_dw;
+    J.leftCols<3>() = J.leftCols<3>() * R0_;  // dw_world = R0 dw_clamp
+    J.rightCols<3>() = J.rightCols<3>() * R0_;
+    return J * straight_rod_compliance(props_, s).inverse();
+  }
+
+ private:
+  const RodProperties& props_;
+  Eigen::Matrix3d R0_;
+};
 
 double smallest_singular_value(const Matrix6d& J) {
   return Eigen::JacobiSVD<Matrix6d>(J).singularValues()(5);
@@ -51,8 +88,8 @@ NodeState node_state(const RodConfiguration& c, int i) {
 /// Evaluates J̃ between nodes by one Runge–Kutta step from node i.
 class JacobianBetweenNodes {
  public:
-  JacobianBetweenNodes(const ClampedRod& rod, const RodConfiguration& c, double EI)
-      : ode_(rod), c_(c), EI_(EI) {}
+  JacobianBetweenNodes(const ClampedRod& rod, const RodConfiguration& c, const ScaledJacobian& scaled)
+      : ode_(rod), c_(c), scaled_(scaled) {}
 
   Matrix6d at(int i, double s) const {
     NodeState state = node_state(c_, i);
@@ -62,13 +99,14 @@ class JacobianBetweenNodes {
     const double q_scale = 2.0 / state.y.segment<4>(Slot::q).squaredNorm();
     const detail::Matrix63d theta_s =
         detail::body_rotation_tangent(state.y.segment<4>(Slot::q), q_scale, state.Y);
-    return scaled_jacobian(state.Y.middleCols<3>(Slot::p).transpose(), theta_s.transpose(), s, EI_);
+    return scaled_(state.Y.middleCols<3>(Slot::p).transpose(), theta_s.transpose(),
+                   detail::rotation_of(state.y.segment<4>(Slot::q), q_scale), s);
   }
 
  private:
   detail::CosseratOde ode_;
   const RodConfiguration& c_;
-  double EI_;
+  const ScaledJacobian& scaled_;
 };
 
 }  // namespace
@@ -80,11 +118,11 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     throw InputError("assess_stability: the configuration has " + std::to_string(c.nodes()) +
                      " nodes, the rod " + std::to_string(rod.nodes()));
 
-  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
+  const ScaledJacobian scaled_jacobian(rod.properties, c.R[0]);
   const int N = c.nodes() - 1;
   std::vector<double> sigma(N + 1, 0.0), det(N + 1, 0.0);
   for (int i = 1; i <= N; ++i) {
-    const Matrix6d J = scaled_jacobian(c.dp_dw[i], c.dtheta_dw[i], c.s[i], EI);
+    const Matrix6d J = scaled_jacobian(c.dp_dw[i], c.dtheta_dw[i], c.R[i], c.s[i]);
     sigma[i] = smallest_singular_value(J);
     det[i] = J.determinant();
   }
@@ -100,7 +138,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     return report;
   }
 
-  const JacobianBetweenNodes between(rod, c, EI);
+  const JacobianBetweenNodes between(rod, c, scaled_jacobian);
   const auto sigma_at = [&](int i, double s) { return smallest_singular_value(between.at(i, s)); };
   std::optional<double> conjugate;
 
@@ -152,6 +190,10 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   report.conjugate_point_s = conjugate;
   report.stable = !conjugate.has_value();
   if (conjugate) report.min_singular_value = 0.0;
+  // Singular only at s = L: the equilibrium is degenerate (e.g. the planar buckled shape of a rod
+  // with EIx = EIy, which can turn about the line of its clamps at no cost): neutral, not shown
+  // stable, and not unstable either.
+  if (conjugate && *conjugate >= rod.properties.length * (1.0 - 1e-9)) report.degenerate = true;
   return report;
 }
 

@@ -15,16 +15,16 @@ struct StabilityReport {
   bool stable = false;
   /// Where the first conjugate point lies (J(s) singular), if any.
   std::optional<double> conjugate_point_s;
-  /// min over nodes s_i > 0 of σ_min(J̃(s_i)), where J̃ = diag(1/s, 1/s, 1/s, 1, 1, 1) J
-  /// diag(EI/s², EI/s², EI/s², EI/s, EI/s, EI/s) is J made dimensionless with the scales of a
-  /// cantilever of length s (EI the mean of EIx and EIy). J̃ tends to a constant as s → 0 (its
-  /// bending blocks to [[1/3, 1/2], [1/2, 1]]), so this is comparable along the rod; 0 at a
-  /// conjugate point.
+  /// min over nodes s_i > 0 of σ_min(J̃(s_i)), where J̃(s) = J(s) C(s)⁻¹ is J relative to the
+  /// unloaded straight rod of length s (C(s) its compliance, in the clamp frame). J̃ = I for that
+  /// rod, so 1 means "as controllable as the unloaded rod" and 0 a conjugate point.
   double min_singular_value = 0.0;
   /// σ_min(J̃(L)): how far the tip pose is from losing control of the shape.
   double tip_singular_value = 0.0;
-  /// J(s) is singular along the whole rod, so the test does not apply: a straight Kirchhoff rod,
-  /// whose tip cannot move along its tangent. `stable` is then false and means "not shown stable".
+  /// The test does not decide: J(s) is singular along the whole rod (a straight Kirchhoff rod,
+  /// whose tip cannot move along its tangent), or only at s = L (a neutral direction, e.g. the
+  /// planar buckled shape of a rod with EIx = EIy, which turns about the line of its clamps at no
+  /// cost). `stable` is then false and means "not shown stable".
   bool degenerate = false;
 };
 

@@ -1,0 +1,89 @@
+// equilibrium_command.cpp: solve the rod a task file describes and write the result as JSON.
+//   task file -> EquilibriumTask (io) -> solve_equilibrium, assess_stability (solvers) -> JSON (io)
+#include "equilibrium_command.hpp"
+
+#include <iostream>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "exit_code.hpp"
+#include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/result_json.hpp"
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+#include "rodshape/solvers/stability.hpp"
+
+namespace rodshape::cli {
+
+namespace {
+
+class EquilibriumCommand final : public Command {
+ public:
+  CLI::App* add_to(CLI::App& app) override {
+    CLI::App* command = app.add_subcommand(
+        "equilibrium",
+        "Solve the static equilibrium of the rod described by a task file and print the result "
+        "as JSON (status, residual, energy, stability, base and tip wrench, tip pose, nodes).");
+    command->add_option("task", task_path_, "Task file (YAML); format in docs/task-file.md")
+        ->required()
+        ->type_name("TASK.yaml");
+    command
+        ->add_option("-o,--output", output_path_,
+                     "Write the JSON result to this file (whole or not at all) instead of "
+                     "standard output")
+        ->type_name("OUT.json");
+    command->add_flag("-q,--quiet", quiet_,
+                      "With -o: do not print the one-line summary on standard output");
+    return command;
+  }
+
+  int run() override {
+    const EquilibriumTask task = read_equilibrium_task(task_path_);
+
+    // The stability test needs the derivatives at every node; a free tip has no stability test.
+    const bool held = !std::holds_alternative<FreeTip>(task.tip);
+    ShootingOptions options = task.options;
+    options.output_derivatives = held ? Derivatives::AllNodes : Derivatives::None;
+
+    const ShootingSolution solution =
+        solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
+    const ShootingSummary& summary = solution.summary;
+
+    std::optional<StabilityReport> stability;
+    if (held && summary.converged()) stability = assess_stability(task.rod, solution.configuration);
+
+    const std::string json = equilibrium_result_json(solution, stability, task.rod);
+    if (output_path_.empty()) {
+      std::cout << json << std::flush;
+    } else {
+      write_file_atomically(output_path_, json);
+      if (!quiet_) {
+        std::cout << task_path_ << ": " << summary.brief();
+        if (stability) std::cout << (stability->stable ? ", stable" : ", unstable");
+        std::cout << "; wrote " << output_path_ << "\n";
+      }
+    }
+
+    if (!summary.converged()) {
+      std::cerr << "error: " << task_path_ << ": the solver did not converge: " << summary.brief();
+      if (!summary.message.empty()) std::cerr << " (" << summary.message << ")";
+      std::cerr << "\n";
+      return kNotConverged;
+    }
+    return kSuccess;
+  }
+
+ private:
+  std::string task_path_;
+  std::string output_path_;
+  bool quiet_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_equilibrium_command() {
+  return std::make_unique<EquilibriumCommand>();
+}
+
+}  // namespace rodshape::cli

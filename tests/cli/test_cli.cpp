@@ -1,0 +1,289 @@
+// test_cli.cpp: the rodshape tool as a user runs it. Bad task files give one line on stderr that
+// names the file, line and field, exit code 2 and no output file; the rubber band example solves
+// and its JSON has every documented key; a solve that cannot converge gives exit code 3.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const std::string kCli = RODSHAPE_CLI_PATH;
+const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples";
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_FALSE(kCli.empty()) << "the rodshape tool was not built";
+    std::string pattern = (fs::temp_directory_path() / "rodshape_cli_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    directory_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  /// Runs `rodshape <arguments>` (already quoted for the shell).
+  Outcome run(const std::string& arguments) const {
+    const fs::path out = directory_ / "stdout.txt";
+    const fs::path err = directory_ / "stderr.txt";
+    const std::string command =
+        quoted(kCli) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
+    const int status = std::system(command.c_str());
+    Outcome result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(out);
+    result.err = read_file(err);
+    fs::remove(out);
+    fs::remove(err);
+    return result;
+  }
+
+  fs::path write_task(const std::string& name, const std::string& text) const {
+    const fs::path path = directory_ / name;
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  fs::path directory_;
+};
+
+// Line numbers in the cases below refer to this text.
+const std::string kBand = R"(rod:
+  length: 0.29
+  section: {shape: rectangle, width: 0.02, height: 0.02}
+  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
+  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
+tip:
+  position: [0.12, 0.0, 0.22]
+  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]
+)";
+
+std::string band_with(const std::string& from, const std::string& to) {
+  std::string text = kBand;
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+struct BadTask {
+  const char* name;
+  std::string text;
+  const char* location;  // ":<line>:" or "" when the message has no line
+  const char* field;
+};
+
+TEST_F(Cli, BadTaskFilesGiveOneLineExitTwoAndNoOutput) {
+  const std::vector<BadTask> cases = {
+      {"missing_length", band_with("  length: 0.29\n", ""), ":1:", "rod.length"},
+      {"misspelled", band_with("length:", "lenght:"), ":2:", "did you mean 'length'"},
+      {"negative_length", band_with("length: 0.29", "length: -0.3"), ":2:", "rod.length = -0.3"},
+      {"zero_stiffness", band_with("GJ: 0.028", "GJ: 0"), ":5:", "rod.stiffness.GJ"},
+      {"nan", band_with("width: 0.02", "width: .nan"), ":3:", "rod.section.width"},
+      {"inf", band_with("young_modulus: 3.2e6", "young_modulus: .inf"),
+       ":4:", "rod.material.young_modulus"},
+      {"matrix",
+       band_with("[0.7071067811865476, 0, 0.7071067811865476, 0]",
+                 "[[1, 0, 0], [0, 1, 0], [0, 0.1, 1]]"),
+       ":8:", "tip.rotation"},
+      {"quaternion", band_with("[0.7071067811865476, 0, 0.7071067811865476, 0]", "[2, 0, 0, 0]"),
+       ":8:", "tip.rotation"},
+      {"nodes", band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 1\n"), ":3:", "rod.nodes"},
+      {"tip_form", band_with("  position:", "  place:"), ":7:", "tip.place"},
+      {"released", kBand + "  released: [rx]\n", ":9:", "tip.released[0]"},
+      {"malformed", band_with("height: 0.02}", "height: 0.02"), ":", "malformed YAML"},
+      {"no_tip", kBand.substr(0, kBand.find("tip:")), "", "tip is required"},
+  };
+  for (const BadTask& bad : cases) {
+    SCOPED_TRACE(bad.name);
+    const fs::path task = write_task(std::string(bad.name) + ".yaml", bad.text);
+    const fs::path output = directory_ / (std::string(bad.name) + ".json");
+    const Outcome result =
+        run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_FALSE(fs::exists(output)) << "an output file was written";
+    EXPECT_EQ(result.out, "");
+    const std::string prefix = "error: " + task.string() + bad.location;
+    EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
+    EXPECT_NE(result.err.find(bad.field), std::string::npos) << result.err;
+    ASSERT_FALSE(result.err.empty());
+    EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  }
+}
+
+TEST_F(Cli, BadTaskLeavesAnExistingOutputFileAlone) {
+  const fs::path task = write_task("bad.yaml", band_with("length: 0.29", "length: 0"));
+  const fs::path output = write_task("old.json", "old\n");
+  const Outcome result =
+      run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(read_file(output), "old\n");
+}
+
+TEST_F(Cli, UnreadableTaskFileIsBadInput) {
+  const std::string missing = (directory_ / "missing.yaml").string();
+  const Outcome result = run("equilibrium " + quoted(missing));
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, "error: " + missing + ": cannot read: No such file or directory\n");
+}
+
+TEST_F(Cli, UsageErrorsAreBadInput) {
+  EXPECT_EQ(run("").exit_code, 2);
+  EXPECT_EQ(run("equilibrium").exit_code, 2);
+  EXPECT_EQ(run("frobnicate x.yaml").exit_code, 2);
+  EXPECT_EQ(run("equilibrium " + quoted(kExamples + "/rubber_band.yaml") + " --bogus").exit_code,
+            2);
+}
+
+TEST_F(Cli, HelpAndVersionSucceed) {
+  const Outcome help = run("--help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("equilibrium"), std::string::npos);
+  const Outcome command_help = run("equilibrium --help");
+  EXPECT_EQ(command_help.exit_code, 0);
+  EXPECT_NE(command_help.out.find("--output"), std::string::npos);
+  const Outcome version = run("--version");
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("rodshape ", 0), 0u) << version.out;
+}
+
+TEST_F(Cli, UnwritableOutputIsBadInput) {
+  const std::string output = (directory_ / "no" / "such" / "dir.json").string();
+  const Outcome result =
+      run("equilibrium " + quoted(kExamples + "/rubber_band.yaml") + " -o " + quoted(output));
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err, "error: " + output + ": cannot write: No such file or directory\n");
+}
+
+void expect_unit_quaternion(const Json& q) {
+  ASSERT_EQ(q.size(), 4u);
+  double norm2 = 0.0;
+  for (const Json& c : q) norm2 += c.get<double>() * c.get<double>();
+  EXPECT_NEAR(std::sqrt(norm2), 1.0, 1e-12);
+  EXPECT_GE(q[0].get<double>(), 0.0);
+}
+
+void expect_vector3(const Json& v) {
+  ASSERT_TRUE(v.is_array());
+  ASSERT_EQ(v.size(), 3u);
+  for (const Json& c : v) EXPECT_TRUE(c.is_number());
+}
+
+TEST_F(Cli, RubberBandExampleSolvesAndWritesEveryDocumentedKey) {
+  const fs::path output = directory_ / "band.json";
+  const Outcome result = run("equilibrium " + quoted(kExamples + "/rubber_band.yaml") + " -o " +
+                             quoted(output.string()));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  const Json j = Json::parse(read_file(output));
+
+  EXPECT_EQ(j["status"], "converged");
+  ASSERT_TRUE(j["residual"].is_number());
+  EXPECT_LE(j["residual"].get<double>(), 1e-10);
+  EXPECT_TRUE(j["message"].is_string());
+  EXPECT_GE(j["iterations"].get<int>(), 1);
+  EXPECT_GE(j["integrations"].get<int>(), 1);
+  EXPECT_GE(j["continuation_steps"].get<int>(), 0);
+  EXPECT_EQ(j["model"], "cosserat");
+  EXPECT_GT(j["energy"].get<double>(), 0.0);
+  ASSERT_TRUE(j["stable"].is_boolean());
+  const Json& stability = j["stability"];
+  ASSERT_TRUE(stability.is_object());
+  EXPECT_EQ(stability["stable"], j["stable"]);
+  EXPECT_TRUE(stability["conjugate_point_s"].is_null() ||
+              stability["conjugate_point_s"].is_number());
+  EXPECT_TRUE(stability["min_singular_value"].is_number());
+  EXPECT_TRUE(stability["tip_singular_value"].is_number());
+  for (const char* wrench : {"base_wrench", "tip_wrench"}) {
+    SCOPED_TRACE(wrench);
+    expect_vector3(j[wrench]["force"]);
+    expect_vector3(j[wrench]["moment"]);
+  }
+
+  // The tip is where the task clamps it.
+  expect_vector3(j["tip"]["position"]);
+  EXPECT_NEAR(j["tip"]["position"][0].get<double>(), 0.12, 1e-9);
+  EXPECT_NEAR(j["tip"]["position"][2].get<double>(), 0.22, 1e-9);
+  expect_unit_quaternion(j["tip"]["rotation"]);
+  EXPECT_NEAR(j["tip"]["rotation"][0].get<double>(), std::sqrt(0.5), 1e-9);
+  EXPECT_NEAR(j["tip"]["rotation"][2].get<double>(), std::sqrt(0.5), 1e-9);
+
+  const Json& nodes = j["nodes"];
+  for (const char* key : {"s", "position", "rotation", "force", "moment", "u", "v"}) {
+    ASSERT_TRUE(nodes[key].is_array()) << key;
+    EXPECT_EQ(nodes[key].size(), 101u) << key;
+  }
+  EXPECT_EQ(nodes["s"].front().get<double>(), 0.0);
+  EXPECT_NEAR(nodes["s"].back().get<double>(), 0.29, 1e-15);
+  for (const Json& q : nodes["rotation"]) expect_unit_quaternion(q);
+  for (const char* key : {"position", "force", "moment", "u", "v"}) {
+    for (const Json& v : nodes[key]) expect_vector3(v);
+  }
+  EXPECT_EQ(nodes["position"].back(), j["tip"]["position"]);
+  EXPECT_EQ(nodes["force"].front(), j["base_wrench"]["force"]);
+  EXPECT_EQ(nodes["moment"].back(), j["tip_wrench"]["moment"]);
+}
+
+TEST_F(Cli, WithoutOutputFileTheJsonGoesToStandardOutput) {
+  const Outcome result = run("equilibrium " + quoted(kExamples + "/grasped_band.yaml"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const Json j = Json::parse(result.out);
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_TRUE(j["stable"].is_boolean());
+}
+
+TEST_F(Cli, FreeTipHasNoStabilityVerdict) {
+  const Outcome result = run("equilibrium " + quoted(kExamples + "/cantilever_gravity.yaml"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const Json j = Json::parse(result.out);
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_TRUE(j["stable"].is_null());
+  EXPECT_TRUE(j["stability"].is_null());
+  // The wire sags: its tip is below the clamp, and the tip carries no load.
+  EXPECT_LT(j["tip"]["position"][2].get<double>(), 1.0);
+  for (const Json& c : j["tip_wrench"]["force"]) EXPECT_NEAR(c.get<double>(), 0.0, 1e-9);
+}
+
+TEST_F(Cli, NonConvergenceExitsThreeAndStillWritesTheWholeResult) {
+  const fs::path task =
+      write_task("far.yaml", band_with("[0.12, 0.0, 0.22]", "[0.2, 0.1, -0.05]") +
+                                 "solver: {max_iterations: 1, continuation: false}\n");
+  const fs::path output = directory_ / "far.json";
+  const Outcome result =
+      run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_EQ(result.err.rfind("error: " + task.string() + ": the solver did not converge", 0), 0u)
+      << result.err;
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  ASSERT_TRUE(fs::exists(output));
+  const Json j = Json::parse(read_file(output));
+  EXPECT_NE(j["status"], "converged");
+  EXPECT_NE(result.err.find(j["status"].get<std::string>()), std::string::npos);
+  EXPECT_TRUE(j["stable"].is_null());
+  EXPECT_EQ(j["nodes"]["s"].size(), 101u);
+}
+
+}  // namespace
