@@ -15,10 +15,10 @@ namespace rodshape {
 
 void ShootingOptions::validate() const {
   if (max_iterations < 1)
-    throw InputError("solver.max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
-  detail::require_positive("solver.tolerance", residual_tolerance);
+    throw InputError("max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_positive("residual_tolerance", residual_tolerance);
   if (max_continuation_steps < 1)
-    throw InputError("solver.max_continuation_steps = " + std::to_string(max_continuation_steps) +
+    throw InputError("max_continuation_steps = " + std::to_string(max_continuation_steps) +
                      " must be >= 1");
 }
 

@@ -142,23 +142,36 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   const auto sigma_at = [&](int i, double s) { return smallest_singular_value(between.at(i, s)); };
   std::optional<double> conjugate;
 
-  // 1. A sign change of det J̃ between nodes i-1 and i: bisect on the sign.
-  for (int i = 2; i <= N && !conjugate; ++i) {
-    if (std::signbit(det[i]) == std::signbit(det[i - 1])) continue;
+  // 1. det J̃ > 0 near s = 0 (J̃ → I for a Cosserat rod); a change from positive to non-positive
+  //    between nodes i-1 and i is a conjugate point: bisect on the sign. Near s = 0 the det of a
+  //    curved Kirchhoff rod is of high order in s (its axial compliance vanishes) and one step may
+  //    not resolve its sign, so the test is armed only once det J̃ has been positive at a node.
+  int armed_at = 0;  // the first node with det J̃ > 0
+  for (int i = 1; i <= N && !conjugate; ++i) {
+    if (armed_at == 0) {
+      if (det[i] > 0.0) armed_at = i;
+      continue;
+    }
+    if (det[i] > 0.0) continue;
     double a = c.s[i - 1], b = c.s[i];
-    const bool sign_a = std::signbit(det[i - 1]);
     for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
       const double mid = 0.5 * (a + b);
-      (std::signbit(between.at(i - 1, mid).determinant()) == sign_a ? a : b) = mid;
+      (between.at(i - 1, mid).determinant() > 0.0 ? a : b) = mid;
     }
     conjugate = 0.5 * (a + b);
+  }
+  if (armed_at == 0) {  // det J̃ never positive: the test cannot decide
+    report.degenerate = true;
+    report.stable = false;
+    return report;
   }
 
   // 2. A local minimum of σ_min at a node: golden-section search on (s_{i-1}, s_{i+1}) for a root
   //    that keeps the sign of det (a double root, as when EIx = EIy), or two roots within one
   //    interval.
-  for (int i = 1; i <= N && !conjugate; ++i) {
-    const bool left_ok = i == 1 || sigma[i] <= sigma[i - 1];
+  //    Only after the test is armed: before, J̃ is not resolved (and σ_min may grow from 0).
+  for (int i = armed_at + 1; i <= N && !conjugate; ++i) {
+    const bool left_ok = sigma[i] <= sigma[i - 1];
     const bool right_ok = i == N || sigma[i] <= sigma[i + 1];
     if (!left_ok || !right_ok) continue;
     if (sigma[i] <= kConjugateTolerance) {
@@ -166,7 +179,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
       break;
     }
     const int from = i - 1;
-    double a = i == 1 ? 0.5 * c.s[1] : c.s[i - 1];
+    double a = c.s[i - 1];
     double b = i == N ? c.s[N] : c.s[i + 1];
     const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
     double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
