@@ -222,7 +222,10 @@ DirectResult solve_direct(const ClampedRod& rod,
 }
 
 /// The homotopy of the boundary-value problem: at t = 0 the rod is unloaded and the tip is where
-/// the unloaded rod puts it (w = 0 solves it exactly); at t = 1 it is the problem asked.
+/// the unloaded rod puts it (w = 0 solves it exactly); at t = 1 it is the problem asked. A held
+/// tip moves along the screw motion T(t) = T_rest exp(t log(T_rest⁻¹ T_target)), which bends the
+/// rod from the start; a straight line from the rest tip would first push a straight rod along its
+/// axis, where only its stiff axial compliance answers (and a Kirchhoff rod cannot shorten at all).
 struct Homotopy {
   const ClampedRod& rod;
   const TipCondition& tip;
@@ -237,10 +240,14 @@ struct Homotopy {
 
   TipCondition tip_at(double t) const {
     const auto blend = [&](const Pose& target) {
+      // ξ = (ρ, φ) = log(T_rest⁻¹ T_target):  φ = log(R_restᵀ R_target),  ρ = J_l(φ)⁻¹ R_restᵀ Δp
+      const Eigen::Vector3d phi = log_so3(rest_tip.rotation.transpose() * target.rotation);
+      const Eigen::Vector3d rho = left_jacobian_so3(phi).inverse() *
+                                  (rest_tip.rotation.transpose() *
+                                   (target.position - rest_tip.position));
       Pose pose;
-      pose.position = (1.0 - t) * rest_tip.position + t * target.position;
-      const Eigen::Quaterniond q0(rest_tip.rotation), q1(target.rotation);
-      pose.rotation = q0.slerp(t, q1).toRotationMatrix();
+      pose.rotation = rest_tip.rotation * exp_so3(t * phi);
+      pose.position = rest_tip.position + rest_tip.rotation * (left_jacobian_so3(t * phi) * (t * rho));
       return pose;
     };
     return std::visit(Overloaded{

@@ -50,6 +50,18 @@ inline Eigen::Matrix3d right_jacobian_inverse_so3(const Eigen::Vector3d& theta) 
   return Eigen::Matrix3d::Identity() + 0.5 * theta_hat + c * theta_hat * theta_hat;
 }
 
+/// J_l(θ) = I + (1 - cos|θ|)/|θ|² θ̂ + (|θ| - sin|θ|)/|θ|³ θ̂²: the left Jacobian of SO(3), which is
+/// also the V of SE(3)'s exponential, exp((ρ, θ)) = (exp(θ̂), J_l(θ) ρ).
+inline Eigen::Matrix3d left_jacobian_so3(const Eigen::Vector3d& theta) {
+  const double angle2 = theta.squaredNorm();
+  const double angle = std::sqrt(angle2);
+  const double b = angle < 1e-4 ? 0.5 - angle2 / 24.0 : (1.0 - std::cos(angle)) / angle2;
+  const double c = angle < 1e-4 ? 1.0 / 6.0 - angle2 / 120.0
+                                 : (angle - std::sin(angle)) / (angle2 * angle);
+  const Eigen::Matrix3d theta_hat = hat(theta);
+  return Eigen::Matrix3d::Identity() + b * theta_hat + c * theta_hat * theta_hat;
+}
+
 /// max |RᵀR - I| and det(R) - 1 both within tolerance.
 inline bool is_rotation(const Eigen::Matrix3d& R, double tolerance = 1e-6) {
   if (!R.allFinite()) return false;
