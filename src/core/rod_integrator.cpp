@@ -11,21 +11,24 @@ using detail::NodeState;
 using detail::OdePoint;
 using detail::Slot;
 
-void store_node(const OdePoint& point, const NodeState& state, int i, double s,
-                RodConfiguration& out) {
+/// s, p, n, m at node i (before the step that leaves it).
+void store_node_state(const NodeState& state, int i, double s, RodConfiguration& out) {
   out.s[i] = s;
   out.p[i] = state.y.segment<3>(Slot::p);
-  out.R[i] = point.R;
   out.n[i] = state.y.segment<3>(Slot::n);
   out.m[i] = state.y.segment<3>(Slot::m);
+}
+
+/// R, v, u at node i, from the step's first stage.
+void store_node_point(const OdePoint& point, int i, RodConfiguration& out) {
+  out.R[i] = point.R;
   out.v[i] = point.v;
   out.u[i] = point.u;
 }
 
-void store_node_tangent(const Matrix63d& theta, const NodeState& state, int i,
-                        RodConfiguration& out) {
+/// dp, dn, dm at node i (before the step).
+void store_node_tangent(const NodeState& state, int i, RodConfiguration& out) {
   out.dp_dw[i] = state.Y.middleCols<3>(Slot::p).transpose();
-  out.dtheta_dw[i] = theta.transpose();
   out.dn_dw[i] = state.Y.middleCols<3>(Slot::n).transpose();
   out.dm_dw[i] = state.Y.middleCols<3>(Slot::m).transpose();
 }
@@ -39,19 +42,24 @@ void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& 
   OdePoint point;
   Matrix63d theta;
   for (int i = 0; i < N; ++i) {
-    const NodeState at_node = state;
+    store_node_state(state, i, i * h, out);
+    if (WithTangent && all_nodes) store_node_tangent(state, i, out);
     detail::rk4_step<WithTangent>(ode, h, state, point, theta);
-    store_node(point, at_node, i, i * h, out);  // `point` and `theta` are at node i
-    if (WithTangent && all_nodes) store_node_tangent(theta, at_node, i, out);
+    store_node_point(point, i, out);  // `point` and `theta` are at node i
+    if (WithTangent && all_nodes) out.dtheta_dw[i] = theta.transpose();
   }
   // The tip: one more evaluation for R, v, u at s = L (no step).
   detail::OdeState unused;
   detail::evaluate(ode, state.y, unused, point);
-  store_node(point, state, N, rod.properties.length, out);
+  store_node_state(state, N, rod.properties.length, out);
+  store_node_point(point, N, out);
   out.energy = state.y[Slot::e];
   if constexpr (WithTangent) {
     theta = detail::body_rotation_tangent(state.y.segment<4>(Slot::q), point.q_scale, state.Y);
-    if (all_nodes) store_node_tangent(theta, state, N, out);
+    if (all_nodes) {
+      store_node_tangent(state, N, out);
+      out.dtheta_dw[N] = theta.transpose();
+    }
     out.tip_dp_dw = state.Y.middleCols<3>(Slot::p).transpose();
     out.tip_dtheta_dw = theta.transpose();
     out.tip_dn_dw = state.Y.middleCols<3>(Slot::n).transpose();
