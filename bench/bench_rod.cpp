@@ -32,7 +32,8 @@ ClampedRod rubber_band(int intervals) {
 Pose bent_tip() {
   Pose pose;
   pose.position = {0.12, 0.0, 0.22};
-  pose.rotation = Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  pose.rotation =
+      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   return pose;
 }
 

@@ -19,7 +19,8 @@ inline std::string format_value(double value) {
 }
 
 inline void require_finite(const std::string& field, double value) {
-  if (!std::isfinite(value)) throw InputError(field + " = " + format_value(value) + " must be finite");
+  if (!std::isfinite(value))
+    throw InputError(field + " = " + format_value(value) + " must be finite");
 }
 
 inline void require_positive(const std::string& field, double value) {

@@ -1,5 +1,5 @@
-// error.hpp: the two kinds of exception rodshape throws. Numerical non-convergence is not one of them:
-// it is a status in a result (see solvers/solve_status.hpp).
+// error.hpp: the two kinds of exception rodshape throws. Numerical non-convergence is not one of
+// them: it is a status in a result (see solvers/solve_status.hpp).
 #pragma once
 
 #include <stdexcept>

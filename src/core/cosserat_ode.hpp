@@ -1,6 +1,7 @@
 // cosserat_ode.hpp (private): the right-hand side of the static Cosserat rod (paper, "system of
 // differential equations") and of its variational equations, in the coordinates the integrator
-// steps: y = (q, p, n, m, e) with the orientation as a quaternion q = (w, x) and e the energy so far.
+// steps: y = (q, p, n, m, e) with the orientation as a quaternion q = (w, x) and e the energy so
+// far.
 //
 //   R = R(q/|q|) = I + (2/|q|²)(w x̂ + x̂²)
 //   v = K_tra⁻¹ Rᵀ n + ṽ  (Kirchhoff: v = ṽ),   u = K_rot⁻¹ Rᵀ m + ũ         constitutive law
@@ -18,8 +19,8 @@
 
 namespace rodshape::detail {
 
-using OdeState = Eigen::Matrix<double, 14, 1>;       // (q, p, n, m, e)
-using OdeTangent = Eigen::Matrix<double, 6, 14>;     // row j: d(state)/dw_j
+using OdeState = Eigen::Matrix<double, 14, 1>;    // (q, p, n, m, e)
+using OdeTangent = Eigen::Matrix<double, 6, 14>;  // row j: d(state)/dw_j
 using Matrix63d = Eigen::Matrix<double, 6, 3>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
@@ -33,7 +34,7 @@ struct CosseratOde {
   Eigen::Vector3d C_tra;  // K_tra⁻¹ (diagonal)
   Eigen::Vector3d C_rot;  // K_rot⁻¹ (diagonal)
   Eigen::Vector3d v_rest, u_rest, f, l;
-  bool extensible;        // Cosserat: shear and extension; Kirchhoff: v = ṽ
+  bool extensible;  // Cosserat: shear and extension; Kirchhoff: v = ṽ
 
   explicit CosseratOde(const ClampedRod& rod)
       : C_tra(rod.properties.K_tra.cwiseInverse()),
@@ -50,7 +51,7 @@ struct OdePoint {
   Eigen::Matrix3d R;
   Eigen::Vector3d n_body, m_body;  // n̄ = Rᵀn, m̄ = Rᵀm
   Eigen::Vector3d v, u, p_prime;
-  double q_scale;                  // 2/|q|²
+  double q_scale;  // 2/|q|²
 };
 
 /// R(q/|q|), exactly orthonormal for any q ≠ 0.
@@ -73,9 +74,12 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   const double s = 2.0 / (w * w + x * x + yq * yq + z * z);
   point.q_scale = s;
   // R = R(q/|q|)
-  const double r00 = 1.0 - s * (yq * yq + z * z), r01 = s * (x * yq - w * z), r02 = s * (x * z + w * yq);
-  const double r10 = s * (x * yq + w * z), r11 = 1.0 - s * (x * x + z * z), r12 = s * (yq * z - w * x);
-  const double r20 = s * (x * z - w * yq), r21 = s * (yq * z + w * x), r22 = 1.0 - s * (x * x + yq * yq);
+  const double r00 = 1.0 - s * (yq * yq + z * z), r01 = s * (x * yq - w * z),
+               r02 = s * (x * z + w * yq);
+  const double r10 = s * (x * yq + w * z), r11 = 1.0 - s * (x * x + z * z),
+               r12 = s * (yq * z - w * x);
+  const double r20 = s * (x * z - w * yq), r21 = s * (yq * z + w * x),
+               r22 = 1.0 - s * (x * x + yq * yq);
   double* const R = point.R.data();  // column-major
   R[0] = r00, R[1] = r10, R[2] = r20, R[3] = r01, R[4] = r11, R[5] = r21, R[6] = r02, R[7] = r12,
   R[8] = r22;
@@ -127,8 +131,8 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   dy[Slot::e] = e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2);
 }
 
-/// Two doubles in one SIMD register (GCC and Clang vector extension; a scalar operand is broadcast).
-/// The tangent's six directions go through the same arithmetic two at a time.
+/// Two doubles in one SIMD register (GCC and Clang vector extension; a scalar operand is
+/// broadcast). The tangent's six directions go through the same arithmetic two at a time.
 typedef double Lanes __attribute__((vector_size(16)));
 
 inline Lanes load(const double* column, int j) {
@@ -208,9 +212,12 @@ inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   // Two directions per iteration, one per SIMD lane.
   for (int j = 0; j < 6; j += 2) {
     // θ = (2/|q|²)(w δx - δw x - x × δx)
-    const Lanes t0 = s * (w * load(dx0, j) - x0 * load(dw, j) - x1 * load(dx2, j) + x2 * load(dx1, j));
-    const Lanes t1 = s * (w * load(dx1, j) - x1 * load(dw, j) - x2 * load(dx0, j) + x0 * load(dx2, j));
-    const Lanes t2 = s * (w * load(dx2, j) - x2 * load(dw, j) - x0 * load(dx1, j) + x1 * load(dx0, j));
+    const Lanes t0 =
+        s * (w * load(dx0, j) - x0 * load(dw, j) - x1 * load(dx2, j) + x2 * load(dx1, j));
+    const Lanes t1 =
+        s * (w * load(dx1, j) - x1 * load(dw, j) - x2 * load(dx0, j) + x0 * load(dx2, j));
+    const Lanes t2 =
+        s * (w * load(dx2, j) - x2 * load(dw, j) - x0 * load(dx1, j) + x1 * load(dx0, j));
     store(theta.data(), j, t0);
     store(theta.data() + 6, j, t1);
     store(theta.data() + 12, j, t2);
@@ -232,10 +239,14 @@ inline Matrix63d evaluate_tangent(const CosseratOde& ode,
     const Lanes dp2 = r20 * a0 + r21 * a1 + r22 * a2;
     // δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu))
     const Lanes qw = load(dw, j), q0 = load(dx0, j), q1 = load(dx1, j), q2 = load(dx2, j);
-    store(out + 6 * Slot::q, j, -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du0 + x1 * du1 + x2 * du2));
-    store(out + 6 * (Slot::q + 1), j, 0.5 * (u0 * qw + u2 * q1 - u1 * q2 + w * du0 + x1 * du2 - x2 * du1));
-    store(out + 6 * (Slot::q + 2), j, 0.5 * (u1 * qw + u0 * q2 - u2 * q0 + w * du1 + x2 * du0 - x0 * du2));
-    store(out + 6 * (Slot::q + 3), j, 0.5 * (u2 * qw + u1 * q0 - u0 * q1 + w * du2 + x0 * du1 - x1 * du0));
+    store(out + 6 * Slot::q, j,
+          -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du0 + x1 * du1 + x2 * du2));
+    store(out + 6 * (Slot::q + 1), j,
+          0.5 * (u0 * qw + u2 * q1 - u1 * q2 + w * du0 + x1 * du2 - x2 * du1));
+    store(out + 6 * (Slot::q + 2), j,
+          0.5 * (u1 * qw + u0 * q2 - u2 * q0 + w * du1 + x2 * du0 - x0 * du2));
+    store(out + 6 * (Slot::q + 3), j,
+          0.5 * (u2 * qw + u1 * q0 - u0 * q1 + w * du2 + x0 * du1 - x1 * du0));
     store(out + 6 * Slot::p, j, dp0);
     store(out + 6 * (Slot::p + 1), j, dp1);
     store(out + 6 * (Slot::p + 2), j, dp2);
@@ -244,7 +255,8 @@ inline Matrix63d evaluate_tangent(const CosseratOde& ode,
     store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - load(pp_x_dn1, j));
     store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - load(pp_x_dn2, j));
     // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
-    store(out + 6 * Slot::e, j, ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
+    store(out + 6 * Slot::e, j,
+          ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
   }
   dY.middleCols<3>(Slot::n).setZero();  // f is constant
   return theta;

@@ -1,5 +1,6 @@
 // rk4_step.hpp (private): one classical Runge–Kutta step of the Cosserat ODE, optionally with its
-// variational equations through the same stages (so the tangent is the exact derivative of the step).
+// variational equations through the same stages (so the tangent is the exact derivative of the
+// step).
 #pragma once
 
 #include "cosserat_ode.hpp"
@@ -15,11 +16,8 @@ struct NodeState {
 /// Advances `state` by h. `start` receives the first stage's evaluation, i.e. R, v, u, ... at the
 /// node the step starts from, and `start_theta` the body rotation tangent there (with tangents).
 template <bool WithTangent>
-inline void rk4_step(const CosseratOde& ode,
-                     double h,
-                     NodeState& state,
-                     OdePoint& start,
-                     Matrix63d& start_theta) {
+inline void rk4_step(
+    const CosseratOde& ode, double h, NodeState& state, OdePoint& start, Matrix63d& start_theta) {
   OdeState k1, k2, k3, k4, y_stage;
   OdeTangent K1, K2, K3, K4, Y_stage;
   OdePoint point;
@@ -56,7 +54,8 @@ inline void rk4_step(const CosseratOde& ode,
 
 /// The node state at s = 0: q from the clamp rotation, p(0), and w = (n(0), m(0)); the tangent is
 /// dn(0)/dw = [I 0], dm(0)/dw = [0 I].
-inline NodeState initial_node_state(const ClampedRod& rod, const Eigen::Vector3d& n0,
+inline NodeState initial_node_state(const ClampedRod& rod,
+                                    const Eigen::Vector3d& n0,
                                     const Eigen::Vector3d& m0) {
   NodeState state;
   const Eigen::Quaterniond q0(rod.clamp.rotation);

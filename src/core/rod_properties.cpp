@@ -10,7 +10,8 @@ std::string to_string(ConstitutiveModel model) {
   return model == ConstitutiveModel::Cosserat ? "cosserat" : "kirchhoff";
 }
 
-ConstitutiveModel constitutive_model_from_string(const std::string& name, const std::string& field) {
+ConstitutiveModel constitutive_model_from_string(const std::string& name,
+                                                 const std::string& field) {
   if (name == "cosserat") return ConstitutiveModel::Cosserat;
   if (name == "kirchhoff") return ConstitutiveModel::Kirchhoff;
   throw InputError(field + " = '" + name + "' must be 'cosserat' or 'kirchhoff'");
@@ -18,12 +19,14 @@ ConstitutiveModel constitutive_model_from_string(const std::string& name, const 
 
 void RodProperties::validate() const {
   detail::require_positive("rod.length", length);
-  static const char* const tra_names[] = {"rod.stiffness.GA", "rod.stiffness.GA", "rod.stiffness.EA"};
+  static const char* const tra_names[] = {"rod.stiffness.GA", "rod.stiffness.GA",
+                                          "rod.stiffness.EA"};
   static const char* const rot_names[] = {"rod.stiffness.EIx", "rod.stiffness.EIy",
                                           "rod.stiffness.GJ"};
   for (int i = 0; i < 3; ++i) {
     // The Kirchhoff model never uses K_tra (v = ṽ): it may be +inf there ("not given").
-    if (model == ConstitutiveModel::Kirchhoff && K_tra(i) == std::numeric_limits<double>::infinity())
+    if (model == ConstitutiveModel::Kirchhoff &&
+        K_tra(i) == std::numeric_limits<double>::infinity())
       continue;
     detail::require_positive(tra_names[i], K_tra(i));
     detail::require_positive(rot_names[i], K_rot(i));
@@ -37,7 +40,8 @@ void RodProperties::validate() const {
 
 namespace {
 
-/// The override if given, else the section-and-material value, else an error naming what is missing.
+/// The override if given, else the section-and-material value, else an error naming what is
+/// missing.
 double stiffness_or(const std::optional<double>& override_value,
                     const RodDescription& d,
                     const char* name,
@@ -69,26 +73,22 @@ RodProperties make_rod_properties(const RodDescription& d) {
   using S = const CrossSection&;
   using M = const Material&;
   // An inextensible, unshearable rod needs no K_tra: +inf when it cannot be computed.
-  const bool needs_K_tra =
-      d.model == ConstitutiveModel::Cosserat || (d.section && d.material);
+  const bool needs_K_tra = d.model == ConstitutiveModel::Cosserat || (d.section && d.material);
   const double inf = std::numeric_limits<double>::infinity();
-  const double GA = !needs_K_tra && !d.stiffness.GA ? inf
-                    : stiffness_or(d.stiffness.GA, d, "GA", [](S s, M m) {
-                        return m.shear_modulus() * s.area();
-                      });
-  const double EA = !needs_K_tra && !d.stiffness.EA ? inf
-                    : stiffness_or(d.stiffness.EA, d, "EA", [](S s, M m) {
-                        return m.young_modulus * s.area();
-                      });
-  const double EIx = stiffness_or(d.stiffness.EIx, d, "EIx", [](S s, M m) {
-    return m.young_modulus * s.second_moment_x();
-  });
-  const double EIy = stiffness_or(d.stiffness.EIy, d, "EIy", [](S s, M m) {
-    return m.young_modulus * s.second_moment_y();
-  });
-  const double GJ = stiffness_or(d.stiffness.GJ, d, "GJ", [](S s, M m) {
-    return m.shear_modulus() * s.torsion_constant();
-  });
+  const double GA =
+      !needs_K_tra && !d.stiffness.GA ? inf : stiffness_or(d.stiffness.GA, d, "GA", [](S s, M m) {
+        return m.shear_modulus() * s.area();
+      });
+  const double EA =
+      !needs_K_tra && !d.stiffness.EA ? inf : stiffness_or(d.stiffness.EA, d, "EA", [](S s, M m) {
+        return m.young_modulus * s.area();
+      });
+  const double EIx = stiffness_or(d.stiffness.EIx, d, "EIx",
+                                  [](S s, M m) { return m.young_modulus * s.second_moment_x(); });
+  const double EIy = stiffness_or(d.stiffness.EIy, d, "EIy",
+                                  [](S s, M m) { return m.young_modulus * s.second_moment_y(); });
+  const double GJ = stiffness_or(d.stiffness.GJ, d, "GJ",
+                                 [](S s, M m) { return m.shear_modulus() * s.torsion_constant(); });
   p.K_tra = {GA, GA, EA};
   p.K_rot = {EIx, EIy, GJ};
   if (d.section && d.material) p.mass_per_length = d.material->density * d.section->area();

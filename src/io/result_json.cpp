@@ -122,7 +122,9 @@ std::string equilibrium_result_json(const ShootingSolution& solution,
   result["message"] = summary.message;
   result["residual"] = number(summary.residual_norm);
   result["iterations"] = summary.iterations;
+  result["chord_steps"] = summary.chord_steps;
   result["integrations"] = summary.integrations;
+  result["jacobian_evaluations"] = summary.jacobian_evaluations;
   result["continuation_steps"] = summary.continuation_steps;
   result["model"] = to_string(rod.properties.model);
   result["energy"] = has_shape ? number(configuration.energy) : Json(nullptr);

@@ -44,7 +44,9 @@ void held_tip_residual(const Pose& target,
   }
 }
 
-void residual_of(const TipCondition& condition, const RodConfiguration& c, Vector6d& r,
+void residual_of(const TipCondition& condition,
+                 const RodConfiguration& c,
+                 Vector6d& r,
                  Matrix6d* J) {
   std::visit(Overloaded{
                  [&](const FreeTip& tip) {

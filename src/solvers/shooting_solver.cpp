@@ -1,10 +1,10 @@
 #include "rodshape/solvers/shooting_solver.hpp"
 
 #include <Eigen/LU>
-#include <unsupported/Eigen/LevenbergMarquardt>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <unsupported/Eigen/LevenbergMarquardt>
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
@@ -247,8 +247,8 @@ DirectResult solve_direct(const ClampedRod& rod,
   bool tried_chord_here = false;
   while (true) {
     const Vector6d& r = problem.residual_at(x);
-    result.residual_norm = r.allFinite() ? r.lpNorm<Eigen::Infinity>()
-                                         : std::numeric_limits<double>::infinity();
+    result.residual_norm =
+        r.allFinite() ? r.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
     if (result.residual_norm <= options.residual_tolerance) {
       result.status = SolveStatus::Converged;
       result.message = "converged";
@@ -325,26 +325,26 @@ struct Homotopy {
     const auto blend = [&](const Pose& target) {
       // ξ = (ρ, φ) = log(T_rest⁻¹ T_target):  φ = log(R_restᵀ R_target),  ρ = J_l(φ)⁻¹ R_restᵀ Δp
       const Eigen::Vector3d phi = log_so3(rest_tip.rotation.transpose() * target.rotation);
-      const Eigen::Vector3d rho = left_jacobian_so3(phi).inverse() *
-                                  (rest_tip.rotation.transpose() *
-                                   (target.position - rest_tip.position));
+      const Eigen::Vector3d rho =
+          left_jacobian_so3(phi).inverse() *
+          (rest_tip.rotation.transpose() * (target.position - rest_tip.position));
       Pose pose;
       pose.rotation = rest_tip.rotation * exp_so3(t * phi);
-      pose.position = rest_tip.position + rest_tip.rotation * (left_jacobian_so3(t * phi) * (t * rho));
+      pose.position =
+          rest_tip.position + rest_tip.rotation * (left_jacobian_so3(t * phi) * (t * rho));
       return pose;
     };
-    return std::visit(Overloaded{
-                          [&](const FreeTip& f) -> TipCondition {
-                            return FreeTip{{t * f.wrench.force, t * f.wrench.moment}};
-                          },
-                          [&](const ClampedTip& c) -> TipCondition {
-                            return ClampedTip{blend(c.pose)};
-                          },
-                          [&](const GraspedTip& g) -> TipCondition {
-                            return GraspedTip{blend(g.pose), g.released};
-                          },
-                      },
-                      tip);
+    return std::visit(
+        Overloaded{
+            [&](const FreeTip& f) -> TipCondition {
+              return FreeTip{{t * f.wrench.force, t * f.wrench.moment}};
+            },
+            [&](const ClampedTip& c) -> TipCondition { return ClampedTip{blend(c.pose)}; },
+            [&](const GraspedTip& g) -> TipCondition {
+              return GraspedTip{blend(g.pose), g.released};
+            },
+        },
+        tip);
   }
 };
 
@@ -408,8 +408,8 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
       direct = step;
       w = w_solved;
     } else {
-      direct.message += "; continuation stopped at t = " + detail::format_value(t) + " (" +
-                        step.message + ")";
+      direct.message +=
+          "; continuation stopped at t = " + detail::format_value(t) + " (" + step.message + ")";
     }
   }
 

@@ -4,11 +4,16 @@ namespace rodshape {
 
 std::string to_string(SolveStatus status) {
   switch (status) {
-    case SolveStatus::NotRun: return "not_run";
-    case SolveStatus::Converged: return "converged";
-    case SolveStatus::IterationLimit: return "iteration_limit";
-    case SolveStatus::Diverged: return "diverged";
-    case SolveStatus::Singular: return "singular";
+    case SolveStatus::NotRun:
+      return "not_run";
+    case SolveStatus::Converged:
+      return "converged";
+    case SolveStatus::IterationLimit:
+      return "iteration_limit";
+    case SolveStatus::Diverged:
+      return "diverged";
+    case SolveStatus::Singular:
+      return "singular";
   }
   return "unknown";
 }

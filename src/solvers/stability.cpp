@@ -16,7 +16,8 @@ using detail::Slot;
 constexpr double kConjugateTolerance = 1e-6;  // σ_min(J̃) below this after refinement: singular
 
 /// C(s) = d(pose at s)/d(base wrench) of the unloaded straight rod of length s, clamp frame,
-/// from the linearised equations m(σ) = m(0) - σ e_z × n(0), θ' = K_rot⁻¹ m, δp' = K_tra⁻¹ n + θ × e_z:
+/// from the linearised equations m(σ) = m(0) - σ e_z × n(0), θ' = K_rot⁻¹ m, δp' = K_tra⁻¹ n + θ ×
+/// e_z:
 ///   δp_x = (c_x s - b_y s³/6) n_x + b_y s²/2 m_y      θ_x = b_x (s m_x + s²/2 n_y)
 ///   δp_y = (c_y s - b_x s³/6) n_y - b_x s²/2 m_x      θ_y = b_y (s m_y - s²/2 n_x)
 ///   δp_z = c_z s n_z                                  θ_z = b_z s m_z
@@ -47,7 +48,9 @@ class ScaledJacobian {
  public:
   ScaledJacobian(const RodProperties& props, const Eigen::Matrix3d& R0) : props_(props), R0_(R0) {}
 
-  Matrix6d operator()(const Matrix36d& dp_dw, const Matrix36d& dtheta_dw, const Eigen::Matrix3d& R,
+  Matrix6d operator()(const Matrix36d& dp_dw,
+                      const Matrix36d& dtheta_dw,
+                      const Eigen::Matrix3d& R,
                       double s) const {
     Matrix6d J;
     J << R0_.transpose() * dp_dw, R0_.transpose() * R * dtheta_dw;
@@ -74,8 +77,8 @@ NodeState node_state(const RodConfiguration& c, int i) {
   state.Y.setZero();
   for (int j = 0; j < 6; ++j) {
     const Eigen::Vector3d theta = c.dtheta_dw[i].col(j);
-    const Eigen::Quaterniond dq = q * Eigen::Quaterniond(0.0, 0.5 * theta.x(), 0.5 * theta.y(),
-                                                         0.5 * theta.z());
+    const Eigen::Quaterniond dq =
+        q * Eigen::Quaterniond(0.0, 0.5 * theta.x(), 0.5 * theta.y(), 0.5 * theta.z());
     state.Y(j, Slot::q) = dq.w();
     state.Y.block<1, 3>(j, Slot::q + 1) = dq.vec().transpose();
   }
@@ -88,7 +91,9 @@ NodeState node_state(const RodConfiguration& c, int i) {
 /// Evaluates J̃ between nodes by one Runge–Kutta step from node i.
 class JacobianBetweenNodes {
  public:
-  JacobianBetweenNodes(const ClampedRod& rod, const RodConfiguration& c, const ScaledJacobian& scaled)
+  JacobianBetweenNodes(const ClampedRod& rod,
+                       const RodConfiguration& c,
+                       const ScaledJacobian& scaled)
       : ode_(rod), c_(c), scaled_(scaled) {}
 
   Matrix6d at(int i, double s) const {
@@ -113,7 +118,8 @@ class JacobianBetweenNodes {
 
 StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
   if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
-    throw InputError("assess_stability needs a configuration integrated with Derivatives::AllNodes");
+    throw InputError(
+        "assess_stability needs a configuration integrated with Derivatives::AllNodes");
   if (c.nodes() != rod.nodes())
     throw InputError("assess_stability: the configuration has " + std::to_string(c.nodes()) +
                      " nodes, the rod " + std::to_string(rod.nodes()));

@@ -1,4 +1,5 @@
-// test_shooting_residual.cpp: the shooting residual r(w) of each tip condition and its exact Jacobian.
+// test_shooting_residual.cpp: the shooting residual r(w) of each tip condition and its exact
+// Jacobian.
 //
 //  * Identities: r = 0 at the wrench a forward solve started from (clamped, grasped with any axes
 //    released, free with the tip wrench the forward solve ends with).
@@ -40,7 +41,8 @@ ClampedRod general_band(ConstitutiveModel model) {
   ClampedRod rod = testing::rubber_band(model, 20);
   rod.properties.K_rot = Eigen::Vector3d(0.04, 0.03, 0.028);  // EIx ≠ EIy
   rod.properties.u_rest = Eigen::Vector3d(0.5, -0.3, 1.0);
-  rod.load = DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
+  rod.load =
+      DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
   rod.clamp.position = Eigen::Vector3d(0.1, 0.2, 0.3);
   rod.clamp.rotation = exp_so3(Eigen::Vector3d(0.2, -0.5, 0.3));
   rod.validate();
@@ -95,7 +97,8 @@ Vector6d row_sizes(const ClampedRod& rod, const TipCondition& tip) {
   // The residual must be far from zero, or the Jacobian of the rotation rows would only be tested
   // where J_r⁻¹(θ) ≈ I.
   if (r0.cwiseQuotient(F).lpNorm<Eigen::Infinity>() < 0.1)
-    return ::testing::AssertionFailure() << "test set-up: residual too small, r = " << r0.transpose();
+    return ::testing::AssertionFailure()
+           << "test set-up: residual too small, r = " << r0.transpose();
   return CompareMatrices(exact_scaled, fd_scaled, bound);
 }
 
@@ -116,8 +119,8 @@ TEST_P(ShootingResidualJacobian, FreeTipMatchesFiniteDifferences) {
 
 TEST_P(ShootingResidualJacobian, ClampedTipWithRotatedTargetMatchesFiniteDifferences) {
   const ClampedRod rod = general_band(GetParam());
-  EXPECT_TRUE(jacobian_matches_finite_differences(rod, ClampedTip{rotated_target()},
-                                                  general_wrench(rod)));
+  EXPECT_TRUE(
+      jacobian_matches_finite_differences(rod, ClampedTip{rotated_target()}, general_wrench(rod)));
 }
 
 TEST_P(ShootingResidualJacobian, GraspedTipWithReleasedMomentXMatchesFiniteDifferences) {
@@ -148,7 +151,8 @@ INSTANTIATE_TEST_SUITE_P(BothModels,
                                            ConstitutiveModel::Kirchhoff),
                          [](const auto& info) { return to_string(info.param); });
 
-// ---- identities -----------------------------------------------------------------------------------
+// ---- identities
+// -----------------------------------------------------------------------------------
 
 // The residual of a held tip at the pose a forward solve ends at is zero up to the round-off of
 // R_dᵀR(L) - I (a few ε) — the same integration, so no discretisation error enters.
@@ -158,7 +162,8 @@ TEST(ShootingResidual, HeldTipIsZeroAtTheForwardSolvedPose) {
   const Pose tip = c.tip();
   const double round_off = 16.0 * kEps;
   EXPECT_TRUE(CompareMatrices(shooting_residual(ClampedTip{tip}, c), Vector6d::Zero(), round_off));
-  // A released axis uses the tip wrench along it instead: what that row reads is R_dᵀ n(L), R_dᵀ m(L).
+  // A released axis uses the tip wrench along it instead: what that row reads is R_dᵀ n(L), R_dᵀ
+  // m(L).
   GraspedTip grasp{tip, {}};
   grasp.released[0] = grasp.released[4] = true;
   const Vector6d r = shooting_residual(grasp, c);
@@ -178,7 +183,8 @@ TEST(ShootingResidual, FreeTipIsTheTipWrenchMinusTheLoad) {
   Vector6d expected;
   expected << c.n.back() - load.force, c.m.back() - load.moment;
   EXPECT_TRUE(CompareMatrices(shooting_residual(FreeTip{load}, c), expected, 0.0));
-  EXPECT_TRUE(CompareMatrices(shooting_residual(FreeTip{c.tip_wrench()}, c), Vector6d::Zero(), 0.0));
+  EXPECT_TRUE(
+      CompareMatrices(shooting_residual(FreeTip{c.tip_wrench()}, c), Vector6d::Zero(), 0.0));
 }
 
 // The rotation rows are log(R_dᵀ R(L)) in the grasp frame: a target rotated by a known angle about
@@ -189,7 +195,7 @@ TEST(ShootingResidual, HeldTipRotationRowsAreTheLogInTheGraspFrame) {
   const Eigen::Vector3d phi(0.3, -0.2, 0.1);
   const Eigen::Vector3d offset(0.01, 0.02, -0.03);  // grasp frame
   Pose target;
-  target.rotation = c.R.back() * exp_so3(phi);       // R_dᵀ R(L) = exp(-φ)
+  target.rotation = c.R.back() * exp_so3(phi);              // R_dᵀ R(L) = exp(-φ)
   target.position = c.p.back() - target.rotation * offset;  // R_dᵀ (p(L) - p_d) = offset
   Vector6d expected;
   expected << offset, -phi;

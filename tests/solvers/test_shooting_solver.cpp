@@ -7,12 +7,12 @@
 // integration that produced the target (|δ| ≤ 16 N ε in m and rad; no discretisation error, since
 // the same discrete map is inverted). To first order w* - w₀ = J⁻¹ (r(w*) - r(w₀)), so
 //     ||w* - w₀||_∞ ≤ ||J⁻¹||_∞ (τ + δ) (1 + ρ),
-// with ||J⁻¹||_∞ computed from the exact Jacobian at w₀ (tests/support/solver_fixtures.hpp) and ρ the
-// relative change of J between w₀ and w*, which is O(||J⁻¹|| τ / S) ≤ 1e-5 here: ρ = 0.1 is a wide
-// margin on a second-order term, not on the first-order one. Typical values: ||J⁻¹||_∞ ≈ 3e3 N/m
-// for the Cosserat band (the axial direction: EA/L ≈ 4.4e3 N/m), so forces come back to ≈ 3e-7 N.
-// For a held tip the position rows are R_dᵀ(p - p_d), so |p - p_d|_∞ ≤ √3 τ; the rotation rows are
-// θ = log(R_dᵀ R), and a unit axis moves by at most |θ|₂ ≤ √3 τ.
+// with ||J⁻¹||_∞ computed from the exact Jacobian at w₀ (tests/support/solver_fixtures.hpp) and ρ
+// the relative change of J between w₀ and w*, which is O(||J⁻¹|| τ / S) ≤ 1e-5 here: ρ = 0.1 is a
+// wide margin on a second-order term, not on the first-order one. Typical values: ||J⁻¹||_∞ ≈ 3e3
+// N/m for the Cosserat band (the axial direction: EA/L ≈ 4.4e3 N/m), so forces come back to ≈ 3e-7
+// N. For a held tip the position rows are R_dᵀ(p - p_d), so |p - p_d|_∞ ≤ √3 τ; the rotation rows
+// are θ = log(R_dᵀ R), and a unit axis moves by at most |θ|₂ ≤ √3 τ.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,9 +73,9 @@ struct RoundTrip {
 /// Round trip: w₀ → integrate → tip pose → solve(ClampedTip) from zero → w*.
 /// The clamped–clamped problem can have several equilibria with the same tip pose (a rod bent by
 /// more than ~2 rad can also be bent the other way round, or buckled); a local solver started from
-/// zero finds the one whose basin holds the zero guess. So w* is either w₀ to the bound of the error
-/// model, or a distinct equilibrium: converged, and further from w₀ than 1e3 × the bound (anything
-/// in between is neither and fails).
+/// zero finds the one whose basin holds the zero guess. So w* is either w₀ to the bound of the
+/// error model, or a distinct equilibrium: converged, and further from w₀ than 1e3 × the bound
+/// (anything in between is neither and fails).
 RoundTrip expect_round_trip(const ClampedRod& rod, const BaseWrench& w0) {
   SCOPED_TRACE(to_string(rod.properties.model) + ", " + describe(w0));
   const RodConfiguration forward = integrate(rod, w0, Derivatives::Tip);
@@ -91,7 +91,8 @@ RoundTrip expect_round_trip(const ClampedRod& rod, const BaseWrench& w0) {
   EXPECT_LE(solution.summary.residual_norm, kTau);
   EXPECT_EQ(solution.summary.continuation_steps, 0) << solution.summary.brief();
   const double bound = inverse_norm * (kTau + residual_round_off(rod)) * 1.1;
-  const double error = (solution.base_wrench.to_vector() - w0.to_vector()).lpNorm<Eigen::Infinity>();
+  const double error =
+      (solution.base_wrench.to_vector() - w0.to_vector()).lpNorm<Eigen::Infinity>();
   RoundTrip result{solution.summary.jacobian_evaluations, error <= bound};
   if (!result.recovered) {
     std::cout << "[ round trip ] " << to_string(rod.properties.model) << ": " << describe(w0)
@@ -108,7 +109,8 @@ class ShootingSolver : public ::testing::TestWithParam<ConstitutiveModel> {
   ClampedRod rod_ = testing::rubber_band(GetParam());
 };
 
-// ---- round trips ----------------------------------------------------------------------------------
+// ---- round trips
+// ----------------------------------------------------------------------------------
 
 TEST_P(ShootingSolver, RecoversRandomBaseWrenchesFromTheirTipPose) {
   std::mt19937 rng(testing::test_seed());
@@ -117,7 +119,8 @@ TEST_P(ShootingSolver, RecoversRandomBaseWrenchesFromTheirTipPose) {
   int distinct = 0;
   for (int k = 0; k < count; ++k) {
     const BaseWrench w0 = random_wrench(rng);
-    SCOPED_TRACE("draw " + std::to_string(k) + " (seed " + std::to_string(testing::test_seed()) + ")");
+    SCOPED_TRACE("draw " + std::to_string(k) + " (seed " + std::to_string(testing::test_seed()) +
+                 ")");
     const RoundTrip trip = expect_round_trip(rod_, w0);
     if (trip.recovered) {
       ++histogram[trip.iterations];
@@ -127,8 +130,9 @@ TEST_P(ShootingSolver, RecoversRandomBaseWrenchesFromTheirTipPose) {
   }
   std::ostringstream out;
   for (const auto& [evaluations, draws] : histogram) out << evaluations << ":" << draws << " ";
-  std::cout << "[ round trip ] " << to_string(GetParam()) << " jacobian_evaluations:draws " << out.str()
-            << "; " << distinct << " of " << count << " draws found another equilibrium\n";
+  std::cout << "[ round trip ] " << to_string(GetParam()) << " jacobian_evaluations:draws "
+            << out.str() << "; " << distinct << " of " << count
+            << " draws found another equilibrium\n";
   // The expensive unit of a solve is an integration with derivatives (the chord steps of the
   // endgame integrate without). Observed over seeds 1–5 × 200 draws per model: 2–6 Jacobian
   // evaluations for 99% of the recovered draws, a tail up to 13 (Kirchhoff); another equilibrium
@@ -206,17 +210,18 @@ TEST_P(ShootingSolver, PureAxialForce) {
   }
 }
 
-// ---- warm start -----------------------------------------------------------------------------------
+// ---- warm start
+// -----------------------------------------------------------------------------------
 
-// From a solved configuration, a tip moved by 1 mm is a small Newton correction: the residual at the
-// guess is already below the chord threshold, so the solver takes Newton's step with the Jacobian
-// at the guess and then chord steps that reuse it; they contract |r| by ~||J⁻¹ΔJ|| = O(1 mm / L)
-// each, so the one Jacobian evaluation at the guess suffices (two allowed: one fallback to
+// From a solved configuration, a tip moved by 1 mm is a small Newton correction: the residual at
+// the guess is already below the chord threshold, so the solver takes Newton's step with the
+// Jacobian at the guess and then chord steps that reuse it; they contract |r| by ~||J⁻¹ΔJ|| = O(1
+// mm / L) each, so the one Jacobian evaluation at the guess suffices (two allowed: one fallback to
 // Levenberg–Marquardt). That needs the move to be
-// well inside Newton's region of quadratic convergence, i.e. small against the slack L - |p(L) - p(0)|
-// that lets the tip move without stretching the rod: for a nearly straight rod (slack ~1 mm) pulling
-// the tip 1 mm outwards is a large, tension-dominated change (observed: 4–35 iterations, and even
-// pure Newton needs 4+). The configuration below is bent by ~2 rad in 3D (slack ≈ 40 mm).
+// well inside Newton's region of quadratic convergence, i.e. small against the slack L - |p(L) -
+// p(0)| that lets the tip move without stretching the rod: for a nearly straight rod (slack ~1 mm)
+// pulling the tip 1 mm outwards is a large, tension-dominated change (observed: 4–35 iterations,
+// and even pure Newton needs 4+). The configuration below is bent by ~2 rad in 3D (slack ≈ 40 mm).
 TEST_P(ShootingSolver, WarmStartAfterATipMoveOfOneMillimetreNeedsOneJacobian) {
   Vector6d xi;
   xi << 2.0, -0.5, 0.3, 0.3, -1.0, 0.5;
@@ -236,8 +241,8 @@ TEST_P(ShootingSolver, WarmStartAfterATipMoveOfOneMillimetreNeedsOneJacobian) {
     ClampedTip moved = tip;
     moved.pose.position += 1e-3 * direction;
     const ShootingSolution second = solve_equilibrium(rod_, moved, first.base_wrench);
-    SCOPED_TRACE("direction " + std::to_string(direction.x()) + " " + std::to_string(direction.y()) +
-                 " " + std::to_string(direction.z()));
+    SCOPED_TRACE("direction " + std::to_string(direction.x()) + " " +
+                 std::to_string(direction.y()) + " " + std::to_string(direction.z()));
     EXPECT_EQ(second.summary.status, SolveStatus::Converged) << second.summary.brief();
     EXPECT_LE(second.summary.jacobian_evaluations, 2) << second.summary.brief();
     EXPECT_LE((second.configuration.tip().position - moved.pose.position).lpNorm<Eigen::Infinity>(),
@@ -248,7 +253,8 @@ TEST_P(ShootingSolver, WarmStartAfterATipMoveOfOneMillimetreNeedsOneJacobian) {
             << " Jacobian evaluations\n";
 }
 
-// ---- clamped–free ---------------------------------------------------------------------------------
+// ---- clamped–free
+// ---------------------------------------------------------------------------------
 
 // The cantilever under its weight, tip free: n' = -f gives n(0) = n(L) + f L exactly (RK4 is exact
 // for a constant integrand), so the base force is known in closed form whatever the shape.
@@ -274,7 +280,8 @@ TEST_P(ShootingSolver, CantileverUnderGravityWithFreeTip) {
 
 TEST_P(ShootingSolver, FreeTipCarriesTheGivenWrench) {
   ClampedRod rod = rod_;
-  rod.load = DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
+  rod.load =
+      DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
   const FreeTip tip{{Eigen::Vector3d(0.3, -0.2, 0.4), Eigen::Vector3d(0.02, -0.05, 0.03)}};
   const ShootingSolution solution = solve_equilibrium(rod, tip);
   ASSERT_EQ(solution.summary.status, SolveStatus::Converged) << solution.summary.brief();
@@ -283,8 +290,7 @@ TEST_P(ShootingSolver, FreeTipCarriesTheGivenWrench) {
                               tip.wrench.to_vector(), kTau));
   const Eigen::Vector3d expected_base = tip.wrench.force + rod.load.force * rod.properties.length;
   EXPECT_TRUE(CompareMatrices(solution.base_wrench.force, expected_base, kTau + 16.0 * kEps));
-  EXPECT_NEAR(solution.summary.residual_norm, recomputed_residual_norm(tip, solution),
-              16.0 * kEps);
+  EXPECT_NEAR(solution.summary.residual_norm, recomputed_residual_norm(tip, solution), 16.0 * kEps);
 }
 
 TEST_P(ShootingSolver, FreeTipWithoutLoadGivesZeroWrench) {
@@ -298,12 +304,13 @@ TEST_P(ShootingSolver, FreeTipWithoutLoadGivesZeroWrench) {
                               16.0 * rod_.intervals * kEps));
 }
 
-// ---- partial grasps -------------------------------------------------------------------------------
+// ---- partial grasps
+// -------------------------------------------------------------------------------
 
 /// A held pose whose clamped solution w₀ has a clearly nonzero tip wrench on every grasp axis.
 struct GraspCase {
   BaseWrench w0;
-  Pose pose;                 // the tip pose of w₀ (R_d = R(L))
+  Pose pose;                                  // the tip pose of w₀ (R_d = R(L))
   Eigen::Vector3d force_grasp, moment_grasp;  // R_dᵀ n(L), R_dᵀ m(L) at w₀
 };
 
@@ -370,14 +377,15 @@ TEST_P(ShootingSolver, GraspWithReleasedForceYAndMomentZ) {
   EXPECT_GT(std::abs(theta.z()), 1e-3) << "θ = " << theta.transpose();
 }
 
-// ---- continuation ---------------------------------------------------------------------------------
+// ---- continuation
+// ---------------------------------------------------------------------------------
 
 /// A tip pose far from the rest pose: the band bent into a near loop (~4.5 rad) and twisted.
 ClampedTip hard_tip(const ClampedRod& rod) {
   Vector6d xi;
   xi << 1.5, 0.0, 0.0, 0.3, 4.0, 1.0;
-  return ClampedTip{integrate(rod, Wrench::from_vector(xi.cwiseProduct(testing::wrench_scale(rod))))
-                        .tip()};
+  return ClampedTip{
+      integrate(rod, Wrench::from_vector(xi.cwiseProduct(testing::wrench_scale(rod)))).tip()};
 }
 
 /// Solves `tip` with 3 iterations per solve, without and with continuation: the direct solve must
@@ -422,7 +430,8 @@ TEST(ShootingSolverContinuation, HeldTipFarFromRestCosserat) {
   expect_continuation_rescues(rod, tip);
 }
 
-// ---- statuses -------------------------------------------------------------------------------------
+// ---- statuses
+// -------------------------------------------------------------------------------------
 
 TEST_P(ShootingSolver, OneIterationOnAHardCaseIsAnIterationLimit) {
   const ClampedTip tip = hard_tip(rod_);
@@ -437,7 +446,8 @@ TEST_P(ShootingSolver, OneIterationOnAHardCaseIsAnIterationLimit) {
   EXPECT_EQ(solution.summary.iterations, 1);
   EXPECT_NEAR(solution.summary.residual_norm, recomputed_residual_norm(tip, solution),
               16.0 * kEps * std::max(1.0, solution.summary.residual_norm));
-  EXPECT_NE(solution.summary.brief().find(to_string(SolveStatus::IterationLimit)), std::string::npos)
+  EXPECT_NE(solution.summary.brief().find(to_string(SolveStatus::IterationLimit)),
+            std::string::npos)
       << solution.summary.brief();
   EXPECT_NE(solution.summary.message.find("max_iterations"), std::string::npos)
       << solution.summary.message;
@@ -456,7 +466,8 @@ TEST_P(ShootingSolver, ConvergedIffResidualWithinToleranceOverARandomSweep) {
     options.max_iterations = 1 + k % 8;
     options.continuation = k % 2 == 0;
     const ShootingSolution solution = solve_equilibrium(rod_, tip, {}, options);
-    SCOPED_TRACE("draw " + std::to_string(k) + ", " + describe(w0) + ": " + solution.summary.brief());
+    SCOPED_TRACE("draw " + std::to_string(k) + ", " + describe(w0) + ": " +
+                 solution.summary.brief());
     const double norm = solution.summary.residual_norm;
     EXPECT_EQ(solution.summary.converged(), norm <= options.residual_tolerance);
     EXPECT_NE(solution.summary.status, SolveStatus::NotRun);
@@ -486,7 +497,8 @@ INSTANTIATE_TEST_SUITE_P(BothModels,
                                            ConstitutiveModel::Kirchhoff),
                          [](const auto& info) { return to_string(info.param); });
 
-// ---- bad input ------------------------------------------------------------------------------------
+// ---- bad input
+// ------------------------------------------------------------------------------------
 
 /// Runs `call`, expects InputError, and returns its message ("" if none was thrown).
 template <class Call>
@@ -549,8 +561,8 @@ TEST(ShootingSolverInput, BadOptionsAreInputErrorsNamingTheField) {
   options = {};
   options.residual_tolerance = -1.0;
   const std::string tolerance = input_error_message([&] { options.validate(); });
-  // shooting_solver.hpp documents the message as "residual_tolerance = -1 must be > 0", and the task
-  // reader (src/io/task_reader.cpp) relies on that prefix to rename it "solver.tolerance".
+  // shooting_solver.hpp documents the message as "residual_tolerance = -1 must be > 0", and the
+  // task reader (src/io/task_reader.cpp) relies on that prefix to rename it "solver.tolerance".
   EXPECT_EQ(tolerance.rfind("residual_tolerance = -1", 0), 0u) << tolerance;
 
   options = {};

@@ -9,11 +9,11 @@
 // The bending block of J = d(p_x, θ)/d(n_x, m_y) then has, with x = k s,
 //     P² det = 2 - 2 cos x - x sin x + (P/(α GA)) x sin x,
 // whose first positive root is x = 2π exactly (the shear term vanishes there with sin x): the first
-// conjugate point is s* = 2π / k = 2π sqrt(EI / (α P)) = L sqrt(P_E / (α P)), P_E = 4π² EI / L², the
-// clamped–clamped Euler load. The extension and shear enter only through α = 1 + O(P/EA) + O(P/GA):
-// with GA = 1e3 EA and P ≈ P_E ≈ 18.8 N, P/EA ≈ 1.5e-2, so P = 0.8 P_E (stable) and 1.2 P_E
-// (unstable, s* ≈ 0.92 L) are both 20% away from the threshold, far beyond the 1.5% correction. The
-// other blocks (y–z bending with EIx, axial L/EA, torsion L/GJ) are the same or never singular.
+// conjugate point is s* = 2π / k = 2π sqrt(EI / (α P)) = L sqrt(P_E / (α P)), P_E = 4π² EI / L²,
+// the clamped–clamped Euler load. The extension and shear enter only through α = 1 + O(P/EA) +
+// O(P/GA): with GA = 1e3 EA and P ≈ P_E ≈ 18.8 N, P/EA ≈ 1.5e-2, so P = 0.8 P_E (stable) and 1.2
+// P_E (unstable, s* ≈ 0.92 L) are both 20% away from the threshold, far beyond the 1.5% correction.
+// The other blocks (y–z bending with EIx, axial L/EA, torsion L/GJ) are the same or never singular.
 // Discretisation: the variational equations of the straight rod are linear with constant
 // coefficients; RK4 shifts their phase by (kh)⁵/120 per step, so s* moves by s* (kh)⁴/120. We allow
 // ten times that plus the root finder's 1e-9 L.
@@ -77,7 +77,8 @@ ConjugatePoint expected_conjugate_point(const ClampedRod& rod, double EI, double
   return c;
 }
 
-// ---- straight rods --------------------------------------------------------------------------------
+// ---- straight rods
+// --------------------------------------------------------------------------------
 
 class StraightCompressedRod : public ::testing::TestWithParam<double> {};  // param: EIy / EIx
 
@@ -102,10 +103,11 @@ TEST_P(StraightCompressedRod, UnstableBeyondItWithTheConjugatePointWhereSqrtPOve
   ASSERT_TRUE(report.conjugate_point_s.has_value());
   const ConjugatePoint expected = expected_conjugate_point(rod, 0.04, P);
   EXPECT_TRUE(CompareScalars(*report.conjugate_point_s, expected.s, expected.tolerance));
-  // Without the O(P/EA) correction the prediction L sqrt(P_E/P) is off by ~0.7%: the test resolves it.
-  std::cout << "[ conjugate point ] EIy/EIx = " << GetParam() << ": s* = " << *report.conjugate_point_s
-            << " m, 2π/k = " << expected.s << " m (±" << expected.tolerance
-            << "), L sqrt(P_E/P) = " << L * std::sqrt(1.0 / 1.2) << " m\n";
+  // Without the O(P/EA) correction the prediction L sqrt(P_E/P) is off by ~0.7%: the test resolves
+  // it.
+  std::cout << "[ conjugate point ] EIy/EIx = " << GetParam()
+            << ": s* = " << *report.conjugate_point_s << " m, 2π/k = " << expected.s << " m (±"
+            << expected.tolerance << "), L sqrt(P_E/P) = " << L * std::sqrt(1.0 / 1.2) << " m\n";
   EXPECT_EQ(report.min_singular_value, 0.0);
 }
 
@@ -127,12 +129,14 @@ TEST_P(StraightCompressedRod, ConjugatePointMovesAsOneOverSqrtP) {
 INSTANTIATE_TEST_SUITE_P(BendingStiffnessRatio,
                          StraightCompressedRod,
                          ::testing::Values(1.0, 1.5),
-                         [](const auto& info) { return info.param == 1.0 ? "EqualEI" : "UnequalEI"; });
+                         [](const auto& info) {
+                           return info.param == 1.0 ? "EqualEI" : "UnequalEI";
+                         });
 
 // The unloaded straight Cosserat rod: J(s) is the compliance C(s) of the straight rod of length s,
-// so the normalised J̃ = J C⁻¹ is the identity at every node (RK4 is exact on the unloaded rod, whose
-// variational solution is polynomial of degree 3 in s): σ_min = 1 up to round-off, amplified by
-// cond(C(h)) ≈ (L/h)² EA h² / EI... ≲ 1e6 at the first node; 1e-6 covers ε·1e6 with margin.
+// so the normalised J̃ = J C⁻¹ is the identity at every node (RK4 is exact on the unloaded rod,
+// whose variational solution is polynomial of degree 3 in s): σ_min = 1 up to round-off, amplified
+// by cond(C(h)) ≈ (L/h)² EA h² / EI... ≲ 1e6 at the first node; 1e-6 covers ε·1e6 with margin.
 TEST(Stability, UnloadedStraightCosseratRodIsStableWithUnitSingularValues) {
   const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 100);
   const StabilityReport report = assess_stability(rod, integrate(rod, {}, Derivatives::AllNodes));
@@ -164,7 +168,8 @@ TEST(Stability, NeedsEveryNodesDerivatives) {
   EXPECT_THROW(assess_stability(rod, integrate(coarser, {}, Derivatives::AllNodes)), InputError);
 }
 
-// ---- buckled shapes -------------------------------------------------------------------------------
+// ---- buckled shapes
+// -------------------------------------------------------------------------------
 
 struct BuckledMode {
   ShootingSolution solution;
@@ -188,9 +193,9 @@ BuckledMode buckle(const ClampedRod& rod, const BaseWrench& guess) {
     dp_dw_max = std::max(dp_dw_max, c.dp_dw[i].cwiseAbs().rowwise().sum().maxCoeff());
   }
   const Matrix6d J = testing::residual_jacobian(rod, tip, mode.solution.base_wrench);
-  mode.symmetry_tolerance = 2.0 * testing::rk4_error_bound(L, kappa_max, rod.intervals) +
-                            2.0 * dp_dw_max * testing::inverse_inf_norm(J) *
-                                ShootingOptions{}.residual_tolerance;
+  mode.symmetry_tolerance =
+      2.0 * testing::rk4_error_bound(L, kappa_max, rod.intervals) +
+      2.0 * dp_dw_max * testing::inverse_inf_norm(J) * ShootingOptions{}.residual_tolerance;
   return mode;
 }
 
@@ -241,8 +246,8 @@ TEST(Stability, FirstBuckledModeIsSymmetricAndStable) {
   const BuckledMode mode = first_mode(rod);
   const ShootingSolution& solution = mode.solution;
   ASSERT_EQ(solution.summary.status, SolveStatus::Converged) << solution.summary.brief();
-  std::cout << "[ buckled mode 1 ] " << solution.summary.brief() << ", w = "
-            << solution.base_wrench.to_vector().transpose() << "\n";
+  std::cout << "[ buckled mode 1 ] " << solution.summary.brief()
+            << ", w = " << solution.base_wrench.to_vector().transpose() << "\n";
   const RodConfiguration& c = solution.configuration;
   const int N = c.nodes() - 1;
   // Buckled, not straight: the midpoint is well off the axis; no lateral force (symmetric mode).
@@ -262,8 +267,8 @@ TEST(Stability, SecondBuckledModeIsAntisymmetricAndUnstable) {
   const BuckledMode mode = second_mode(rod);
   const ShootingSolution& solution = mode.solution;
   ASSERT_EQ(solution.summary.status, SolveStatus::Converged) << solution.summary.brief();
-  std::cout << "[ buckled mode 2 ] " << solution.summary.brief() << ", w = "
-            << solution.base_wrench.to_vector().transpose() << "\n";
+  std::cout << "[ buckled mode 2 ] " << solution.summary.brief()
+            << ", w = " << solution.base_wrench.to_vector().transpose() << "\n";
   const RodConfiguration& c = solution.configuration;
   const int N = c.nodes() - 1;
   // S-shaped: off the axis at the quarter points, on it at the middle.
@@ -302,7 +307,8 @@ TEST(Stability, BuckledModesOfAKirchhoffRod) {
   const ClampedRod rod = buckling_band(ConstitutiveModel::Kirchhoff);
   const double L = rod.properties.length;
   const BuckledMode first = first_mode(rod);
-  ASSERT_EQ(first.solution.summary.status, SolveStatus::Converged) << first.solution.summary.brief();
+  ASSERT_EQ(first.solution.summary.status, SolveStatus::Converged)
+      << first.solution.summary.brief();
   expect_mirror_symmetry(first, +1.0, L);
   const StabilityReport first_report = assess_stability(rod, first.solution.configuration);
   EXPECT_TRUE(first_report.stable);

@@ -11,8 +11,8 @@ namespace rodshape {
 struct ClampedRod {
   RodProperties properties;
   DistributedLoad load;
-  Pose clamp;             // world_T_base: p(0), R(0)
-  int intervals = 100;    // N: N + 1 nodes s_i = i L / N
+  Pose clamp;           // world_T_base: p(0), R(0)
+  int intervals = 100;  // N: N + 1 nodes s_i = i L / N
 
   int nodes() const { return intervals + 1; }
   double step() const { return properties.length / intervals; }

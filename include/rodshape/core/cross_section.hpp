@@ -23,7 +23,8 @@ struct CrossSection {
   /// Second moment of area about the local y axis: h w³/12 or πr⁴/4.
   double second_moment_y() const;
   /// Torsion constant J. The paper takes J = Ix + Iy (exact for a circle); for a rectangle we use
-  /// Saint-Venant's series, J = a b³ (1/3 - 0.21 (b/a)(1 - b⁴/(12 a⁴))), a ≥ b, which is within 0.5%.
+  /// Saint-Venant's series, J = a b³ (1/3 - 0.21 (b/a)(1 - b⁴/(12 a⁴))), a ≥ b, which is within
+  /// 0.5%.
   double torsion_constant() const;
 
   /// Throws InputError naming `field` (e.g. "rod.section") when a dimension is not finite and > 0.

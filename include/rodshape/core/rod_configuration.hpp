@@ -31,11 +31,11 @@ struct RodConfiguration {
   // Derivatives with respect to w (6 columns: n(0) then m(0)). A rotation's derivative is the
   // body-frame angle: δR = R θ̂ with θ = dθ_dw δw.
   Derivatives derivatives = Derivatives::None;
-  std::vector<Matrix36d> dp_dw;      // size nodes() with AllNodes, else empty
-  std::vector<Matrix36d> dtheta_dw;  // "
-  std::vector<Matrix36d> dn_dw;      // "
-  std::vector<Matrix36d> dm_dw;      // "
-  Matrix36d tip_dp_dw = Matrix36d::Zero();      // with Tip or AllNodes
+  std::vector<Matrix36d> dp_dw;             // size nodes() with AllNodes, else empty
+  std::vector<Matrix36d> dtheta_dw;         // "
+  std::vector<Matrix36d> dn_dw;             // "
+  std::vector<Matrix36d> dm_dw;             // "
+  Matrix36d tip_dp_dw = Matrix36d::Zero();  // with Tip or AllNodes
   Matrix36d tip_dtheta_dw = Matrix36d::Zero();
   Matrix36d tip_dn_dw = Matrix36d::Zero();
   Matrix36d tip_dm_dw = Matrix36d::Zero();

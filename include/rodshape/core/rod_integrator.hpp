@@ -4,8 +4,9 @@
 //   v = K_tra⁻¹ Rᵀ n + ṽ (Kirchhoff: v = ṽ),  u = K_rot⁻¹ Rᵀ m + ũ,
 // with the classical fourth-order Runge–Kutta method, one step per interval. The orientation is
 // carried as a quaternion q (q' = ½ q ⊗ (0, u)) and read as R = R(q/|q|), exactly orthonormal.
-// Derivatives are the exact derivatives of that discrete map (Runge–Kutta applied to the variational
-// equations with the same stages), so they match finite differences of integrate() to round-off.
+// Derivatives are the exact derivatives of that discrete map (Runge–Kutta applied to the
+// variational equations with the same stages), so they match finite differences of integrate() to
+// round-off.
 #pragma once
 
 #include "rodshape/core/clamped_rod.hpp"

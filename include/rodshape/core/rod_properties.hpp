@@ -12,7 +12,8 @@
 
 namespace rodshape {
 
-/// `cosserat`: shear and extension (the paper's model). `kirchhoff`: inextensible, unshearable (v = ṽ).
+/// `cosserat`: shear and extension (the paper's model). `kirchhoff`: inextensible, unshearable (v =
+/// ṽ).
 enum class ConstitutiveModel { Cosserat, Kirchhoff };
 std::string to_string(ConstitutiveModel model);
 /// Throws InputError naming `field` for anything but "cosserat" or "kirchhoff".
@@ -24,8 +25,8 @@ ConstitutiveModel constitutive_model_from_string(const std::string& name,
 struct RodProperties {
   double length = 0.0;  // L, m
   ConstitutiveModel model = ConstitutiveModel::Cosserat;
-  Eigen::Vector3d K_tra = Eigen::Vector3d::Ones();  // diag(GA, GA, EA), N
-  Eigen::Vector3d K_rot = Eigen::Vector3d::Ones();  // diag(EIx, EIy, GJ), N·m²
+  Eigen::Vector3d K_tra = Eigen::Vector3d::Ones();    // diag(GA, GA, EA), N
+  Eigen::Vector3d K_rot = Eigen::Vector3d::Ones();    // diag(EIx, EIy, GJ), N·m²
   Eigen::Vector3d v_rest = Eigen::Vector3d::UnitZ();  // ṽ: straight, unstretched
   Eigen::Vector3d u_rest = Eigen::Vector3d::Zero();   // ũ: constant precurvature, 1/m
   double mass_per_length = 0.0;                       // ρA, kg/m (0 when unknown)
@@ -49,9 +50,9 @@ struct RodDescription {
   Eigen::Vector3d rest_curvature = Eigen::Vector3d::Zero();  // ũ
 };
 
-/// A = section area, I = second moments, G = E/(2(1+ν)); overrides win. Throws InputError naming the
-/// missing field when a stiffness the model needs has neither an override nor a section and material.
-/// mass_per_length = ρA when both density and section are known, else 0.
+/// A = section area, I = second moments, G = E/(2(1+ν)); overrides win. Throws InputError naming
+/// the missing field when a stiffness the model needs has neither an override nor a section and
+/// material. mass_per_length = ρA when both density and section are known, else 0.
 RodProperties make_rod_properties(const RodDescription& description);
 
 }  // namespace rodshape

@@ -44,8 +44,9 @@ inline Eigen::Vector3d log_so3(const Eigen::Matrix3d& R) {
 inline Eigen::Matrix3d right_jacobian_inverse_so3(const Eigen::Vector3d& theta) {
   const double angle2 = theta.squaredNorm();
   const double angle = std::sqrt(angle2);
-  const double c = angle < 1e-4 ? 1.0 / 12.0 + angle2 / 720.0
-                                 : 1.0 / angle2 - (1.0 + std::cos(angle)) / (2.0 * angle * std::sin(angle));
+  const double c = angle < 1e-4
+                       ? 1.0 / 12.0 + angle2 / 720.0
+                       : 1.0 / angle2 - (1.0 + std::cos(angle)) / (2.0 * angle * std::sin(angle));
   const Eigen::Matrix3d theta_hat = hat(theta);
   return Eigen::Matrix3d::Identity() + 0.5 * theta_hat + c * theta_hat * theta_hat;
 }
@@ -56,8 +57,8 @@ inline Eigen::Matrix3d left_jacobian_so3(const Eigen::Vector3d& theta) {
   const double angle2 = theta.squaredNorm();
   const double angle = std::sqrt(angle2);
   const double b = angle < 1e-4 ? 0.5 - angle2 / 24.0 : (1.0 - std::cos(angle)) / angle2;
-  const double c = angle < 1e-4 ? 1.0 / 6.0 - angle2 / 120.0
-                                 : (angle - std::sin(angle)) / (angle2 * angle);
+  const double c =
+      angle < 1e-4 ? 1.0 / 6.0 - angle2 / 120.0 : (angle - std::sin(angle)) / (angle2 * angle);
   const Eigen::Matrix3d theta_hat = hat(theta);
   return Eigen::Matrix3d::Identity() + b * theta_hat + c * theta_hat * theta_hat;
 }
@@ -65,7 +66,8 @@ inline Eigen::Matrix3d left_jacobian_so3(const Eigen::Vector3d& theta) {
 /// max |RᵀR - I| and det(R) - 1 both within tolerance.
 inline bool is_rotation(const Eigen::Matrix3d& R, double tolerance = 1e-6) {
   if (!R.allFinite()) return false;
-  const double orthogonality = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  const double orthogonality =
+      (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   return orthogonality <= tolerance && std::abs(R.determinant() - 1.0) <= tolerance;
 }
 

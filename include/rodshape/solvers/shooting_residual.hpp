@@ -1,5 +1,5 @@
-// shooting_residual.hpp: the six boundary-condition residuals at s = L as functions of the base wrench,
-// and their exact Jacobian from the integrator's derivatives.
+// shooting_residual.hpp: the six boundary-condition residuals at s = L as functions of the base
+// wrench, and their exact Jacobian from the integrator's derivatives.
 //   free:     r = (n(L) - F, m(L) - M)                               [N, N·m]
 //   clamped:  r = (R_dᵀ (p(L) - p_d), log(R_dᵀ R(L))^∨)              [m, rad]
 //   grasped:  as clamped, with the component of each released axis replaced by the tip wrench's

@@ -1,7 +1,8 @@
 // shooting_solver.hpp: solve the clamped rod's boundary-value problem for the unknown base wrench
-// w = (n(0), m(0)) with Levenberg–Marquardt on the exact Jacobian (Eigen's MINPACK port, trust region
-// in bending units), ending with Newton and chord steps near the root, warm-started from a guess,
-// and with continuation of the boundary condition from a solved state when the direct solve fails.
+// w = (n(0), m(0)) with Levenberg–Marquardt on the exact Jacobian (Eigen's MINPACK port, trust
+// region in bending units), ending with Newton and chord steps near the root, warm-started from a
+// guess, and with continuation of the boundary condition from a solved state when the direct solve
+// fails.
 #pragma once
 
 #include <limits>
@@ -15,12 +16,14 @@
 namespace rodshape {
 
 struct ShootingOptions {
-  int max_iterations = 100;          // Levenberg–Marquardt iterations (accepted steps) per solve;
-                                     // the endgame adds at most 8 chord steps per attempt
-  double residual_tolerance = 1e-10; // converged when ||r(w)||_∞ ≤ residual_tolerance (m, rad, N, N·m)
+  int max_iterations = 100;  // Levenberg–Marquardt iterations (accepted steps) per solve;
+                             // the endgame adds at most 8 chord steps per attempt
+  double residual_tolerance =
+      1e-10;  // converged when ||r(w)||_∞ ≤ residual_tolerance (m, rad, N, N·m)
   /// When the direct solve fails, step the boundary condition from the rest (or a solved) state:
-  /// clamped and grasped tips move from where the guess puts them (position linear, rotation slerp),
-  /// a free tip's loads are scaled from 0. Steps are halved on failure down to 1/max_continuation_steps.
+  /// clamped and grasped tips move from where the guess puts them (position linear, rotation
+  /// slerp), a free tip's loads are scaled from 0. Steps are halved on failure down to
+  /// 1/max_continuation_steps.
   bool continuation = true;
   int max_continuation_steps = 256;
   /// Derivatives stored in the returned configuration.
@@ -33,11 +36,11 @@ struct ShootingOptions {
 struct ShootingSummary {
   SolveStatus status = SolveStatus::NotRun;
   std::string message = "solve_equilibrium() was not called";
-  int iterations = 0;              // Levenberg–Marquardt steps, all stages together
-  int chord_steps = 0;             // Newton/chord steps of the endgame (not bounded by max_iterations)
-  int integrations = 0;            // forward integrations of the rod
-  int jacobian_evaluations = 0;    // of which with tip derivatives (about 3× the cost of one without)
-  int continuation_steps = 0;      // 0 when the direct solve converged
+  int iterations = 0;    // Levenberg–Marquardt steps, all stages together
+  int chord_steps = 0;   // Newton/chord steps of the endgame (not bounded by max_iterations)
+  int integrations = 0;  // forward integrations of the rod
+  int jacobian_evaluations = 0;  // of which with tip derivatives (about 3× the cost of one without)
+  int continuation_steps = 0;    // 0 when the direct solve converged
   double residual_norm = std::numeric_limits<double>::quiet_NaN();  // ||r||_∞ at the end
 
   bool converged() const { return status == SolveStatus::Converged; }
