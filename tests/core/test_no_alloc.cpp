@@ -11,8 +11,8 @@
 // (EIGEN_RUNTIME_NO_MALLOC is not used: it only checks Eigen code compiled in a TU that defines it,
 // and with the other test TUs linked in, the linker may keep their unchecked copies of Eigen's
 // inline allocation functions — it does at -O0. Check 2 sees every allocation whatever the TU.)
-#include <Eigen/Core>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
 
 #include <atomic>
 #include <cstddef>

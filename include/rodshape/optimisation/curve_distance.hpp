@@ -1,0 +1,34 @@
+// curve_distance.hpp: dist(Γ, p), the distance from a point to the rod's curve Γ, continuous in s:
+// between nodes the curve is the cubic Hermite interpolant of p and p' = R v at the nodes (fourth
+// order, like the integrator), not the polyline and not the nearest node.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/rod_configuration.hpp"
+
+namespace rodshape {
+
+struct CurveProjection {
+  double s = 0.0;                                     // arc length of the closest point
+  int interval = 0;                                   // i with s in [s_i, s_{i+1}]
+  double t = 0.0;                                     // (s - s_i) / h in [0, 1]
+  Eigen::Vector3d closest = Eigen::Vector3d::Zero();  // Γ(s)
+  double distance = 0.0;                              // |Γ(s) - p|
+};
+
+/// The global minimiser of |Γ(s) - p| over s ∈ [0, L].
+CurveProjection project_onto_curve(const RodConfiguration& configuration,
+                                   const Eigen::Vector3d& point);
+
+/// d dist(Γ, p) / dw by the envelope argument: the closest point moves with the curve, but at an
+/// interior minimum (Γ(s) - p) ⟂ Γ'(s), so d dist/dw = (Γ(s) - p)ᵀ/dist · dΓ(s)/dw at fixed s,
+/// with dΓ(s)/dw the Hermite interpolant of dp_i/dw and d(p'_i)/dw = R_i (δv_i - v_i × θ_i).
+/// `configuration` must carry Derivatives::AllNodes. Zero when dist = 0.
+Eigen::Matrix<double, 1, 6> distance_gradient(const ClampedRod& rod,
+                                              const RodConfiguration& configuration,
+                                              const CurveProjection& projection,
+                                              const Eigen::Vector3d& point);
+
+}  // namespace rodshape

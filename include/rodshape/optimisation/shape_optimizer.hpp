@@ -1,0 +1,64 @@
+// shape_optimizer.hpp: solve a ShapeProblem with IPOPT (interior point, as in the paper), exact
+// first derivatives and a limited-memory Hessian, from one or several initial base wrenches.
+// IPOPT stays behind this header: no IPOPT type appears in rodshape's public API.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/wrench.hpp"
+#include "rodshape/optimisation/shape_problem.hpp"
+#include "rodshape/solvers/solve_status.hpp"
+#include "rodshape/solvers/stability.hpp"
+
+namespace rodshape {
+
+struct ShapeOptimizerOptions {
+  int max_iterations = 500;            // IPOPT max_iter
+  double tolerance = 1e-8;             // IPOPT tol (scaled NLP error)
+  double constraint_tolerance = 1e-9;  // IPOPT constr_viol_tol, in the constraints' units
+  /// Extra starts besides the given guess: the guess with each bending moment component flipped,
+  /// and so on; feasible optima are ranked by elastic energy (the paper's use of the energy term).
+  int multi_starts = 0;
+  int print_level = 0;           // IPOPT print_level (0: silent)
+  bool assess_stability = true;  // run assess_stability() on the optimum
+  /// Throws InputError naming the field.
+  void validate() const;
+};
+
+/// IPOPT's own account of the solve, kept whole (not collapsed to a bool).
+struct IpoptDetails {
+  int application_status = 0;           // Ipopt::ApplicationReturnStatus as an int
+  std::string application_status_name;  // e.g. "Solve_Succeeded"
+  int iterations = 0;
+  double objective = 0.0;
+  std::vector<double> constraint_multipliers;           // λ, one per row of g
+  Vector6d lower_bound_multipliers = Vector6d::Zero();  // z_L for w
+  Vector6d upper_bound_multipliers = Vector6d::Zero();  // z_U for w
+};
+
+struct ShapeSolution {
+  SolveStatus status = SolveStatus::NotRun;
+  std::string message = "optimise_shape() was not called";
+  BaseWrench base_wrench;
+  RodConfiguration configuration;  // at base_wrench, with all-node derivatives
+  ShapeCostBreakdown cost;
+  double max_constraint_violation = 0.0;
+  std::optional<StabilityReport> stability;
+  IpoptDetails ipopt;
+  int starts_tried = 1;
+  bool converged() const { return status == SolveStatus::Converged; }
+};
+
+/// Optimises from `guess` (and the extra starts of the options). Throws InputError for bad options;
+/// a solve that fails is reported in the status, never thrown.
+ShapeSolution optimise_shape(ShapeProblem& problem,
+                             const BaseWrench& guess,
+                             const ShapeOptimizerOptions& options = {});
+
+/// Whether this build has IPOPT (always true today; kept for a build without it).
+bool ipopt_available();
+
+}  // namespace rodshape

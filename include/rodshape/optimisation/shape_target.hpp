@@ -1,0 +1,54 @@
+// shape_target.hpp: the wanted shape (paper, "Shape Control Approach"): k objective points the rod
+// should pass through, ordered along the rod, and the weights of the cost
+//   F = W1/(2L) ∫ (Δvᵀ K_tra Δv + Δuᵀ K_rot Δu) ds + W2 Σᵢ dist(Γ, p_obj,i).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/clamped_rod.hpp"
+
+namespace rodshape {
+
+struct ShapeTarget {
+  std::vector<Eigen::Vector3d> points;  // p_obj,i, world frame, ordered from the clamp to the tip
+  double energy_weight = 1.0;           // W1 ≥ 0
+  double distance_weight = 1.0;         // W2 ≥ 0 (W1 + W2 > 0)
+  bool squared_distances = false;       // Σ dist² instead of Σ dist
+  /// δ, m. Σ dist is evaluated as Σ (sqrt(dist² + δ²) - δ): within δ of the paper's sum, and smooth
+  /// where a point is reached (dist²/(2δ) there), which IPOPT needs to certify the optimum of a
+  /// reachable target — with the exact |·| it ends at the iteration limit on the kink. 0: exact.
+  double distance_smoothing = 1e-4;
+
+  /// Throws InputError naming the field: "target.points" empty or non-finite,
+  /// "weights.energy" / "weights.distance" negative or both zero, "target.distance_smoothing" < 0.
+  void validate() const;
+};
+
+/// Whether a rod clamped at `rod.clamp` can pass through the target's points, judged on the
+/// chord-length cubic B-spline (Eigen's Splines module) from p(0) through the points.
+struct TargetFeasibility {
+  bool feasible = true;
+  std::string reason;         // empty when feasible
+  int offending_point = -1;   // index into ShapeTarget::points, or -1
+  double curve_length = 0.0;  // length of the fitted spline from the clamp to the last point
+  double reach = 0.0;         // L times the largest stretch the model allows (Kirchhoff: L)
+};
+
+/// The spline is one plausible curve through the points, not the rod: its length differs from that
+/// of the rod's curve through the same points by the interpolation error (a few 1e-3 relative for a
+/// handful of points on a bent rod). Lengths up to reach · (1 + kSplineLengthSlack) are accepted.
+inline constexpr double kSplineLengthSlack = 0.01;
+
+/// Infeasible when a point lies farther than `reach` from the clamp (offending_point: the first
+/// such point), or when the spline through the points is longer than reach · (1 +
+/// kSplineLengthSlack) (offending_point: the first point the spline reaches beyond that length).
+/// The length is computed by Gauss–Legendre quadrature of |C'| (see shape_target.cpp for its
+/// error). `max_axial_strain` bounds the stretch of the Cosserat model (reach = L (1 +
+/// max_axial_strain)); the Kirchhoff model cannot stretch.
+TargetFeasibility check_feasibility(const ShapeTarget& target,
+                                    const ClampedRod& rod,
+                                    double max_axial_strain = 0.0);
+
+}  // namespace rodshape

@@ -1,0 +1,26 @@
+// intermediate_targets.hpp: the objective points of each step of the trajectory (paper, "Optimal
+// trajectory generation"): p_init is the projection of each objective point on the initial shape,
+// and the n_inter sets of step i = 1 … n_inter are
+//   p^i = p_init + i (p_obj - p_init) / n_inter,
+// so that the last step is p_obj itself. (The paper writes (i - 1), which stops one step short.)
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "rodshape/core/rod_configuration.hpp"
+
+namespace rodshape {
+
+using PointSet = std::vector<Eigen::Vector3d>;
+
+/// The closest point of the initial curve Γ_0 to each objective point (continuous in s).
+PointSet project_onto_initial_shape(const RodConfiguration& initial, const PointSet& objective);
+
+/// The n_inter intermediate sets; throws InputError ("trajectory.steps") when n_inter < 1 and when
+/// the two sets differ in size.
+std::vector<PointSet> intermediate_targets(const PointSet& initial,
+                                           const PointSet& objective,
+                                           int n_inter);
+
+}  // namespace rodshape

@@ -1,0 +1,14 @@
+// shape_constraints.cpp: validation of the strain limits (the grasp and the wrench bounds are
+// checked by ShapeProblem, which knows the model).
+#include "rodshape/optimisation/shape_constraints.hpp"
+
+#include "validation.hpp"
+
+namespace rodshape {
+
+void StrainLimits::validate() const {
+  if (max_curvature) detail::require_positive("limits.max_curvature", *max_curvature);
+  if (max_axial_strain) detail::require_positive("limits.max_axial_strain", *max_axial_strain);
+}
+
+}  // namespace rodshape

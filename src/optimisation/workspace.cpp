@@ -1,0 +1,116 @@
+// workspace.cpp: the rows of g(p) for p(L) ∈ Ws, in the order box (x, y, z), inside balls, outside
+// balls, half-spaces. The balls are written squared, |p - c|² ≤ r² (≥ r² outside), so that g is a
+// polynomial in p (smooth everywhere, also at the centre, where |p - c| is not).
+#include "rodshape/optimisation/workspace.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "validation.hpp"
+
+namespace rodshape {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string indexed(const char* name, std::size_t i) {
+  return std::string("workspace.") + name + "[" + std::to_string(i) + "]";
+}
+
+}  // namespace
+
+int Workspace::constraint_count() const {
+  return (box ? 3 : 0) + static_cast<int>(inside.size() + outside.size() + half_spaces.size());
+}
+
+bool Workspace::contains(const Eigen::Vector3d& p, double tolerance) const {
+  if (box) {
+    if ((p.array() < box->lower.array() - tolerance).any()) return false;
+    if ((p.array() > box->upper.array() + tolerance).any()) return false;
+  }
+  for (const Ball& ball : inside)
+    if ((p - ball.center).norm() > ball.radius + tolerance) return false;
+  for (const Ball& ball : outside)
+    if ((p - ball.center).norm() < ball.radius - tolerance) return false;
+  for (const HalfSpace& half : half_spaces)  // distance to the plane, not nᵀp - offset
+    if (half.normal.dot(p) - half.offset > tolerance * half.normal.norm()) return false;
+  return true;
+}
+
+void Workspace::evaluate(const Eigen::Vector3d& p,
+                         Eigen::Ref<Eigen::VectorXd> g,
+                         Eigen::Ref<Eigen::MatrixXd> dg_dp) const {
+  const bool with_jacobian = dg_dp.rows() > 0;
+  int row = 0;
+  if (box) {
+    g.segment<3>(row) = p;  // lower ≤ p ≤ upper
+    if (with_jacobian) dg_dp.middleRows<3>(row).setIdentity();
+    row += 3;
+  }
+  auto ball_row = [&](const Ball& ball) {
+    const Eigen::Vector3d d = p - ball.center;
+    g(row) = d.squaredNorm();  // |p - c|²
+    if (with_jacobian) dg_dp.row(row) = 2.0 * d.transpose();
+    ++row;
+  };
+  for (const Ball& ball : inside) ball_row(ball);
+  for (const Ball& ball : outside) ball_row(ball);
+  for (const HalfSpace& half : half_spaces) {
+    g(row) = half.normal.dot(p);  // nᵀp ≤ offset
+    if (with_jacobian) dg_dp.row(row) = half.normal.transpose();
+    ++row;
+  }
+}
+
+void Workspace::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::VectorXd> upper) const {
+  int row = 0;
+  if (box) {
+    lower.segment<3>(row) = box->lower;
+    upper.segment<3>(row) = box->upper;
+    row += 3;
+  }
+  for (const Ball& ball : inside) {
+    lower(row) = -kInf;
+    upper(row++) = ball.radius * ball.radius;
+  }
+  for (const Ball& ball : outside) {
+    lower(row) = ball.radius * ball.radius;
+    upper(row++) = kInf;
+  }
+  for (const HalfSpace& half : half_spaces) {
+    lower(row) = -kInf;
+    upper(row++) = half.offset;
+  }
+}
+
+void Workspace::validate() const {
+  if (box) {
+    detail::require_finite("workspace.box.lower", box->lower);
+    detail::require_finite("workspace.box.upper", box->upper);
+    for (int k = 0; k < 3; ++k) {
+      if (box->lower(k) > box->upper(k)) {
+        throw InputError("workspace.box: lower[" + std::to_string(k) +
+                         "] = " + detail::format_value(box->lower(k)) + " is above upper[" +
+                         std::to_string(k) + "] = " + detail::format_value(box->upper(k)));
+      }
+    }
+  }
+  auto check_balls = [](const std::vector<Ball>& balls, const char* name) {
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+      detail::require_finite(indexed(name, i) + ".center", balls[i].center);
+      detail::require_positive(indexed(name, i) + ".radius", balls[i].radius);
+    }
+  };
+  check_balls(inside, "inside");
+  check_balls(outside, "outside");
+  for (std::size_t i = 0; i < half_spaces.size(); ++i) {
+    const std::string field = indexed("half_spaces", i);
+    detail::require_finite(field + ".normal", half_spaces[i].normal);
+    if (half_spaces[i].normal.norm() == 0.0) throw InputError(field + ".normal must be non-zero");
+    detail::require_finite(field + ".offset", half_spaces[i].offset);
+  }
+}
+
+}  // namespace rodshape

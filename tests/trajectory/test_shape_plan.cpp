@@ -1,0 +1,164 @@
+// Tests of the whole plan: objective points sampled from a known equilibrium are reached in the
+// last step, the end-effector path ends at the last waypoint, the tracked equilibrium follows the
+// plan in a benign case and a jump to another branch is detected in a case built to have one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+#include "rodshape/trajectory/shape_plan.hpp"
+
+namespace rodshape {
+namespace {
+
+/// The paper's rubber band (EIy ≠ EIx where a buckled shape must not be neutral).
+ClampedRod rubber_band(int intervals, double EIy = 0.04) {
+  ClampedRod rod;
+  rod.properties.length = 0.29;
+  rod.properties.K_rot = {0.04, EIy, 0.028};
+  rod.properties.K_tra = {426.67, 426.67, 1280.0};
+  rod.intervals = intervals;
+  return rod;
+}
+
+/// Ten points on the curve of `w` at s = (i + ½) L / 10, taken from a fine integration (N = 200,
+/// where those s are nodes), so that they lie between the nodes of a coarser plan.
+PointSet points_on_curve(const BaseWrench& w) {
+  const RodConfiguration fine = integrate(rubber_band(200), w);
+  PointSet points;
+  for (int i = 0; i < 10; ++i) points.push_back(fine.p[20 * i + 10]);
+  return points;
+}
+
+PlanRequest bend_request() {
+  PlanRequest request;
+  request.rod = rubber_band(50);
+  request.target.points = points_on_curve({{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}});
+  request.target.energy_weight = 1e-3;
+  request.target.distance_weight = 1.0;
+  return request;
+}
+
+TEST(ShapePlan, ReachesPointsSampledFromAnEquilibriumAndTheRodFollows) {
+  const PlanRequest request = bend_request();
+  PlanOptions options;
+  options.steps = 3;
+  const ShapePlan plan = plan_shape(request, options);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  ASSERT_EQ(plan.steps.size(), 3u);
+  // The last step is p_obj itself, not one step short (the paper's (i - 1)).
+  EXPECT_EQ(plan.steps.back().objective_points, request.target.points);
+  // The bar: within 0.5 mm of every point. The points are on an equilibrium of the same
+  // rod, so only the plan's discretisation (N = 50, Hermite curve: O(h⁴) ≈ 1e-9 m) and the energy
+  // term (W1 = 1e-3) keep the optimum off them.
+  EXPECT_LE(plan.steps.back().solution.cost.max_distance, 5e-4);
+  for (const PlanStep& step : plan.steps) EXPECT_TRUE(step.solution.converged());
+  // The timed path ends exactly at the last waypoint and runs forward in time.
+  ASSERT_FALSE(plan.end_effector_path.empty());
+  EXPECT_TRUE(plan.end_effector_path.back().pose.position.isApprox(
+      plan.steps.back().end_effector.position, 1e-15));
+  for (std::size_t k = 1; k < plan.end_effector_path.size(); ++k)
+    EXPECT_GT(plan.end_effector_path[k].t, plan.end_effector_path[k - 1].t);
+  // Tracking: each planned shape is the equilibrium at its tip pose, so the tracked rod arrives on
+  // it up to the shooting tolerance (1e-10 m, rad at the tip) times the conditioning of the pose →
+  // shape map — far below a jump to another branch (centimetres).
+  ASSERT_TRUE(plan.tracking.performed);
+  EXPECT_FALSE(plan.tracking.jump) << plan.tracking.note;
+  EXPECT_EQ(plan.tracking.arrival_deviation.size(), plan.steps.size());
+  EXPECT_LE(plan.tracking.max_deviation, 1e-6);
+}
+
+TEST(ShapePlan, PointOutOfReachIsInfeasibleNamingIt) {
+  PlanRequest request = bend_request();
+  request.target.points[7] = {0.0, 0.0, 2.0 * request.rod.properties.length};
+  const ShapePlan plan = plan_shape(request);
+  EXPECT_EQ(plan.status, PlanStatus::Infeasible);
+  EXPECT_TRUE(plan.steps.empty());
+  EXPECT_NE(plan.message.find("target.points[7]"), std::string::npos) << plan.message;
+}
+
+TEST(ShapePlan, WorkspaceThatExcludesTheInitialTipIsBadInput) {
+  PlanRequest request = bend_request();
+  request.workspace.box = Workspace::Box{{-1, -1, -1}, {1, 1, 0.2}};  // the rest tip is at z = 0.29
+  try {
+    plan_shape(request);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("workspace"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ShapePlan, BadStepCountNamesTheField) {
+  PlanOptions options;
+  options.steps = 0;
+  try {
+    plan_shape(bend_request(), options);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("trajectory.steps"), std::string::npos) << e.what();
+  }
+}
+
+/// A rod buckled between its clamps (tip at 0.8 L): the first mode bulging towards +y or -y; the
+/// two are distinct stable equilibria for the same tip pose (EIy > EIx: no neutral turning).
+struct BuckledBranches {
+  PlanRequest request;
+  ShootingSolution up, down;
+};
+
+BuckledBranches buckled_branches() {
+  BuckledBranches b;
+  b.request.rod = rubber_band(50, 0.06);
+  b.request.target.points = {{0.0, 0.0, 0.1}};
+  const double L = b.request.rod.properties.length, EI = 0.04;
+  const double euler = 4.0 * std::numbers::pi * std::numbers::pi * EI / (L * L);
+  const ClampedTip tip{{{0.0, 0.0, 0.8 * L}, Eigen::Matrix3d::Identity()}};
+  b.up = solve_equilibrium(b.request.rod, tip, {{0, 0, -1.05 * euler}, {EI / L, 0, 0}});
+  b.down = solve_equilibrium(b.request.rod, tip, {{0, 0, -1.05 * euler}, {-EI / L, 0, 0}});
+  return b;
+}
+
+ShapePlan one_step_plan(const ShootingSolution& from, const ShootingSolution& to) {
+  ShapePlan plan;
+  plan.status = PlanStatus::Complete;
+  plan.initial_wrench = from.base_wrench;
+  plan.initial_configuration = from.configuration;
+  PlanStep step;
+  step.solution.base_wrench = to.base_wrench;
+  step.solution.configuration = to.configuration;
+  step.end_effector = to.configuration.tip();
+  plan.steps.push_back(step);
+  return plan;
+}
+
+TEST(ShapePlan, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
+  const BuckledBranches b = buckled_branches();
+  ASSERT_TRUE(b.up.summary.converged() && b.down.summary.converged());
+  // Sanity: two different shapes, bulging by several centimetres to opposite sides (a positive
+  // moment about x bends the rod towards -y).
+  double min_y_up = 0.0, max_y_down = 0.0;
+  for (const auto& p : b.up.configuration.p) min_y_up = std::min(min_y_up, p.y());
+  for (const auto& p : b.down.configuration.p) max_y_down = std::max(max_y_down, p.y());
+  ASSERT_LT(min_y_up, -0.03);
+  ASSERT_GT(max_y_down, 0.03);
+
+  PlanOptions options;
+  // Planned: from the upward shape to the downward one with the tip not moving. The arm cannot do
+  // that: the tracked rod stays up, a jump between branches the plan would hide.
+  const TrackingReport jump = track_plan(b.request, options, one_step_plan(b.up, b.down));
+  EXPECT_TRUE(jump.jump);
+  EXPECT_EQ(jump.jump_step, 0);
+  EXPECT_GT(jump.max_deviation, 0.06);  // about twice the bulge
+  EXPECT_NE(jump.note.find("another equilibrium"), std::string::npos) << jump.note;
+
+  // Planned: stay up. The tracked rod is the planned one.
+  const TrackingReport stay = track_plan(b.request, options, one_step_plan(b.up, b.up));
+  EXPECT_FALSE(stay.jump) << stay.note;
+  EXPECT_LE(stay.max_deviation, 1e-6);
+}
+
+}  // namespace
+}  // namespace rodshape
