@@ -6,8 +6,9 @@
 //   min_{w ∈ R^6} F(w)   s.t.   g_L ≤ g(w) ≤ g_U,   w_L ≤ w ≤ w_U,
 // with w = (n(0), m(0)) the base wrench, F the shape cost and g the workspace, grasp and strain
 // rows of ShapeProblem. First derivatives are exact (one integration with all-node derivatives);
-// the Hessian of the Lagrangian is IPOPT's limited-memory (L-BFGS) approximation, so eval_h is not
-// given.
+// the Hessian of the Lagrangian is forward differences of its exact gradient (eval_h), or IPOPT's
+// limited-memory (L-BFGS) approximation when ShapeOptimizerOptions::hessian says so, as
+// off.
 #pragma once
 
 #include <IpIpoptApplication.hpp>
@@ -27,7 +28,14 @@ inline constexpr double kIpoptInfinity = 1e19;
 
 /// Every IPOPT option rodshape sets, in one place, each with its reason (see the .cpp). Call before
 /// IpoptApplication::Initialize(""), which applies print_level to the console journal.
-void apply_options(Ipopt::OptionsList& ipopt_options, const ShapeOptimizerOptions& options);
+void apply_options(Ipopt::OptionsList& ipopt_options,
+                   const ShapeOptimizerOptions& options,
+                   bool finite_difference_hessian);
+
+/// Whether the Hessian is differenced (eval_h) for this problem, per
+/// ShapeOptimizerOptions::hessian.
+bool uses_finite_difference_hessian(const ShapeOptimizerOptions& options,
+                                    const ShapeProblem& problem);
 
 /// What IPOPT left in finalize_solution() and intermediate_callback().
 struct NlpOutcome {
@@ -47,7 +55,10 @@ class ShapeNlp final : public Ipopt::TNLP {
  public:
   /// `infinity` must equal IPOPT's nlp_lower/upper_bound_inf: infinite bounds are mapped to
   /// ±infinity.
-  ShapeNlp(ShapeProblem& problem, const Vector6d& start, double infinity);
+  ShapeNlp(ShapeProblem& problem,
+           const Vector6d& start,
+           double infinity,
+           bool finite_difference_hessian);
 
   const NlpOutcome& outcome() const { return outcome_; }
 
@@ -92,6 +103,21 @@ class ShapeNlp final : public Ipopt::TNLP {
                   Ipopt::Index* iRow,
                   Ipopt::Index* jCol,
                   Ipopt::Number* values) override;
+  /// ∇²L = obj_factor ∇²F + Σ λ_i ∇²g_i by forward differences of ∇L = obj_factor ∇F + Jᵀλ:
+  /// column j = (∇L(w + h_j e_j) - ∇L(w)) / h_j with h_j = √ε max(|w_j|, s_j), s_j the bending
+  /// scale of w_j (EI/L² for forces, EI/L for moments); error ≈ h_j |∇³L| / 2 + ε |∇L| / h_j, the
+  /// optimum of the forward-difference model. Symmetrised; the lower triangle is given.
+  bool eval_h(Ipopt::Index n,
+              const Ipopt::Number* x,
+              bool new_x,
+              Ipopt::Number obj_factor,
+              Ipopt::Index m,
+              const Ipopt::Number* lambda,
+              bool new_lambda,
+              Ipopt::Index nele_hess,
+              Ipopt::Index* iRow,
+              Ipopt::Index* jCol,
+              Ipopt::Number* values) override;
   bool intermediate_callback(Ipopt::AlgorithmMode mode,
                              Ipopt::Index iter,
                              Ipopt::Number obj_value,
@@ -126,6 +152,7 @@ class ShapeNlp final : public Ipopt::TNLP {
   Vector6d start_;
   double infinity_;
   int rows_;  // m, fixed at construction
+  bool finite_difference_hessian_;
   NlpOutcome outcome_;
 };
 

@@ -161,7 +161,8 @@ StartResult run_start(Ipopt::IpoptApplication& app,
                       const Vector6d& start,
                       const ShapeOptimizerOptions& options) {
   StartResult result;
-  auto* nlp = new detail::ShapeNlp(problem, start, detail::kIpoptInfinity);
+  auto* nlp = new detail::ShapeNlp(problem, start, detail::kIpoptInfinity,
+                                   detail::uses_finite_difference_hessian(options, problem));
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
   result.application_status = app.OptimizeTNLP(owner);
   result.outcome = nlp->outcome();
@@ -231,7 +232,8 @@ ShapeSolution optimise_shape(ShapeProblem& problem,
 
   ShapeSolution solution;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  detail::apply_options(*app->Options(), options);
+  detail::apply_options(*app->Options(), options,
+                        detail::uses_finite_difference_hessian(options, problem));
   // "" skips IPOPT's options file: an ipopt.opt in the working directory must not change results.
   const Ipopt::ApplicationReturnStatus init = app->Initialize("");
   if (init != Ipopt::Solve_Succeeded) {

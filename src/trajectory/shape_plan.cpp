@@ -164,15 +164,26 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   const std::vector<PointSet> sets =
       intermediate_targets(plan.initial_points, request.target.points, options.steps);
 
-  // 4. One optimal shape per set, each warm-started from the last.
-  BaseWrench w = plan.initial_wrench;
+  // 4. One optimal shape per set, each warm-started from the last. From the third step on, the
+  //    secant w_k + (w_k - w_{k-1}) is tried as well (the sets move on straight lines, so the
+  //    optima move smoothly) and the start of lower cost is kept.
+  BaseWrench w = plan.initial_wrench, w_before = plan.initial_wrench;
   plan.status = PlanStatus::Complete;
   for (int i = 0; i < options.steps; ++i) {
     ShapeTarget target = request.target;
     target.points = sets[i];
     ShapeProblem problem(request.rod, target, request.workspace, request.grasp, request.limits,
                          request.wrench_bounds);
-    ShapeSolution solution = optimise_shape(problem, w, options.optimizer);
+    BaseWrench start = w;
+    if (i >= 2) {
+      const Vector6d secant = 2.0 * w.to_vector() - w_before.to_vector();
+      problem.evaluate(w.to_vector());
+      const double cost_at_last = problem.cost();
+      problem.evaluate(secant);
+      if (problem.cost() < cost_at_last && problem.constraints().allFinite())
+        start = Wrench::from_vector(secant);
+    }
+    ShapeSolution solution = optimise_shape(problem, start, options.optimizer);
     if (!solution.converged()) {
       plan.status = PlanStatus::Partial;
       plan.failed_step = i;
@@ -180,6 +191,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
                      " failed: " + solution.message;
       break;
     }
+    w_before = w;
     w = solution.base_wrench;
     const Pose end_effector =
         compose(solution.configuration.tip(), request.grasp.tip_to_end_effector);

@@ -1,6 +1,7 @@
 // shape_optimizer.hpp: solve a ShapeProblem with IPOPT (interior point, as in the paper), exact
-// first derivatives and a limited-memory Hessian, from one or several initial base wrenches.
-// IPOPT stays behind this header: no IPOPT type appears in rodshape's public API.
+// first derivatives and a Hessian by differences of them (or IPOPT's limited-memory one), from one
+// or several initial base wrenches. IPOPT stays behind this header: no IPOPT type appears in
+// rodshape's public API.
 #pragma once
 
 #include <optional>
@@ -22,7 +23,15 @@ struct ShapeOptimizerOptions {
   /// Extra starts besides the given guess: the guess with each bending moment component flipped,
   /// and so on; feasible optima are ranked by elastic energy (the paper's use of the energy term).
   int multi_starts = 0;
-  int print_level = 0;           // IPOPT print_level (0: silent)
+  int print_level = 0;  // IPOPT print_level (0: silent)
+  /// The Hessian of the Lagrangian. FiniteDifference: forward differences of its exact gradient
+  /// (6 more evaluations per iteration, Newton's convergence: the paper's experiment plans in 77
+  /// iterations instead of 402). LimitedMemory: IPOPT's L-BFGS, cheaper iterations and more of
+  /// them, but robust where constraints are active (with the differenced Hessian, strain-limited
+  /// problems wandered off to the iteration limit). Automatic: FiniteDifference when the problem
+  /// has no constraint rows, LimitedMemory otherwise.
+  enum class Hessian { Automatic, FiniteDifference, LimitedMemory };
+  Hessian hessian = Hessian::Automatic;
   bool assess_stability = true;  // run assess_stability() on the optimum
   /// Throws InputError naming the field.
   void validate() const;
