@@ -12,6 +12,7 @@
 #include "command.hpp"
 #include "equilibrium_command.hpp"
 #include "exit_code.hpp"
+#include "plan_command.hpp"
 #include "rodshape/error.hpp"
 
 #ifndef RODSHAPE_VERSION
@@ -34,14 +35,15 @@ int main(int argc, char** argv) {
   using namespace rodshape::cli;
 
   CLI::App app{
-      "rodshape: static Cosserat rods, solved by shooting.\n"
+      "rodshape: static Cosserat rods, solved by shooting, and optimal shape control.\n"
       "Units are SI; quaternions are [w, x, y, z]. Task file format: docs/task-file.md."};
   app.name("rodshape");
   app.set_version_flag("--version", std::string("rodshape ") + RODSHAPE_VERSION);
   app.require_subcommand(1);
   app.footer(
-      "Exit codes: 0 success, 2 bad input (task file, command line, output path), 3 solver did "
-      "not converge (the result is still written), 1 internal error.");
+      "Exit codes: 0 success, 2 bad input (task file, command line, output path; for plan also "
+      "an infeasible target), 3 solver did not converge or plan stopped at a failed step (the "
+      "result is still written), 1 internal error.");
   app.failure_message([](const CLI::App*, const CLI::Error& error) {
     return "error: " + one_line(error.what()) + " (run 'rodshape --help')\n";
   });
@@ -52,6 +54,7 @@ int main(int argc, char** argv) {
     commands.emplace_back(subcommand, std::move(command));
   };
   add(make_equilibrium_command());
+  add(make_plan_command());
 
   try {
     app.parse(argc, argv);

@@ -1,5 +1,6 @@
-// task_reader.cpp: the equilibrium task file: which top-level sections it has, in which order they
-// are read, and the final whole-task checks.
+// task_reader.cpp: the task files of `equilibrium` and `plan`: which top-level sections each has,
+// in which order they are read, and the final whole-task checks. Both share the rod sections (rod,
+// gravity, distributed_load, base).
 #include "rodshape/io/task_reader.hpp"
 
 #include <cerrno>
@@ -10,8 +11,10 @@
 #include <string_view>
 #include <vector>
 
+#include "io/plan_sections.hpp"
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
+#include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 
 namespace rodshape {
@@ -20,12 +23,64 @@ namespace {
 
 using io_detail::YamlField;
 
-/// The top-level sections of an equilibrium task. Another command's reader lists its own (`plan`
-/// adds target, weights, workspace, ...) and reuses the section readers.
+/// The top-level sections of an equilibrium task. The plan task lists its own and reuses the
+/// section readers.
 const std::vector<std::string_view>& equilibrium_sections() {
   static const std::vector<std::string_view> sections = {"rod",  "gravity", "distributed_load",
                                                          "base", "tip",     "solver"};
   return sections;
+}
+
+const std::vector<io_detail::KeyHint>& equilibrium_hints() {
+  static const std::vector<io_detail::KeyHint> hints = {
+      {"target", "target is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"weights", "weights is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"workspace", "workspace is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"grasp",
+       "grasp is a section of plan tasks (rodshape plan); for equilibrium, release axes with "
+       "tip.released"},
+      {"initial", "initial is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"limits", "limits is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"wrench_bounds",
+       "wrench_bounds is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"trajectory", "trajectory is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"optimizer", "optimizer is a section of plan tasks (rodshape plan); equilibrium has solver"},
+  };
+  return hints;
+}
+
+const std::vector<std::string_view>& plan_sections() {
+  static const std::vector<std::string_view> sections = {
+      "rod",       "gravity", "distributed_load", "base",   "target",        "weights",
+      "workspace", "grasp",   "initial",          "limits", "wrench_bounds", "trajectory",
+      "optimizer"};
+  return sections;
+}
+
+const std::vector<io_detail::KeyHint>& plan_hints() {
+  static const std::vector<io_detail::KeyHint> hints = {
+      {"tip",
+       "a plan decides the tip pose itself: give the pose the robot starts from as initial.tip, "
+       "and what the grasp cannot transmit as grasp.zero_wrench"},
+      {"solver",
+       "solver is the equilibrium command's shooting solver; a plan's optimiser options are in "
+       "optimizer"},
+  };
+  return hints;
+}
+
+/// The sections both commands share: rod, gravity, distributed_load, base.
+ClampedRod read_clamped_rod(const YamlField& root) {
+  ClampedRod rod;
+  const YamlField rod_field = root.require("rod");
+  const io_detail::RodSection section = io_detail::read_rod_section(rod_field);
+  rod.properties = io_detail::build_rod_properties(section, rod_field);
+  rod.intervals = section.nodes - 1;
+  rod.load = io_detail::read_distributed_load(root, section);
+  if (const YamlField base = root.get("base"); base.present())
+    rod.clamp = io_detail::read_pose(base);
+  rod_field.located([&] { rod.validate(); });
+  return rod;
 }
 
 std::string read_text_file(const std::string& path) {
@@ -57,26 +112,17 @@ std::string solver_field_message(std::string message) {
 EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
                                        const std::string& source_name) {
   const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
-  root.expect_mapping(equilibrium_sections());
+  root.expect_mapping(equilibrium_sections(), equilibrium_hints());
 
   EquilibriumTask task;
   task.source = source_name;
-
-  const YamlField rod_field = root.require("rod");
-  const io_detail::RodSection rod = io_detail::read_rod_section(rod_field);
-  task.rod.properties = io_detail::build_rod_properties(rod, rod_field);
-  task.rod.intervals = rod.nodes - 1;
-  task.rod.load = io_detail::read_distributed_load(root, rod);
-  if (const YamlField base = root.get("base"); base.present()) {
-    task.rod.clamp = io_detail::read_pose(base);
-  }
+  task.rod = read_clamped_rod(root);
   task.tip = io_detail::read_tip_condition(root.require("tip"));
   if (const YamlField solver = root.get("solver"); solver.present()) {
     io_detail::read_solver_section(solver, task.options, task.initial_wrench);
   }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
-  rod_field.located([&] { task.rod.validate(); });
   try {
     task.options.validate();
   } catch (const InputError& error) {
@@ -85,8 +131,72 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
   return task;
 }
 
+PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name) {
+  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
+  root.expect_mapping(plan_sections(), plan_hints());
+
+  PlanTask task;
+  task.source = source_name;
+  PlanRequest& request = task.request;
+  request.rod = read_clamped_rod(root);
+  request.target.energy_weight = io_detail::kDefaultEnergyWeight;
+  request.target.distance_weight = io_detail::kDefaultDistanceWeight;
+  io_detail::read_target_section(root.require("target"), request.target);
+  if (const YamlField weights = root.get("weights"); weights.present())
+    io_detail::read_weights_section(weights, request.target);
+  if (const YamlField workspace = root.get("workspace"); workspace.present())
+    request.workspace = io_detail::read_workspace_section(workspace);
+  if (const YamlField grasp = root.get("grasp"); grasp.present())
+    request.grasp = io_detail::read_grasp_section(grasp);
+  if (const YamlField initial = root.get("initial"); initial.present())
+    request.initial_tip = io_detail::read_initial_section(initial);
+  if (const YamlField limits = root.get("limits"); limits.present())
+    request.limits = io_detail::read_limits_section(limits);
+  const YamlField bounds = root.get("wrench_bounds");
+  if (bounds.present()) request.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
+  if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
+    io_detail::read_trajectory_section(trajectory, task.options);
+  if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
+    io_detail::read_optimizer_section(optimizer, task.options.optimizer);
+
+  // Whole-task checks by the library; their messages name the field, we add file and line.
+  root.located([&] {
+    request.target.validate();
+    request.workspace.validate();
+    request.limits.validate();
+    task.options.validate();
+  });
+  for (int k = 0; k < 6; ++k) {
+    if (request.wrench_bounds.lower(k) > request.wrench_bounds.upper(k)) {
+      static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
+                                            "moment[0]", "moment[1]", "moment[2]"};
+      bounds.fail(std::string("wrench_bounds: lower.") + kNames[k] + " is above upper." +
+                  kNames[k]);
+    }
+  }
+  // The tip must start inside the workspace (plan_shape checks this too, without a line): the
+  // initial tip pose, or the tip of the rod at rest.
+  if (!request.workspace.unbounded()) {
+    const Eigen::Vector3d tip = request.initial_tip ? request.initial_tip->position
+                                                    : integrate(request.rod, BaseWrench{}).p.back();
+    if (!request.workspace.contains(tip, 1e-9)) {
+      std::ostringstream where;
+      where.precision(4);
+      where << "[" << tip.x() << ", " << tip.y() << ", " << tip.z() << "]";
+      root.get("workspace")
+          .fail("workspace excludes the initial tip at " + where.str() +
+                (request.initial_tip ? " (initial.tip)" : " (the rod at rest; set initial.tip)"));
+    }
+  }
+  return task;
+}
+
 EquilibriumTask read_equilibrium_task(const std::string& path) {
   return parse_equilibrium_task(read_text_file(path), path);
+}
+
+PlanTask read_plan_task(const std::string& path) {
+  return parse_plan_task(read_text_file(path), path);
 }
 
 }  // namespace rodshape

@@ -106,20 +106,6 @@ StiffnessOverrides read_stiffness(const YamlField& stiffness) {
   return overrides;
 }
 
-std::array<bool, 6> read_released_axes(const YamlField& released) {
-  // Order of GraspedTip::released: force x, y, z, then moment x, y, z (grasp frame).
-  static const std::vector<std::string_view> kAxes = {"fx", "fy", "fz", "mx", "my", "mz"};
-  std::array<bool, 6> axes{};
-  for (const YamlField& element : released.elements()) {
-    const std::string name = element.choice(kAxes);
-    std::size_t axis = 0;
-    while (kAxes[axis] != name) ++axis;
-    if (axes[axis]) element.fail_value("is listed twice");
-    axes[axis] = true;
-  }
-  return axes;
-}
-
 }  // namespace
 
 // ---- rod ----------------------------------------------------------------------------------------
@@ -260,6 +246,20 @@ Wrench read_wrench(const YamlField& wrench) {
 
 // ---- tip ----------------------------------------------------------------------------------------
 
+std::array<bool, 6> read_wrench_axes(const YamlField& axes) {
+  // Order of GraspedTip::released and Grasp::zero_wrench: force x, y, z, then moment x, y, z.
+  static const std::vector<std::string_view> kAxes = {"fx", "fy", "fz", "mx", "my", "mz"};
+  std::array<bool, 6> result{};
+  for (const YamlField& element : axes.elements()) {
+    const std::string name = element.choice(kAxes);
+    std::size_t axis = 0;
+    while (kAxes[axis] != name) ++axis;
+    if (result[axis]) element.fail_value("is listed twice");
+    result[axis] = true;
+  }
+  return result;
+}
+
 TipCondition read_tip_condition(const YamlField& tip) {
   tip.expect_mapping({"position", "rotation", "released", "wrench"});
   const bool held = tip.has("position") || tip.has("rotation") || tip.has("released");
@@ -278,7 +278,7 @@ TipCondition read_tip_condition(const YamlField& tip) {
   }
   const Pose pose = read_pose_fields(tip);
   if (const YamlField released = tip.get("released"); released.present()) {
-    return GraspedTip{pose, read_released_axes(released)};
+    return GraspedTip{pose, read_wrench_axes(released)};
   }
   return ClampedTip{pose};
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -51,6 +52,10 @@ Pose read_pose(const YamlField& pose);
 
 /// {force, moment}, each [x, y, z] and zero when omitted.
 Wrench read_wrench(const YamlField& wrench);
+
+/// A list of wrench axes among fx, fy, fz, mx, my, mz (each at most once), in the order force x, y,
+/// z, moment x, y, z: `tip.released` and `grasp.zero_wrench`.
+std::array<bool, 6> read_wrench_axes(const YamlField& axes);
 
 /// `tip`: {position, rotation} clamped, {position, rotation, released} grasped, {wrench} free.
 TipCondition read_tip_condition(const YamlField& tip);

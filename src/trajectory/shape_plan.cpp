@@ -68,6 +68,36 @@ double node_deviation(const RodConfiguration& a, const RodConfiguration& b) {
   return worst;
 }
 
+/// One step's optimum. The workspace and the strain limits are inequalities that are inactive for
+/// most steps, and even an inactive one changes the interior-point path (its barrier term is
+/// comparable to the small shape cost at first; from the straight rod, a box of ±1 m sent IPOPT
+/// to a coiled rod). So the step is solved first without them (`unconstrained` holds the grasp
+/// rows only); when the optimum respects them it is also a local optimum of the full problem, else
+/// the full problem is solved from there.
+ShapeSolution optimise_step(const PlanRequest& request,
+                            const ShapeTarget& target,
+                            ShapeProblem& unconstrained,
+                            const BaseWrench& start,
+                            const ShapeOptimizerOptions& options) {
+  ShapeSolution solution = optimise_shape(unconstrained, start, options);
+  const bool has_inequalities = !request.workspace.unbounded() || request.limits.max_curvature ||
+                                request.limits.max_axial_strain;
+  if (!has_inequalities) return solution;
+  ShapeProblem full(request.rod, target, request.workspace, request.grasp, request.limits,
+                    request.wrench_bounds);
+  if (solution.converged()) {
+    full.evaluate(solution.base_wrench.to_vector());
+    const Eigen::VectorXd& g = full.constraints();
+    const double tolerance = options.constraint_tolerance;
+    const bool respected =  // the inequalities hold: their multipliers are 0 ((g -
+                            // full.constraint_upper()).array() <= tolerance).all() &&
+        ((full.constraint_lower() - g).array() <= tolerance).all();
+    if (respected)
+      return optimise_shape(full, solution.base_wrench, options);  // multipliers, stability
+  }
+  return optimise_shape(full, solution.converged() ? solution.base_wrench : start, options);
+}
+
 }  // namespace
 
 TrackingReport track_plan(const PlanRequest& request,
@@ -164,7 +194,8 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   const std::vector<PointSet> sets =
       intermediate_targets(plan.initial_points, request.target.points, options.steps);
 
-  // 4. One optimal shape per set, each warm-started from the last. From the third step on, the
+  // 4. One optimal shape per set, each warm-started from the last (see optimise_step). From the
+  //    third step on, the
   //    secant w_k + (w_k - w_{k-1}) is tried as well (the sets move on straight lines, so the
   //    optima move smoothly) and the start of lower cost is kept.
   BaseWrench w = plan.initial_wrench, w_before = plan.initial_wrench;
@@ -172,7 +203,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   for (int i = 0; i < options.steps; ++i) {
     ShapeTarget target = request.target;
     target.points = sets[i];
-    ShapeProblem problem(request.rod, target, request.workspace, request.grasp, request.limits,
+    ShapeProblem problem(request.rod, target, Workspace{}, request.grasp, StrainLimits{},
                          request.wrench_bounds);
     BaseWrench start = w;
     if (i >= 2) {
@@ -183,7 +214,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
       if (problem.cost() < cost_at_last && problem.constraints().allFinite())
         start = Wrench::from_vector(secant);
     }
-    ShapeSolution solution = optimise_shape(problem, start, options.optimizer);
+    ShapeSolution solution = optimise_step(request, target, problem, start, options.optimizer);
     if (!solution.converged()) {
       plan.status = PlanStatus::Partial;
       plan.failed_step = i;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rodshape/io/equilibrium_task.hpp"
+#include "rodshape/io/plan_task.hpp"
 
 namespace rodshape {
 
@@ -17,5 +18,14 @@ EquilibriumTask read_equilibrium_task(const std::string& path);
 /// The same for a task already in memory; `source_name` stands for the file in messages.
 EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
                                        const std::string& source_name);
+
+/// Reads and checks a plan task file (`rodshape plan`): the rod sections of an equilibrium task
+/// without `tip` and `solver`, plus target, weights, workspace, grasp, initial, limits, trajectory
+/// and optimizer. Throws InputError as read_equilibrium_task does, also for a workspace that
+/// excludes the initial tip.
+PlanTask read_plan_task(const std::string& path);
+
+/// The same for a plan task already in memory; `source_name` stands for the file in messages.
+PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name);
 
 }  // namespace rodshape

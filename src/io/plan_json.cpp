@@ -1,0 +1,181 @@
+// plan_json.cpp: plan.json and trajectory.csv (schemas in docs/task-file.md). A step's
+// configuration is written by configuration_json(), exactly as `equilibrium` writes its result.
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+#include "io/json_format.hpp"
+#include "rodshape/io/plan_output.hpp"
+#include "rodshape/optimisation/shape_target.hpp"
+#include "rodshape/solvers/solve_status.hpp"
+
+namespace rodshape {
+
+namespace {
+
+using io_detail::Json;
+using io_detail::json_number;
+using io_detail::json_pose;
+using io_detail::json_vector;
+using io_detail::json_vectors;
+
+Json numbers(const std::vector<double>& values) {
+  Json list = Json::array();
+  for (const double value : values) list.push_back(json_number(value));
+  return list;
+}
+
+Json target_object(const ShapeTarget& target) {
+  return {
+      {"points", json_vectors(target.points)},
+      {"weights",
+       {{"energy", json_number(target.energy_weight)},
+        {"distance", json_number(target.distance_weight)}}},
+      {"squared_distances", target.squared_distances},
+  };
+}
+
+Json feasibility_object(const PlanTask& task) {
+  const PlanRequest& request = task.request;
+  const TargetFeasibility feasibility =
+      check_feasibility(request.target, request.rod, request.limits.max_axial_strain.value_or(0.0));
+  const int offending = feasibility.offending_point;
+  const bool has_offending =
+      offending >= 0 && offending < static_cast<int>(request.target.points.size());
+  return {
+      {"feasible", feasibility.feasible},
+      {"reason", feasibility.feasible ? Json(nullptr) : Json(feasibility.reason)},
+      {"offending_point", has_offending ? Json(offending) : Json(nullptr)},
+      {"offending_position",
+       has_offending ? json_vector(request.target.points[static_cast<std::size_t>(offending)])
+                     : Json(nullptr)},
+      {"curve_length", json_number(feasibility.curve_length)},
+      {"reach", json_number(feasibility.reach)},
+  };
+}
+
+Json solver_object(const ShapeSolution& solution) {
+  return {
+      {"status", to_string(solution.status)},
+      {"message", solution.message},
+      {"iterations", solution.ipopt.iterations},
+      {"ipopt_status", solution.ipopt.application_status_name},
+      {"objective", json_number(solution.ipopt.objective)},
+      {"starts_tried", solution.starts_tried},
+      {"max_constraint_violation", json_number(solution.max_constraint_violation)},
+  };
+}
+
+Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
+  const ShapeSolution& solution = step.solution;
+  const ShapeCostBreakdown& cost = solution.cost;
+  Json result;
+  result["step"] = number;
+  result["objective_points"] = json_vectors(step.objective_points);
+  result["configuration"] = io_detail::configuration_json(
+      solution.configuration, solution.base_wrench, solution.stability, model);
+  result["end_effector"] = json_pose(step.end_effector);
+  result["energy"] = json_number(cost.energy);
+  result["cost"] = {
+      {"total", json_number(cost.cost)},
+      {"energy_term", json_number(cost.energy_term)},
+      {"distance_term", json_number(cost.distance_term)},
+  };
+  result["distances"] = numbers(cost.distances);
+  result["max_distance"] = json_number(cost.max_distance);
+  result["stable"] = solution.stability ? Json(solution.stability->stable) : Json(nullptr);
+  result["solver"] = solver_object(solution);
+  return result;
+}
+
+Json final_object(const ShapePlan& plan) {
+  if (plan.steps.empty()) return nullptr;
+  const ShapeSolution& last = plan.steps.back().solution;
+  int iterations = 0;
+  for (const PlanStep& step : plan.steps) iterations += step.solution.ipopt.iterations;
+  double mean = 0.0;
+  for (const double d : last.cost.distances) mean += d;
+  if (!last.cost.distances.empty()) mean /= static_cast<double>(last.cost.distances.size());
+  return {
+      {"step", static_cast<int>(plan.steps.size())},
+      {"max_distance", json_number(last.cost.max_distance)},
+      {"mean_distance", json_number(mean)},
+      {"energy", json_number(last.cost.energy)},
+      {"stable", last.stability ? Json(last.stability->stable) : Json(nullptr)},
+      {"iterations", iterations},
+  };
+}
+
+Json path_object(const ShapePlan& plan) {
+  const std::vector<TimedPose>& path = plan.end_effector_path;
+  Json waypoints = Json::array();
+  for (const PlanStep& step : plan.steps) waypoints.push_back(json_pose(step.end_effector));
+  return {
+      {"file", path.empty() ? Json(nullptr) : Json("trajectory.csv")},
+      {"duration", path.empty() ? Json(nullptr) : json_number(path.back().t)},
+      {"samples", static_cast<int>(path.size())},
+      {"start", path.empty() ? Json(nullptr) : json_pose(path.front().pose)},
+      {"waypoints", std::move(waypoints)},
+  };
+}
+
+Json tracking_object(const TrackingReport& tracking) {
+  return {
+      {"performed", tracking.performed},
+      {"arrival_deviation", numbers(tracking.arrival_deviation)},
+      {"max_deviation", json_number(tracking.max_deviation)},
+      {"jump", tracking.jump},
+      {"jump_step", tracking.jump_step >= 0 ? Json(tracking.jump_step + 1) : Json(nullptr)},
+      {"note", tracking.note},
+  };
+}
+
+}  // namespace
+
+std::string plan_result_json(const ShapePlan& plan, const PlanTask& task) {
+  const PlanRequest& request = task.request;
+  const ConstitutiveModel model = request.rod.properties.model;
+  const bool complete = plan.status == PlanStatus::Complete;
+
+  Json result;
+  result["status"] = to_string(plan.status);
+  result["message"] = plan.message;
+  result["reason"] = complete ? Json(nullptr) : Json(plan.message);
+  result["failed_step"] = plan.failed_step >= 0 ? Json(plan.failed_step + 1) : Json(nullptr);
+  result["steps_requested"] = task.options.steps;
+  result["steps_completed"] = static_cast<int>(plan.steps.size());
+  result["source"] = task.source;
+  result["target"] = target_object(request.target);
+  result["feasibility"] = feasibility_object(task);
+  result["final"] = final_object(plan);
+  result["initial"] = plan.initial_configuration.nodes() > 0
+                          ? io_detail::configuration_json(plan.initial_configuration,
+                                                          plan.initial_wrench, std::nullopt, model)
+                          : Json(nullptr);
+  result["initial_points"] = json_vectors(plan.initial_points);
+  Json steps = Json::array();
+  for (std::size_t k = 0; k < plan.steps.size(); ++k)
+    steps.push_back(step_object(plan.steps[k], static_cast<int>(k) + 1, model));
+  result["steps"] = std::move(steps);
+  result["end_effector_path"] = path_object(plan);
+  result["tracking"] = tracking_object(plan.tracking);
+  return io_detail::format_json(result);
+}
+
+std::string trajectory_csv(const std::vector<TimedPose>& path) {
+  std::ostringstream out;
+  out << "t,x,y,z,qw,qx,qy,qz\n";
+  out << std::setprecision(12);
+  Eigen::Vector4d previous = Eigen::Vector4d::Zero();
+  for (const TimedPose& sample : path) {
+    Eigen::Vector4d q = sample.pose.quaternion_wxyz();  // w ≥ 0 for the first
+    if (previous.dot(q) < 0.0) q = -q;                  // stay in the previous hemisphere
+    previous = q;
+    const Eigen::Vector3d& p = sample.pose.position;
+    out << sample.t << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << q[0] << ',' << q[1]
+        << ',' << q[2] << ',' << q[3] << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace rodshape

@@ -1,0 +1,148 @@
+// plan_sections.cpp: the readers of the sections that a plan task adds (see plan_sections.hpp).
+#include "io/plan_sections.hpp"
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "io/task_sections.hpp"
+
+namespace rodshape::io_detail {
+
+namespace {
+
+Workspace::Ball read_ball(const YamlField& ball) {
+  ball.expect_mapping({"center", "radius"});
+  return {ball.require("center").vector3(), ball.require("radius").number()};
+}
+
+std::vector<Workspace::Ball> read_balls(const YamlField& balls) {
+  std::vector<Workspace::Ball> result;
+  for (const YamlField& ball : balls.elements()) result.push_back(read_ball(ball));
+  return result;
+}
+
+/// {force, moment} into `bound`, where each vector given replaces the three components it covers.
+void read_bound(const YamlField& field, Eigen::Ref<Vector6d> bound) {
+  field.expect_mapping({"force", "moment"});
+  if (const YamlField force = field.get("force"); force.present())
+    bound.head<3>() = force.vector3();
+  if (const YamlField moment = field.get("moment"); moment.present())
+    bound.tail<3>() = moment.vector3();
+}
+
+void read_number(const YamlField& section, std::string_view key, double& value) {
+  if (const YamlField field = section.get(key); field.present()) value = field.number();
+}
+
+void read_integer(const YamlField& section, std::string_view key, int& value) {
+  if (const YamlField field = section.get(key); field.present()) value = field.integer();
+}
+
+}  // namespace
+
+void read_target_section(const YamlField& target, ShapeTarget& result) {
+  target.expect_mapping({"points", "squared_distances"},
+                        {{"energy", "energy belongs in the top-level section weights"},
+                         {"distance", "distance belongs in the top-level section weights"},
+                         {"weights", "weights is a top-level section, not part of target"}});
+  result.points.clear();
+  for (const YamlField& point : target.require("points").elements())
+    result.points.push_back(point.vector3());
+  if (const YamlField squared = target.get("squared_distances"); squared.present())
+    result.squared_distances = squared.boolean();
+}
+
+void read_weights_section(const YamlField& weights, ShapeTarget& target) {
+  weights.expect_mapping({"energy", "distance"});
+  read_number(weights, "energy", target.energy_weight);
+  read_number(weights, "distance", target.distance_weight);
+}
+
+Workspace read_workspace_section(const YamlField& workspace) {
+  workspace.expect_mapping({"box", "inside", "outside", "half_spaces"});
+  Workspace result;
+  if (const YamlField box = workspace.get("box"); box.present()) {
+    box.expect_mapping({"lower", "upper"});
+    result.box = Workspace::Box{box.require("lower").vector3(), box.require("upper").vector3()};
+  }
+  if (const YamlField inside = workspace.get("inside"); inside.present())
+    result.inside = read_balls(inside);
+  if (const YamlField outside = workspace.get("outside"); outside.present())
+    result.outside = read_balls(outside);
+  if (const YamlField half_spaces = workspace.get("half_spaces"); half_spaces.present()) {
+    for (const YamlField& half : half_spaces.elements()) {
+      half.expect_mapping({"normal", "offset"});
+      result.half_spaces.push_back(
+          {half.require("normal").vector3(), half.require("offset").number()});
+    }
+  }
+  return result;
+}
+
+Grasp read_grasp_section(const YamlField& grasp) {
+  grasp.expect_mapping({"zero_wrench", "tip_to_end_effector"},
+                       {{"released",
+                         "a plan's grasp names the wrench it cannot transmit as "
+                         "zero_wrench (axes fx, fy, fz, mx, my, mz)"}});
+  Grasp result;
+  if (const YamlField axes = grasp.get("zero_wrench"); axes.present())
+    result.zero_wrench = read_wrench_axes(axes);
+  if (const YamlField offset = grasp.get("tip_to_end_effector"); offset.present())
+    result.tip_to_end_effector = read_pose(offset);
+  return result;
+}
+
+std::optional<Pose> read_initial_section(const YamlField& initial) {
+  initial.expect_mapping({"tip"}, {{"position", "give the initial tip pose as initial.tip"},
+                                   {"rotation", "give the initial tip pose as initial.tip"}});
+  if (const YamlField tip = initial.get("tip"); tip.present()) return read_pose(tip);
+  return std::nullopt;
+}
+
+StrainLimits read_limits_section(const YamlField& limits) {
+  limits.expect_mapping({"max_curvature", "max_axial_strain"});
+  StrainLimits result;
+  if (const YamlField field = limits.get("max_curvature"); field.present())
+    result.max_curvature = field.number();
+  if (const YamlField field = limits.get("max_axial_strain"); field.present())
+    result.max_axial_strain = field.number();
+  return result;
+}
+
+WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
+  bounds.expect_mapping({"lower", "upper"});
+  WrenchBounds result;
+  if (const YamlField lower = bounds.get("lower"); lower.present()) read_bound(lower, result.lower);
+  if (const YamlField upper = bounds.get("upper"); upper.present()) read_bound(upper, result.upper);
+  return result;
+}
+
+void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) {
+  trajectory.expect_mapping(
+      {"steps", "max_linear_speed", "max_angular_speed", "max_linear_acceleration",
+       "max_angular_acceleration", "rate", "track", "tracking_substeps"},
+      {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
+  read_integer(trajectory, "steps", options.steps);
+  EndEffectorLimits& limits = options.end_effector;
+  read_number(trajectory, "max_linear_speed", limits.max_linear_speed);
+  read_number(trajectory, "max_angular_speed", limits.max_angular_speed);
+  read_number(trajectory, "max_linear_acceleration", limits.max_linear_acceleration);
+  read_number(trajectory, "max_angular_acceleration", limits.max_angular_acceleration);
+  read_number(trajectory, "rate", limits.sample_rate);
+  if (const YamlField track = trajectory.get("track"); track.present())
+    options.track_between_waypoints = track.boolean();
+  read_integer(trajectory, "tracking_substeps", options.tracking_substeps);
+}
+
+void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options) {
+  optimizer.expect_mapping(
+      {"max_iterations", "tolerance", "constraint_tolerance", "multi_starts", "print_level"});
+  read_integer(optimizer, "max_iterations", options.max_iterations);
+  read_number(optimizer, "tolerance", options.tolerance);
+  read_number(optimizer, "constraint_tolerance", options.constraint_tolerance);
+  read_integer(optimizer, "multi_starts", options.multi_starts);
+  read_integer(optimizer, "print_level", options.print_level);
+}
+
+}  // namespace rodshape::io_detail

@@ -1,0 +1,55 @@
+// plan_sections.hpp (private to the io area): the readers of the sections a plan task adds to the
+// rod sections of task_sections.hpp: target, weights, workspace, grasp, initial, limits,
+// wrench_bounds, trajectory and optimizer. As there, numbers are checked for being numbers and
+// finite here and their ranges by the library's validate() functions (ShapeTarget, Workspace,
+// StrainLimits, PlanOptions), located in the file by task_reader.cpp.
+#pragma once
+
+#include <optional>
+
+#include "io/yaml_field.hpp"
+#include "rodshape/core/pose.hpp"
+#include "rodshape/optimisation/shape_constraints.hpp"
+#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_target.hpp"
+#include "rodshape/optimisation/workspace.hpp"
+#include "rodshape/trajectory/shape_plan.hpp"
+
+namespace rodshape::io_detail {
+
+/// The task-file defaults of the weights, which differ from ShapeTarget's (1, 1): with W1 = 1 the
+/// energy term W1 E / L of a bent rubber band (about 0.5 N) outweighs millimetre distances by far,
+/// so the plan would trade the shape for a lower energy. W1 = 1e-3 keeps the energy as the
+/// tie-breaker between shapes that pass through the points, as the paper uses it.
+inline constexpr double kDefaultEnergyWeight = 1e-3;
+inline constexpr double kDefaultDistanceWeight = 1.0;
+
+/// `target`: points (a list of [x, y, z]), squared_distances. Into `target`.
+void read_target_section(const YamlField& target, ShapeTarget& result);
+
+/// `weights`: energy (W1), distance (W2). Fields left out keep the values in `target`.
+void read_weights_section(const YamlField& weights, ShapeTarget& target);
+
+/// `workspace`: box {lower, upper}, inside and outside (lists of {center, radius}), half_spaces
+/// (a list of {normal, offset}).
+Workspace read_workspace_section(const YamlField& workspace);
+
+/// `grasp`: zero_wrench (axes among fx ... mz), tip_to_end_effector (a pose).
+Grasp read_grasp_section(const YamlField& grasp);
+
+/// `initial`: tip (a pose); nullopt when the section or its tip is left out (the rod at rest).
+std::optional<Pose> read_initial_section(const YamlField& initial);
+
+/// `limits`: max_curvature, max_axial_strain.
+StrainLimits read_limits_section(const YamlField& limits);
+
+/// `wrench_bounds`: lower and upper, each {force, moment}; an omitted vector is unbounded.
+WrenchBounds read_wrench_bounds_section(const YamlField& bounds);
+
+/// `trajectory`: steps, speeds, accelerations, rate, track, tracking_substeps. Into `options`.
+void read_trajectory_section(const YamlField& trajectory, PlanOptions& options);
+
+/// `optimizer`: max_iterations, tolerance, constraint_tolerance, multi_starts, print_level.
+void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options);
+
+}  // namespace rodshape::io_detail

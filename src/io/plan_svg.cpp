@@ -1,0 +1,343 @@
+// plan_svg.cpp: plan.svg, a picture of the plan that any browser shows: three orthographic
+// projections (x–z, y–z, x–y) side by side at one common scale (a metre is as long in every panel
+// and along both axes), so that lengths and angles can be compared between views. Plain SVG 1.1,
+// written by hand: no dependency, no script, no external font or style sheet.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rodshape/io/plan_output.hpp"
+
+namespace rodshape {
+
+namespace {
+
+// Layout, px.
+constexpr double kPanel = 330.0;  // side of a panel's square plot area
+constexpr double kLeft = 70.0;    // left margin (tick labels of the first panel)
+constexpr double kGap = 85.0;     // between panels (the next panel's tick labels)
+constexpr double kTop = 78.0;     // title and panel captions
+constexpr double kLegendHeight = 96.0;
+constexpr double kWidth = kLeft + 3 * kPanel + 2 * kGap + 45.0;
+constexpr double kHeight = kTop + kPanel + 45.0 + kLegendHeight;
+
+const char* const kInitialColour = "#9a9a9a";
+const char* const kTargetColour = "#d62728";
+
+/// A number as SVG wants it: fixed, two decimals (0.01 px).
+std::string px(double value) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << value;
+  return out.str();
+}
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+/// The colour of step k of n on a ramp from dark blue through purple and pink to orange (the
+/// first four fifths of matplotlib's "plasma": every colour stays readable on white).
+std::string step_colour(int k, int n) {
+  static constexpr std::array<std::array<double, 3>, 4> kRamp = {
+      {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {240, 130, 50}}};
+  const double t = n > 1 ? static_cast<double>(k) / (n - 1) : 1.0;
+  const double x = t * (kRamp.size() - 1);
+  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), kRamp.size() - 2);
+  const double f = x - static_cast<double>(i);
+  std::ostringstream out;
+  out << '#' << std::hex << std::setfill('0');
+  for (int c = 0; c < 3; ++c) {
+    const double value = (1.0 - f) * kRamp[i][c] + f * kRamp[i + 1][c];
+    out << std::setw(2) << static_cast<int>(std::lround(value));
+  }
+  return out.str();
+}
+
+/// A round tick spacing, 1, 2 or 5 × 10^k, giving about `count` intervals over `range`.
+double tick_spacing(double range, int count) {
+  const double raw = range / count;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double factor : {1.0, 2.0, 5.0}) {
+    if (factor * decade >= raw) return factor * decade;
+  }
+  return 10.0 * decade;
+}
+
+std::string tick_label(double value, double spacing) {
+  const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(spacing) + 1e-9)));
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals)
+      << (std::abs(value) < 0.5 * spacing ? 0.0 : value);
+  return out.str();
+}
+
+/// One projection: world axes (h, v) onto a panel's plot area.
+struct Panel {
+  int h = 0, v = 2;          // world axis drawn across and up
+  double left = 0, top = 0;  // plot area's corner, px
+  const char* caption = "";
+};
+
+/// The common view: per world axis the lower end of its range; one scale for all.
+struct View {
+  Eigen::Vector3d lower = Eigen::Vector3d::Zero();
+  double range = 1.0;  // m, the same along every axis
+  double scale() const { return kPanel / range; }
+};
+
+View fit_view(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for (const Eigen::Vector3d& p : points) {
+    if (!p.allFinite()) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!(lo.array() <= hi.array()).all()) lo = hi = Eigen::Vector3d::Zero();
+  const double span = std::max((hi - lo).maxCoeff(), 1e-3);
+  View view;
+  view.range = 1.12 * span;  // 6% margin on each side of the widest axis
+  view.lower = 0.5 * (lo + hi) - Eigen::Vector3d::Constant(0.5 * view.range);
+  return view;
+}
+
+class Canvas {
+ public:
+  explicit Canvas(const View& view) : view_(view) {}
+
+  double x(const Panel& panel, const Eigen::Vector3d& p) const {
+    return panel.left + (p[panel.h] - view_.lower[panel.h]) * view_.scale();
+  }
+  double y(const Panel& panel, const Eigen::Vector3d& p) const {
+    return panel.top + kPanel - (p[panel.v] - view_.lower[panel.v]) * view_.scale();
+  }
+
+  void frame(const Panel& panel, int index) {
+    static const char* const kAxisNames[3] = {"x", "y", "z"};
+    const double spacing = tick_spacing(view_.range, 8);
+    out_ << "<g font-family=\"sans-serif\" font-size=\"11\" fill=\"#333\">\n";
+    out_ << "<text x=\"" << px(panel.left + kPanel / 2) << "\" y=\"" << px(panel.top - 10)
+         << "\" text-anchor=\"middle\" font-size=\"13\" font-weight=\"bold\">" << panel.caption
+         << "</text>\n";
+    out_ << "<rect x=\"" << px(panel.left) << "\" y=\"" << px(panel.top) << "\" width=\""
+         << px(kPanel) << "\" height=\"" << px(kPanel)
+         << "\" fill=\"#fcfcfc\" stroke=\"#444\" stroke-width=\"1\"/>\n";
+    for (const int axis : {panel.h, panel.v}) {
+      const double lower = view_.lower[axis];
+      for (double tick = std::ceil(lower / spacing) * spacing; tick <= lower + view_.range;
+           tick += spacing) {
+        const double offset = (tick - lower) * view_.scale();
+        const std::string label = tick_label(tick, spacing);
+        if (axis == panel.h) {
+          const double at = panel.left + offset;
+          out_ << "<line x1=\"" << px(at) << "\" y1=\"" << px(panel.top) << "\" x2=\"" << px(at)
+               << "\" y2=\"" << px(panel.top + kPanel) << "\" stroke=\"#e2e2e2\"/>\n";
+          out_ << "<text x=\"" << px(at) << "\" y=\"" << px(panel.top + kPanel + 15)
+               << "\" text-anchor=\"middle\">" << label << "</text>\n";
+        } else {
+          const double at = panel.top + kPanel - offset;
+          out_ << "<line x1=\"" << px(panel.left) << "\" y1=\"" << px(at) << "\" x2=\""
+               << px(panel.left + kPanel) << "\" y2=\"" << px(at) << "\" stroke=\"#e2e2e2\"/>\n";
+          out_ << "<text x=\"" << px(panel.left - 5) << "\" y=\"" << px(at + 4)
+               << "\" text-anchor=\"end\">" << label << "</text>\n";
+        }
+      }
+    }
+    out_ << "<text x=\"" << px(panel.left + kPanel / 2) << "\" y=\"" << px(panel.top + kPanel + 32)
+         << "\" text-anchor=\"middle\">" << kAxisNames[panel.h] << " [m]</text>\n";
+    const double label_x = panel.left - 48, label_y = panel.top + kPanel / 2;
+    out_ << "<text x=\"" << px(label_x) << "\" y=\"" << px(label_y)
+         << "\" text-anchor=\"middle\" transform=\"rotate(-90 " << px(label_x) << ' ' << px(label_y)
+         << ")\">" << kAxisNames[panel.v] << " [m]</text>\n";
+    out_ << "</g>\n";
+    out_ << "<clipPath id=\"panel" << index << "\"><rect x=\"" << px(panel.left) << "\" y=\""
+         << px(panel.top) << "\" width=\"" << px(kPanel) << "\" height=\"" << px(kPanel)
+         << "\"/></clipPath>\n";
+  }
+
+  void polyline(const Panel& panel,
+                const std::vector<Eigen::Vector3d>& points,
+                const std::string& colour,
+                double width,
+                const char* extra = "") {
+    if (points.empty()) return;
+    out_ << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << width
+         << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"" << extra << " points=\"";
+    for (const Eigen::Vector3d& p : points)
+      out_ << px(x(panel, p)) << ',' << px(y(panel, p)) << ' ';
+    out_ << "\"/>\n";
+  }
+
+  void dots(const Panel& panel,
+            const std::vector<Eigen::Vector3d>& points,
+            const std::string& colour,
+            double radius) {
+    for (const Eigen::Vector3d& p : points) {
+      out_ << "<circle cx=\"" << px(x(panel, p)) << "\" cy=\"" << px(y(panel, p)) << "\" r=\""
+           << radius << "\" fill=\"" << colour << "\"/>\n";
+    }
+  }
+
+  void crosses(const Panel& panel, const std::vector<Eigen::Vector3d>& points) {
+    for (const Eigen::Vector3d& p : points) cross(x(panel, p), y(panel, p));
+  }
+
+  void cross(double cx, double cy) {
+    constexpr double r = 4.5;
+    out_ << "<path d=\"M" << px(cx - r) << ',' << px(cy - r) << "L" << px(cx + r) << ','
+         << px(cy + r) << "M" << px(cx - r) << ',' << px(cy + r) << "L" << px(cx + r) << ','
+         << px(cy - r) << "\" stroke=\"" << kTargetColour << "\" stroke-width=\"2\"/>\n";
+  }
+
+  void clamp(const Panel& panel, const Eigen::Vector3d& p) { square(x(panel, p), y(panel, p)); }
+
+  void square(double cx, double cy) {
+    out_ << "<rect x=\"" << px(cx - 4) << "\" y=\"" << px(cy - 4)
+         << "\" width=\"8\" height=\"8\" fill=\"#222\"/>\n";
+  }
+
+  std::ostringstream& out() { return out_; }
+
+ private:
+  View view_;
+  std::ostringstream out_;
+};
+
+std::string millimetres(double metres) {
+  std::ostringstream out;
+  out << std::setprecision(3) << metres * 1e3 << " mm";
+  return out.str();
+}
+
+}  // namespace
+
+std::string plan_svg(const ShapePlan& plan, const PlanTask& task) {
+  const PlanRequest& request = task.request;
+  const int n = static_cast<int>(plan.steps.size());
+
+  // Everything drawn decides the view.
+  std::vector<Eigen::Vector3d> all = request.target.points;
+  all.push_back(request.rod.clamp.position);
+  all.insert(all.end(), plan.initial_configuration.p.begin(), plan.initial_configuration.p.end());
+  for (const PlanStep& step : plan.steps) {
+    all.insert(all.end(), step.solution.configuration.p.begin(),
+               step.solution.configuration.p.end());
+    all.insert(all.end(), step.objective_points.begin(), step.objective_points.end());
+  }
+  Canvas canvas(fit_view(all));
+  std::ostringstream& out = canvas.out();
+
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(kWidth)
+      << "\" height=\"" << px(kHeight) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(kHeight)
+      << "\">\n";
+  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+
+  // Title: what, and how it went.
+  std::ostringstream title;
+  title << "rodshape plan: " << task.source << " \u2014 " << to_string(plan.status) << ", " << n
+        << " of " << task.options.steps << " steps";
+  if (n > 0) {
+    const ShapeSolution& last = plan.steps.back().solution;
+    title << "; final max distance " << millimetres(last.cost.max_distance) << ", energy "
+          << std::setprecision(3) << last.cost.energy << " J";
+  }
+  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"24\" font-family=\"sans-serif\" "
+      << "font-size=\"15\" font-weight=\"bold\" fill=\"#111\">" << escaped(title.str())
+      << "</text>\n";
+  if (plan.status != PlanStatus::Complete) {
+    out << "<text x=\"" << px(kLeft - 40) << "\" y=\"44\" font-family=\"sans-serif\" "
+        << "font-size=\"12\" fill=\"" << kTargetColour << "\">" << escaped(plan.message)
+        << "</text>\n";
+  }
+
+  const std::array<Panel, 3> panels = {{
+      {0, 2, kLeft, kTop, "front: x\u2013z"},
+      {1, 2, kLeft + kPanel + kGap, kTop, "side: y\u2013z"},
+      {0, 1, kLeft + 2 * (kPanel + kGap), kTop, "top: x\u2013y"},
+  }};
+  for (std::size_t k = 0; k < panels.size(); ++k) {
+    const Panel& panel = panels[k];
+    canvas.frame(panel, static_cast<int>(k));
+    out << "<g clip-path=\"url(#panel" << k << ")\">\n";
+    canvas.polyline(panel, plan.initial_configuration.p, kInitialColour, 2.0,
+                    " stroke-dasharray=\"6 3\"");
+    for (int i = 0; i < n; ++i) {
+      const bool last = i == n - 1;
+      canvas.polyline(panel, plan.steps[i].solution.configuration.p, step_colour(i, n),
+                      last ? 3.5 : 1.3, last ? "" : " stroke-opacity=\"0.85\"");
+    }
+    for (int i = 0; i + 1 < n; ++i)
+      canvas.dots(panel, plan.steps[i].objective_points, step_colour(i, n), 1.8);
+    canvas.crosses(panel, request.target.points);
+    canvas.clamp(panel, request.rod.clamp.position);
+    out << "</g>\n";
+  }
+
+  // Legend.
+  const double top = kTop + kPanel + 52;
+  const double left = kLeft;
+  out << "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#222\">\n";
+  out << "<line x1=\"" << px(left) << "\" y1=\"" << px(top) << "\" x2=\"" << px(left + 30)
+      << "\" y2=\"" << px(top) << "\" stroke=\"" << kInitialColour
+      << "\" stroke-width=\"2\" stroke-dasharray=\"6 3\"/>\n";
+  out << "<text x=\"" << px(left + 38) << "\" y=\"" << px(top + 4) << "\">initial rod</text>\n";
+  const double ramp_left = left + 170;
+  for (int i = 0; i < n; ++i) {
+    out << "<rect x=\"" << px(ramp_left + i * 14) << "\" y=\"" << px(top - 5)
+        << "\" width=\"14\" height=\"10\" fill=\"" << step_colour(i, n) << "\"/>\n";
+  }
+  if (n > 0) {
+    out << "<text x=\"" << px(ramp_left + n * 14 + 8) << "\" y=\"" << px(top + 4)
+        << "\">rod at steps 1 \u2026 " << n
+        << " (thin), with their objective points (dots)</text>\n";
+  } else {
+    out << "<text x=\"" << px(ramp_left) << "\" y=\"" << px(top + 4)
+        << "\">no step succeeded</text>\n";
+  }
+  const double row2 = top + 24;
+  if (n > 0) {
+    out << "<line x1=\"" << px(left) << "\" y1=\"" << px(row2) << "\" x2=\"" << px(left + 30)
+        << "\" y2=\"" << px(row2) << "\" stroke=\"" << step_colour(n - 1, n)
+        << "\" stroke-width=\"3.5\"/>\n";
+    out << "<text x=\"" << px(left + 38) << "\" y=\"" << px(row2 + 4) << "\">final rod (step " << n
+        << ")</text>\n";
+  }
+  canvas.cross(ramp_left + 7, row2);
+  out << "<text x=\"" << px(ramp_left + 20) << "\" y=\"" << px(row2 + 4)
+      << "\">target points p_obj</text>\n";
+  canvas.square(ramp_left + 187, row2);
+  out << "<text x=\"" << px(ramp_left + 200) << "\" y=\"" << px(row2 + 4)
+      << "\">clamp p(0)</text>\n";
+  const double row3 = row2 + 24;
+  out << "<text x=\"" << px(left) << "\" y=\"" << px(row3 + 4) << "\" fill=\"#555\">"
+      << "Orthographic projections, one scale in all panels; grid and labels in metres.</text>\n";
+  out << "</g>\n";
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace rodshape

@@ -1,0 +1,360 @@
+// test_cli_plan.cpp: `rodshape plan` as a user runs it. A complete plan writes plan.json (every
+// documented key, one entry per step, the last step's objective points equal to the target),
+// trajectory.csv (increasing times, unit quaternions) and plan.svg; an infeasible target gives exit
+// code 2 and a plan.json that says why; a workspace that excludes the initial tip gives exit code 2
+// and no files; a step that fails gives exit code 3 and a partial plan. The task files are small
+// (51 nodes, two or three steps) to keep the runtime short.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const std::string kCli = RODSHAPE_CLI_PATH;
+
+struct Outcome {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string read_file(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+class CliPlan : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_FALSE(kCli.empty()) << "the rodshape tool was not built";
+    std::string pattern = (fs::temp_directory_path() / "rodshape_cli_plan_XXXXXX").string();
+    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+    directory_ = pattern;
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  /// Runs `rodshape plan <task> -o <outdir>`.
+  Outcome plan(const fs::path& task, const fs::path& outdir) const {
+    const fs::path out = directory_ / "stdout.txt";
+    const fs::path err = directory_ / "stderr.txt";
+    const std::string command = quoted(kCli) + " plan " + quoted(task.string()) + " -o " +
+                                quoted(outdir.string()) + " >" + quoted(out.string()) + " 2>" +
+                                quoted(err.string());
+    const int status = std::system(command.c_str());
+    Outcome result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = read_file(out);
+    result.err = read_file(err);
+    fs::remove(out);
+    fs::remove(err);
+    return result;
+  }
+
+  fs::path write_task(const std::string& name, const std::string& text) const {
+    const fs::path path = directory_ / name;
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  fs::path directory_;
+};
+
+// A gentle bend of the rubber band (the points lie on the band integrated from the base wrench
+// m(0) = [0, 0.08, 0] N m, rounded to the millimetre). Line numbers below refer to this text.
+const std::string kTask = R"(rod:
+  length: 0.29
+  nodes: 51
+  section: {shape: rectangle, width: 0.02, height: 0.02}
+  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
+  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
+target:
+  points:
+    - [0.003, 0.000, 0.057]
+    - [0.013, 0.000, 0.114]
+    - [0.030, 0.000, 0.169]
+    - [0.052, 0.000, 0.223]
+    - [0.081, 0.000, 0.273]
+trajectory:
+  steps: 2
+  tracking_substeps: 3
+)";
+
+std::string task_with(const std::string& from, const std::string& to) {
+  std::string text = kTask;
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+void expect_one_line(const std::string& text) {
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.find('\n'), text.size() - 1) << "not one line: " << text;
+}
+
+void expect_vector3(const Json& v) {
+  ASSERT_TRUE(v.is_array());
+  ASSERT_EQ(v.size(), 3u);
+  for (const Json& c : v) EXPECT_TRUE(c.is_number());
+}
+
+void expect_unit_quaternion(const Json& q) {
+  ASSERT_EQ(q.size(), 4u);
+  double norm2 = 0.0;
+  for (const Json& c : q) norm2 += c.get<double>() * c.get<double>();
+  EXPECT_NEAR(std::sqrt(norm2), 1.0, 1e-12);
+}
+
+void expect_pose(const Json& pose) {
+  ASSERT_TRUE(pose.is_object());
+  expect_vector3(pose["position"]);
+  expect_unit_quaternion(pose["rotation"]);
+}
+
+/// The object `equilibrium` writes after its solver fields.
+void expect_configuration(const Json& c, std::size_t nodes) {
+  ASSERT_TRUE(c.is_object());
+  for (const char* key :
+       {"model", "energy", "stable", "stability", "base_wrench", "tip_wrench", "tip", "nodes"})
+    EXPECT_TRUE(c.contains(key)) << key;
+  EXPECT_EQ(c["model"], "cosserat");
+  EXPECT_TRUE(c["energy"].is_number());
+  expect_vector3(c["base_wrench"]["force"]);
+  expect_vector3(c["base_wrench"]["moment"]);
+  expect_pose(c["tip"]);
+  for (const char* key : {"s", "position", "rotation", "force", "moment", "u", "v"})
+    EXPECT_EQ(c["nodes"][key].size(), nodes) << key;
+}
+
+std::vector<std::vector<double>> read_csv(const fs::path& path, std::string& header) {
+  std::ifstream file(path);
+  std::getline(file, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(file, line);) {
+    std::vector<double> row;
+    std::stringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(CliPlan, CompletePlanWritesPlanTrajectoryAndPicture) {
+  const fs::path task = write_task("bend.yaml", kTask);
+  const fs::path outdir = directory_ / "out" / "bend";  // created, parents included
+  const Outcome result = plan(task, outdir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  expect_one_line(result.out);
+  EXPECT_EQ(result.out.rfind(task.string() + ": complete plan, 2 of 2 steps", 0), 0u) << result.out;
+
+  // plan.json: every documented key.
+  const Json j = Json::parse(read_file(outdir / "plan.json"));
+  for (const char* key : {"status", "message", "reason", "failed_step", "steps_requested",
+                          "steps_completed", "source", "target", "feasibility", "final", "initial",
+                          "initial_points", "steps", "end_effector_path", "tracking"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["status"], "complete");
+  EXPECT_TRUE(j["reason"].is_null());
+  EXPECT_TRUE(j["failed_step"].is_null());
+  EXPECT_EQ(j["steps_requested"], 2);
+  EXPECT_EQ(j["steps_completed"], 2);
+  EXPECT_EQ(j["target"]["points"].size(), 5u);
+  EXPECT_EQ(j["target"]["weights"]["energy"], 1e-3);
+  EXPECT_EQ(j["feasibility"]["feasible"], true);
+  expect_configuration(j["initial"], 51);
+  EXPECT_EQ(j["initial_points"].size(), 5u);
+
+  const Json& steps = j["steps"];
+  ASSERT_EQ(steps.size(), 2u);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    SCOPED_TRACE("step " + std::to_string(k + 1));
+    const Json& step = steps[k];
+    for (const char* key : {"step", "objective_points", "configuration", "end_effector", "energy",
+                            "cost", "distances", "max_distance", "stable", "solver"})
+      EXPECT_TRUE(step.contains(key)) << key;
+    EXPECT_EQ(step["step"], k + 1);
+    EXPECT_EQ(step["objective_points"].size(), 5u);
+    expect_configuration(step["configuration"], 51);
+    expect_pose(step["end_effector"]);
+    EXPECT_EQ(step["energy"], step["configuration"]["energy"]);
+    ASSERT_EQ(step["distances"].size(), 5u);
+    double largest = 0.0;
+    for (const Json& d : step["distances"]) largest = std::max(largest, d.get<double>());
+    EXPECT_EQ(step["max_distance"].get<double>(), largest);
+    EXPECT_TRUE(step["stable"].is_boolean());
+    EXPECT_EQ(step["solver"]["status"], "converged");
+    EXPECT_GE(step["solver"]["iterations"].get<int>(), 0);
+    // The grasp has no offset: the end effector is the tip.
+    EXPECT_EQ(step["end_effector"]["position"], step["configuration"]["tip"]["position"]);
+  }
+  EXPECT_EQ(steps.back()["objective_points"], j["target"]["points"]);
+  // The target lies on a reachable shape, up to the points' millimetre rounding (≤ 0.87 mm) and the
+  // coarse discretisation: the final rod passes within 2 mm of every point.
+  EXPECT_LT(steps.back()["max_distance"].get<double>(), 2e-3);
+  EXPECT_EQ(j["final"]["max_distance"], steps.back()["max_distance"]);
+
+  const Json& path = j["end_effector_path"];
+  EXPECT_EQ(path["file"], "trajectory.csv");
+  EXPECT_GT(path["duration"].get<double>(), 0.0);
+  EXPECT_EQ(path["waypoints"].size(), 2u);
+  const Json& tracking = j["tracking"];
+  for (const char* key :
+       {"performed", "arrival_deviation", "max_deviation", "jump", "jump_step", "note"})
+    EXPECT_TRUE(tracking.contains(key)) << key;
+  EXPECT_EQ(tracking["performed"], true);
+
+  // trajectory.csv: from the initial tip to the last waypoint, times increasing, unit quaternions.
+  std::string header;
+  const std::vector<std::vector<double>> rows = read_csv(outdir / "trajectory.csv", header);
+  EXPECT_EQ(header, "t,x,y,z,qw,qx,qy,qz");
+  ASSERT_EQ(rows.size(), path["samples"].get<std::size_t>());
+  ASSERT_GE(rows.size(), 3u);
+  EXPECT_EQ(rows.front()[0], 0.0);
+  EXPECT_NEAR(rows.back()[0], path["duration"].get<double>(), 1e-9);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), 8u) << "row " << r;
+    if (r > 0) {
+      EXPECT_GT(rows[r][0], rows[r - 1][0]) << "row " << r;
+    }
+    const double norm = std::sqrt(rows[r][4] * rows[r][4] + rows[r][5] * rows[r][5] +
+                                  rows[r][6] * rows[r][6] + rows[r][7] * rows[r][7]);
+    EXPECT_NEAR(norm, 1.0, 1e-9) << "row " << r;
+  }
+  EXPECT_NEAR(rows.front()[3], 0.29, 1e-9);  // the band at rest, tip straight up
+  const Json& last = steps.back()["end_effector"]["position"];
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rows.back()[1 + c], last[c].get<double>(), 1e-9);
+
+  // plan.svg: a whole SVG document with the three projections.
+  const std::string svg = read_file(outdir / "plan.svg");
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+  EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
+  for (const char* view : {"x\u2013z", "y\u2013z", "x\u2013y", "target points"})
+    EXPECT_NE(svg.find(view), std::string::npos) << view;
+}
+
+TEST_F(CliPlan, InfeasibleTargetExitsTwoAndSaysWhyInPlanJson) {
+  // A point 2 L from the clamp: no rod of length L passes through it.
+  const fs::path task =
+      write_task("far.yaml", task_with("[0.081, 0.000, 0.273]", "[0.0, 0.0, 0.58]"));
+  const fs::path outdir = directory_ / "far";
+  // Files of an earlier run that an infeasible plan has no content for are removed.
+  fs::create_directories(outdir);
+  write_task("far/trajectory.csv", "t,x,y,z,qw,qx,qy,qz\n");
+  write_task("far/plan.svg", "<svg/>\n");
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  expect_one_line(result.err);
+  EXPECT_EQ(
+      result.err.rfind("error: " + task.string() + ": infeasible target: target.points[4]", 0), 0u)
+      << result.err;
+  const Json j = Json::parse(read_file(outdir / "plan.json"));
+  EXPECT_EQ(j["status"], "infeasible");
+  ASSERT_TRUE(j["reason"].is_string());
+  EXPECT_NE(j["reason"].get<std::string>().find("target.points[4]"), std::string::npos);
+  EXPECT_EQ(j["feasibility"]["feasible"], false);
+  EXPECT_EQ(j["feasibility"]["offending_point"], 4);
+  EXPECT_EQ(j["feasibility"]["offending_position"], Json::parse("[0.0, 0.0, 0.58]"));
+  EXPECT_EQ(j["steps"].size(), 0u);
+  EXPECT_FALSE(fs::exists(outdir / "trajectory.csv"));
+  EXPECT_FALSE(fs::exists(outdir / "plan.svg"));
+}
+
+TEST_F(CliPlan, WorkspaceExcludingTheInitialTipExitsTwoAndWritesNothing) {
+  // The band at rest has its tip at z = 0.29, above this box.
+  const fs::path task = write_task(
+      "box.yaml", kTask + "workspace:\n  box: {lower: [-1, -1, -1], upper: [1, 1, 0.25]}\n");
+  const fs::path outdir = directory_ / "box";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  expect_one_line(result.err);
+  EXPECT_EQ(
+      result.err.rfind("error: " + task.string() + ":17: workspace excludes the initial tip", 0),
+      0u)
+      << result.err;
+  EXPECT_EQ(result.out, "");
+  EXPECT_FALSE(fs::exists(outdir));
+}
+
+TEST_F(CliPlan, BadPlanFieldsExitTwoWithFileLineAndField) {
+  struct Bad {
+    const char* name;
+    std::string text;
+    const char* message;
+  };
+  const std::vector<Bad> cases = {
+      {"steps", task_with("steps: 2", "steps: 0"), ":15: trajectory.steps = 0 must be >= 1"},
+      {"tip", kTask + "tip:\n  position: [0.1, 0, 0.2]\n", ":17: tip: unknown key; a plan decides"},
+      {"weights", kTask + "weights: {energy: -1}\n", ":17: weights.energy = -1 must be >= 0"},
+      {"points",
+       kTask.substr(0, kTask.find("  points:")) + "  points: []\n" +
+           kTask.substr(kTask.find("trajectory:")),
+       ":8: target.points is empty"},
+  };
+  for (const Bad& bad : cases) {
+    SCOPED_TRACE(bad.name);
+    const fs::path task = write_task(std::string(bad.name) + ".yaml", bad.text);
+    const fs::path outdir = directory_ / bad.name;
+    const Outcome result = plan(task, outdir);
+    EXPECT_EQ(result.exit_code, 2);
+    expect_one_line(result.err);
+    EXPECT_EQ(result.err.rfind("error: " + task.string() + bad.message, 0), 0u) << result.err;
+    EXPECT_FALSE(fs::exists(outdir));
+  }
+}
+
+TEST_F(CliPlan, FailedStepExitsThreeAndWritesAPartialPlan) {
+  const fs::path task = write_task("stuck.yaml", kTask + "optimizer: {max_iterations: 1}\n");
+  const fs::path outdir = directory_ / "stuck";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  expect_one_line(result.err);
+  EXPECT_EQ(result.err.rfind("error: " + task.string() + ": partial plan: step ", 0), 0u)
+      << result.err;
+  const Json j = Json::parse(read_file(outdir / "plan.json"));
+  EXPECT_EQ(j["status"], "partial");
+  ASSERT_TRUE(j["failed_step"].is_number_integer());
+  const int failed = j["failed_step"].get<int>();
+  EXPECT_EQ(j["steps_completed"].get<int>(), failed - 1);
+  EXPECT_EQ(j["steps"].size(), static_cast<std::size_t>(failed - 1));
+  EXPECT_NE(result.err.find("step " + std::to_string(failed)), std::string::npos) << result.err;
+  EXPECT_TRUE(j["reason"].is_string());
+  // The steps that succeeded (none, or some) are still drawn and timed.
+  EXPECT_TRUE(fs::exists(outdir / "trajectory.csv"));
+  EXPECT_TRUE(fs::exists(outdir / "plan.svg"));
+  expect_configuration(j["initial"], 51);
+}
+
+TEST_F(CliPlan, OutputDirectoryThatIsAFileIsBadInput) {
+  const fs::path task = write_task("bend.yaml", kTask);
+  const fs::path file = write_task("taken", "not a directory\n");
+  const Outcome result = plan(task, file);
+  EXPECT_EQ(result.exit_code, 2);
+  expect_one_line(result.err);
+  EXPECT_NE(result.err.find("cannot create the output directory"), std::string::npos) << result.err;
+  EXPECT_EQ(read_file(file), "not a directory\n");
+}
+
+TEST_F(CliPlan, MissingOutputOptionIsAUsageError) {
+  const fs::path task = write_task("bend.yaml", kTask);
+  const std::string command = quoted(kCli) + " plan " + quoted(task.string()) + " 2>/dev/null";
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
+}
+
+}  // namespace

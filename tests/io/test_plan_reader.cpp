@@ -1,0 +1,295 @@
+// test_plan_reader.cpp: the plan task file. One case per kind of bad plan field, each asserting
+// that the one-line message names the file, the line and the field; the sections a plan adds read
+// into the request and options they describe; the bundled plan examples read.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "rodshape/error.hpp"
+#include "rodshape/io/task_reader.hpp"
+#include "support/eigen_compare.hpp"
+
+namespace rodshape {
+namespace {
+
+using testing::CompareMatrices;
+
+// Line numbers below refer to this text.
+const std::string kPlan = R"(rod:
+  length: 0.29
+  nodes: 51
+  section: {shape: rectangle, width: 0.02, height: 0.02}
+  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
+  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
+target:
+  points:
+    - [0.003, 0.000, 0.028]
+    - [0.047, 0.000, 0.101]
+    - [0.126, 0.000, 0.133]
+weights:
+  energy: 0.001
+  distance: 1
+workspace:
+  box: {lower: [-1, -1, 0.05], upper: [1, 1, 1]}
+  inside:
+    - {center: [0, 0, 0], radius: 0.5}
+trajectory:
+  steps: 3
+)";
+
+/// kPlan with the first occurrence of `from` replaced by `to`.
+std::string plan_with(const std::string& from, const std::string& to) {
+  std::string text = kPlan;
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The message of the InputError that reading `text` throws, or "" if it reads.
+std::string error_of(const std::string& text) {
+  try {
+    parse_plan_task(text, "plan.yaml");
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+    return message;
+  }
+  return "";
+}
+
+// ---- bad input: one case per field --------------------------------------------------------------
+
+TEST(PlanReader, EmptyPointListIsNamedAtItsLine) {
+  const std::string message =
+      error_of(plan_with("  points:\n    - [0.003, 0.000, 0.028]\n    - [0.047, 0.000, 0.101]\n"
+                         "    - [0.126, 0.000, 0.133]\n",
+                         "  points: []\n"));
+  EXPECT_EQ(message, "plan.yaml:8: target.points is empty: give at least one objective point");
+}
+
+TEST(PlanReader, MissingTargetIsRequired) {
+  std::string text = kPlan;
+  text.erase(text.find("target:"), text.find("weights:") - text.find("target:"));
+  EXPECT_EQ(error_of(text), "plan.yaml: target is required");
+}
+
+TEST(PlanReader, BadPointIsNamedWithItsIndex) {
+  const std::string message = error_of(plan_with("[0.047, 0.000, 0.101]", "[0.047, 0.101]"));
+  EXPECT_EQ(message,
+            "plan.yaml:10: target.points[1]: expected a list of 3 numbers [x, y, z], got a list "
+            "of 2");
+}
+
+TEST(PlanReader, NegativeWeightIsNamed) {
+  const std::string message = error_of(plan_with("energy: 0.001", "energy: -1"));
+  EXPECT_EQ(message, "plan.yaml:13: weights.energy = -1 must be >= 0");
+}
+
+TEST(PlanReader, BothWeightsZeroIsNamed) {
+  const std::string message =
+      error_of(plan_with("energy: 0.001\n  distance: 1", "energy: 0\n  distance: 0"));
+  EXPECT_EQ(
+      message,
+      "plan.yaml:13: weights.energy and weights.distance are both 0: at least one must be > 0");
+}
+
+TEST(PlanReader, ZeroStepsIsNamed) {
+  const std::string message = error_of(plan_with("steps: 3", "steps: 0"));
+  EXPECT_EQ(message, "plan.yaml:20: trajectory.steps = 0 must be >= 1");
+}
+
+TEST(PlanReader, FractionalStepsIsNamed) {
+  const std::string message = error_of(plan_with("steps: 3", "steps: 2.5"));
+  EXPECT_EQ(message, "plan.yaml:20: trajectory.steps = 2.5 must be a whole number");
+}
+
+TEST(PlanReader, BadWorkspaceRadiusIsNamedWithItsIndex) {
+  const std::string message = error_of(plan_with("radius: 0.5", "radius: -0.5"));
+  EXPECT_EQ(message, "plan.yaml:18: workspace.inside[0].radius = -0.5 must be > 0");
+}
+
+TEST(PlanReader, InvertedWorkspaceBoxIsNamed) {
+  const std::string message = error_of(plan_with("upper: [1, 1, 1]", "upper: [1, -2, 1]"));
+  EXPECT_TRUE(message.starts_with("plan.yaml:16: workspace.box: lower[1] = -1 is above upper[1]"))
+      << message;
+}
+
+TEST(PlanReader, WorkspaceExcludingTheRestingTipIsNamed) {
+  // The band at rest has its tip at z = 0.29, above this box.
+  const std::string message = error_of(plan_with("upper: [1, 1, 1]", "upper: [1, 1, 0.2]"));
+  EXPECT_TRUE(
+      message.starts_with("plan.yaml:15: workspace excludes the initial tip at [0, 0, 0.29]"))
+      << message;
+}
+
+TEST(PlanReader, WorkspaceExcludingTheInitialTipIsNamed) {
+  const std::string message =
+      error_of(kPlan + "initial:\n  tip: {position: [0.6, 0, 0.1], rotation: [1, 0, 0, 0]}\n");
+  EXPECT_TRUE(
+      message.starts_with("plan.yaml:15: workspace excludes the initial tip at [0.6, 0, 0.1] "
+                          "(initial.tip)"))
+      << message;
+}
+
+TEST(PlanReader, TipSectionIsRejectedWithTheReason) {
+  const std::string message = error_of(kPlan + "tip:\n  position: [0.1, 0, 0.2]\n");
+  EXPECT_EQ(message,
+            "plan.yaml:21: tip: unknown key; a plan decides the tip pose itself: give the pose the "
+            "robot starts from as initial.tip, and what the grasp cannot transmit as "
+            "grasp.zero_wrench");
+}
+
+TEST(PlanReader, SolverSectionPointsToOptimizer) {
+  const std::string message = error_of(kPlan + "solver: {max_iterations: 3}\n");
+  EXPECT_TRUE(message.starts_with("plan.yaml:21: solver: unknown key; solver is the equilibrium"))
+      << message;
+  EXPECT_NE(message.find("optimizer"), std::string::npos) << message;
+}
+
+TEST(PlanReader, UnknownKeySuggestsTheAllowedOne) {
+  EXPECT_EQ(error_of(plan_with("steps: 3", "stesp: 3")),
+            "plan.yaml:20: trajectory.stesp: unknown key; did you mean 'steps'?");
+  EXPECT_EQ(error_of(plan_with("weights:", "wieghts:")),
+            "plan.yaml:12: wieghts: unknown key; did you mean 'weights'?");
+  EXPECT_EQ(error_of(kPlan + "optimiser: {max_iterations: 3}\n"),
+            "plan.yaml:21: optimiser: unknown key; did you mean 'optimizer'?");
+}
+
+TEST(PlanReader, WeightsUnderTargetSayWhereTheyBelong) {
+  const std::string message = error_of(plan_with("  points:\n", "  energy: 1\n  points:\n"));
+  EXPECT_EQ(message,
+            "plan.yaml:8: target.energy: unknown key; energy belongs in the top-level section "
+            "weights");
+}
+
+TEST(PlanReader, BadGraspAxisIsNamed) {
+  const std::string message = error_of(kPlan + "grasp: {zero_wrench: [mx, rx]}\n");
+  EXPECT_TRUE(message.starts_with("plan.yaml:21: grasp.zero_wrench[1] = rx is not"));
+}
+
+TEST(PlanReader, NonPositiveStrainLimitIsNamed) {
+  const std::string message = error_of(kPlan + "limits:\n  max_curvature: 0\n");
+  EXPECT_EQ(message, "plan.yaml:22: limits.max_curvature = 0 must be > 0");
+}
+
+TEST(PlanReader, NonPositiveSpeedIsNamed) {
+  const std::string message = error_of(plan_with("steps: 3", "steps: 3\n  max_linear_speed: 0"));
+  EXPECT_EQ(message, "plan.yaml:21: trajectory.max_linear_speed = 0 must be > 0");
+}
+
+TEST(PlanReader, NegativeOptimizerIterationsIsNamed) {
+  const std::string message = error_of(kPlan + "optimizer: {max_iterations: -1}\n");
+  EXPECT_EQ(message, "plan.yaml:21: optimizer.max_iterations = -1 must be >= 0");
+}
+
+TEST(PlanReader, InvertedWrenchBoundIsNamed) {
+  const std::string message = error_of(
+      kPlan + "wrench_bounds:\n  lower: {force: [0, 0, 1]}\n  upper: {force: [1, 1, 0]}\n");
+  EXPECT_EQ(message, "plan.yaml:21: wrench_bounds: lower.force[2] is above upper.force[2]");
+}
+
+TEST(PlanReader, EquilibriumTaskRejectsPlanSectionsWithTheReason) {
+  const std::string band =
+      "rod:\n  length: 0.29\n  stiffness: {EA: 1e3, GA: 1e3, EIx: 0.04, EIy: 0.04, GJ: 0.028}\n"
+      "tip:\n  position: [0.12, 0, 0.22]\ntarget:\n  points: [[0, 0, 0.1]]\n";
+  try {
+    parse_equilibrium_task(band, "eq.yaml");
+    FAIL() << "a target section was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "eq.yaml:6: target: unknown key; target is a section of plan tasks (rodshape plan), "
+              "not of equilibrium");
+  }
+}
+
+// ---- good input ---------------------------------------------------------------------------------
+
+TEST(PlanReader, SectionsReadIntoTheRequestAndOptions) {
+  const std::string text = kPlan +
+                           "  max_linear_speed: 0.05\n  max_angular_speed: 0.3\n"
+                           "  max_linear_acceleration: 0.2\n  max_angular_acceleration: 2\n"
+                           "  rate: 50\n  track: false\n  tracking_substeps: 4\n"
+                           "grasp:\n  zero_wrench: [mx, fy]\n"
+                           "  tip_to_end_effector: {position: [0, 0, 0.03]}\n"
+                           "initial:\n  tip: {position: [0.05, 0, 0.28]}\n"
+                           "limits: {max_curvature: 12, max_axial_strain: 0.05}\n"
+                           "wrench_bounds:\n  lower: {moment: [-1, -1, -1]}\n"
+                           "optimizer: {max_iterations: 40, tolerance: 1e-7, "
+                           "constraint_tolerance: 1e-8, multi_starts: 2}\n";
+  const PlanTask task = parse_plan_task(text, "plan.yaml");
+  const PlanRequest& request = task.request;
+  EXPECT_EQ(task.source, "plan.yaml");
+  EXPECT_EQ(request.rod.intervals, 50);
+  ASSERT_EQ(request.target.points.size(), 3u);
+  EXPECT_TRUE(CompareMatrices(request.target.points[1], Eigen::Vector3d(0.047, 0, 0.101), 0.0));
+  EXPECT_EQ(request.target.energy_weight, 0.001);
+  EXPECT_EQ(request.target.distance_weight, 1.0);
+  EXPECT_FALSE(request.target.squared_distances);
+  ASSERT_TRUE(request.workspace.box.has_value());
+  EXPECT_TRUE(CompareMatrices(request.workspace.box->lower, Eigen::Vector3d(-1, -1, 0.05), 0.0));
+  ASSERT_EQ(request.workspace.inside.size(), 1u);
+  EXPECT_EQ(request.workspace.inside[0].radius, 0.5);
+  const std::array<bool, 6> released{false, true, false, true, false, false};
+  EXPECT_EQ(request.grasp.zero_wrench, released);
+  EXPECT_TRUE(CompareMatrices(request.grasp.tip_to_end_effector.position,
+                              Eigen::Vector3d(0, 0, 0.03), 0.0));
+  ASSERT_TRUE(request.initial_tip.has_value());
+  EXPECT_TRUE(CompareMatrices(request.initial_tip->position, Eigen::Vector3d(0.05, 0, 0.28), 0.0));
+  EXPECT_EQ(request.limits.max_curvature, 12.0);
+  EXPECT_EQ(request.limits.max_axial_strain, 0.05);
+  EXPECT_EQ(request.wrench_bounds.lower(3), -1.0);
+  EXPECT_EQ(request.wrench_bounds.lower(0), -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(request.wrench_bounds.upper(5), std::numeric_limits<double>::infinity());
+
+  const PlanOptions& options = task.options;
+  EXPECT_EQ(options.steps, 3);
+  EXPECT_EQ(options.end_effector.max_linear_speed, 0.05);
+  EXPECT_EQ(options.end_effector.max_angular_speed, 0.3);
+  EXPECT_EQ(options.end_effector.max_linear_acceleration, 0.2);
+  EXPECT_EQ(options.end_effector.max_angular_acceleration, 2.0);
+  EXPECT_EQ(options.end_effector.sample_rate, 50.0);
+  EXPECT_FALSE(options.track_between_waypoints);
+  EXPECT_EQ(options.tracking_substeps, 4);
+  EXPECT_EQ(options.optimizer.max_iterations, 40);
+  EXPECT_EQ(options.optimizer.tolerance, 1e-7);
+  EXPECT_EQ(options.optimizer.constraint_tolerance, 1e-8);
+  EXPECT_EQ(options.optimizer.multi_starts, 2);
+}
+
+TEST(PlanReader, DefaultsApplyWhenLeftOut) {
+  const std::string text =
+      "rod:\n  length: 0.29\n  stiffness: {EA: 1e3, GA: 1e3, EIx: 0.04, EIy: 0.04, GJ: 0.028}\n"
+      "target:\n  points: [[0.01, 0, 0.1]]\n";
+  const PlanTask task = parse_plan_task(text, "plan.yaml");
+  const PlanOptions defaults;
+  EXPECT_EQ(task.request.target.energy_weight, 1e-3);  // the task file's default, not the library's
+  EXPECT_EQ(task.request.target.distance_weight, 1.0);
+  EXPECT_TRUE(task.request.workspace.unbounded());
+  EXPECT_FALSE(task.request.initial_tip.has_value());
+  EXPECT_FALSE(task.request.limits.max_curvature.has_value());
+  EXPECT_EQ(task.request.grasp.zero_wrench, (std::array<bool, 6>{}));
+  EXPECT_EQ(task.options.steps, defaults.steps);
+  EXPECT_EQ(task.options.optimizer.max_iterations, defaults.optimizer.max_iterations);
+  EXPECT_EQ(task.options.end_effector.max_linear_speed, defaults.end_effector.max_linear_speed);
+  EXPECT_EQ(task.options.track_between_waypoints, defaults.track_between_waypoints);
+}
+
+TEST(PlanReader, BundledPlanExamplesRead) {
+  const std::filesystem::path examples = std::filesystem::path(RODSHAPE_SOURCE_DIR) / "examples";
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("plan_") || entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(name);
+    const PlanTask task = read_plan_task(entry.path().string());
+    EXPECT_EQ(task.request.target.points.size(), 10u);
+    EXPECT_EQ(task.options.steps, 7);
+    ++count;
+  }
+  EXPECT_EQ(count, 6);
+}
+
+}  // namespace
+}  // namespace rodshape
