@@ -99,8 +99,11 @@ class PlanCommand final : public Command {
 
     const int completed = static_cast<int>(plan.steps.size());
     if (!quiet_) {
-      std::cout << task_path_ << ": " << to_string(plan.status) << " plan, " << completed << " of "
-                << task.options.steps << " steps";
+      std::cout << task_path_ << ": " << to_string(plan.status) << " plan, " << completed
+                << " steps (" << task.options.steps << " requested";
+      if (plan.tracking.refinements > 0)
+        std::cout << ", " << plan.tracking.refinements << " inserted where the rod would jump";
+      std::cout << ")";
       if (completed > 0) {
         const ShapeCostBreakdown& cost = plan.steps.back().solution.cost;
         std::cout << ", final max distance " << millimetres(cost.max_distance) << ", energy "

@@ -71,6 +71,8 @@ Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
   const ShapeCostBreakdown& cost = solution.cost;
   Json result;
   result["step"] = number;
+  result["fraction"] = json_number(step.fraction);
+  result["inserted"] = step.inserted;
   result["objective_points"] = json_vectors(step.objective_points);
   result["configuration"] = io_detail::configuration_json(
       solution.configuration, solution.base_wrench, solution.stability, model);
@@ -126,6 +128,7 @@ Json tracking_object(const TrackingReport& tracking) {
       {"max_deviation", json_number(tracking.max_deviation)},
       {"jump", tracking.jump},
       {"jump_step", tracking.jump_step >= 0 ? Json(tracking.jump_step + 1) : Json(nullptr)},
+      {"refinements", tracking.refinements},
       {"note", tracking.note},
   };
 }

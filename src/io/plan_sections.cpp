@@ -121,7 +121,7 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
 void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) {
   trajectory.expect_mapping(
       {"steps", "max_linear_speed", "max_angular_speed", "max_linear_acceleration",
-       "max_angular_acceleration", "rate", "track", "tracking_substeps"},
+       "max_angular_acceleration", "rate", "track", "tracking_substeps", "max_refinements"},
       {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
   read_integer(trajectory, "steps", options.steps);
   EndEffectorLimits& limits = options.end_effector;
@@ -133,6 +133,7 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
   if (const YamlField track = trajectory.get("track"); track.present())
     options.track_between_waypoints = track.boolean();
   read_integer(trajectory, "tracking_substeps", options.tracking_substeps);
+  read_integer(trajectory, "max_refinements", options.max_refinements);
 }
 
 void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options) {

@@ -259,7 +259,9 @@ std::string plan_svg(const ShapePlan& plan, const PlanTask& task) {
   // Title: what, and how it went.
   std::ostringstream title;
   title << "rodshape plan: " << task.source << " \u2014 " << to_string(plan.status) << ", " << n
-        << " of " << task.options.steps << " steps";
+        << " steps (" << task.options.steps << " requested";
+  if (plan.tracking.refinements > 0) title << ", " << plan.tracking.refinements << " inserted";
+  title << ")";
   if (n > 0) {
     const ShapeSolution& last = plan.steps.back().solution;
     title << "; final max distance " << millimetres(last.cost.max_distance) << ", energy "

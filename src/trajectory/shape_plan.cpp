@@ -1,6 +1,7 @@
 #include "rodshape/trajectory/shape_plan.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 
 #include "rodshape/core/rod_integrator.hpp"
@@ -13,6 +14,9 @@ namespace rodshape {
 
 void PlanOptions::validate() const {
   if (steps < 1) throw InputError("trajectory.steps = " + std::to_string(steps) + " must be >= 1");
+  if (max_refinements < 0)
+    throw InputError("trajectory.max_refinements = " + std::to_string(max_refinements) +
+                     " must be >= 0");
   if (tracking_substeps < 1)
     throw InputError("trajectory.tracking_substeps = " + std::to_string(tracking_substeps) +
                      " must be >= 1");
@@ -86,16 +90,93 @@ ShapeSolution optimise_step(const PlanRequest& request,
   ShapeProblem full(request.rod, target, request.workspace, request.grasp, request.limits,
                     request.wrench_bounds);
   if (solution.converged()) {
+    // The inequalities hold at the unconstrained optimum: it is a local optimum of the full
+    // problem too, with multipliers 0.
     full.evaluate(solution.base_wrench.to_vector());
     const Eigen::VectorXd& g = full.constraints();
     const double tolerance = options.constraint_tolerance;
-    const bool respected =  // the inequalities hold: their multipliers are 0 ((g -
-                            // full.constraint_upper()).array() <= tolerance).all() &&
-        ((full.constraint_lower() - g).array() <= tolerance).all();
-    if (respected)
-      return optimise_shape(full, solution.base_wrench, options);  // multipliers, stability
+    const bool below_upper = ((g - full.constraint_upper()).array() <= tolerance).all();
+    const bool above_lower = ((full.constraint_lower() - g).array() <= tolerance).all();
+    if (below_upper && above_lower) return solution;
   }
-  return optimise_shape(full, solution.converged() ? solution.base_wrench : start, options);
+  // Violated: the full problem, from the step's start (the warm start), and failing that from the
+  // unconstrained optimum.
+  ShapeSolution constrained = optimise_shape(full, start, options);
+  if (!constrained.converged() && solution.converged())
+    constrained = optimise_shape(full, solution.base_wrench, options);
+  return constrained;
+}
+
+}  // namespace
+
+namespace {
+
+/// The equilibrium followed from one waypoint to the next.
+struct SegmentTracking {
+  bool jump = false;
+  double deviation = 0.0;  // on arrival, from the planned shape
+  BaseWrench arrived;      // the tracked base wrench on arrival
+  std::string note;
+};
+
+/// Follows the equilibrium along the commanded end-effector path from `from` (with base wrench
+/// `w`) to `step`'s waypoint in options.tracking_substeps continuation steps, and compares it on
+/// arrival with the planned shape: farther than 1 mm, or unstable, is a jump.
+SegmentTracking track_segment(const PlanRequest& request,
+                              const PlanOptions& options,
+                              const Pose& from,
+                              BaseWrench w,
+                              const PlanStep& step,
+                              int waypoint) {
+  constexpr double kJumpDeviation = 1e-3;  // m
+  ShootingOptions shooting;
+  shooting.continuation = false;  // a failure here is what we want to see, not to repair
+  shooting.output_derivatives = Derivatives::None;
+  SegmentTracking segment;
+  for (int j = 1; j <= options.tracking_substeps; ++j) {
+    const double sigma = static_cast<double>(j) / options.tracking_substeps;
+    const Pose ee = interpolate(from, step.end_effector, sigma);
+    const Pose tip = remove_offset(ee, request.grasp.tip_to_end_effector);
+    const ShootingSolution tracked =
+        solve_equilibrium(request.rod, held_tip(tip, request.grasp), w, shooting);
+    if (!tracked.summary.converged()) {
+      segment.jump = true;
+      segment.deviation = std::numeric_limits<double>::infinity();
+      segment.note = "the equilibrium could not be followed towards waypoint " +
+                     std::to_string(waypoint) + " at " + std::to_string(sigma) + " of the way (" +
+                     tracked.summary.brief() + ")";
+      return segment;
+    }
+    w = tracked.base_wrench;
+  }
+  segment.arrived = w;
+  // On arrival the tracked rod should be the planned equilibrium; otherwise it jumped to another
+  // branch on the way (snap-through).
+  const RodConfiguration arrived = integrate(request.rod, w, Derivatives::AllNodes);
+  segment.deviation = node_deviation(arrived, step.solution.configuration);
+  const StabilityReport stability = assess_stability(request.rod, arrived);
+  if (segment.deviation > kJumpDeviation) {
+    segment.jump = true;
+    segment.note = "on arrival at waypoint " + std::to_string(waypoint) + " the tracked rod is " +
+                   std::to_string(segment.deviation) +
+                   " m from the planned shape: it jumped to another equilibrium";
+  } else if (!stability.stable && !stability.degenerate) {
+    segment.jump = true;
+    segment.note =
+        "the tracked equilibrium at waypoint " + std::to_string(waypoint) + " is unstable";
+  }
+  return segment;
+}
+
+void record(TrackingReport& report, const SegmentTracking& segment, int step_index) {
+  report.performed = true;
+  report.arrival_deviation.push_back(segment.deviation);
+  report.max_deviation = std::max(report.max_deviation, segment.deviation);
+  if (segment.jump && !report.jump) {
+    report.jump = true;
+    report.jump_step = step_index;
+    report.note = segment.note;
+  }
 }
 
 }  // namespace
@@ -105,50 +186,14 @@ TrackingReport track_plan(const PlanRequest& request,
                           const ShapePlan& plan) {
   TrackingReport report;
   report.performed = true;
-  constexpr double kJumpDeviation = 1e-3;  // m: arrival farther than this from the plan is a jump
-  ShootingOptions shooting;
-  shooting.continuation = false;  // a failure here is what we want to see, not to repair
-  shooting.output_derivatives = Derivatives::Tip;
-
   Pose from = compose(plan.initial_configuration.tip(), request.grasp.tip_to_end_effector);
   BaseWrench w = plan.initial_wrench;
   for (std::size_t k = 0; k < plan.steps.size() && !report.jump; ++k) {
-    const PlanStep& step = plan.steps[k];
-    ShootingSolution tracked;
-    for (int j = 1; j <= options.tracking_substeps; ++j) {
-      const double sigma = static_cast<double>(j) / options.tracking_substeps;
-      const Pose ee = interpolate(from, step.end_effector, sigma);
-      const Pose tip = remove_offset(ee, request.grasp.tip_to_end_effector);
-      tracked = solve_equilibrium(request.rod, held_tip(tip, request.grasp), w, shooting);
-      if (!tracked.summary.converged()) {
-        report.jump = true;
-        report.jump_step = static_cast<int>(k);
-        report.note = "the equilibrium could not be followed towards waypoint " +
-                      std::to_string(k + 1) + " at " + std::to_string(sigma) + " of the way (" +
-                      tracked.summary.brief() + ")";
-        break;
-      }
-      w = tracked.base_wrench;
-    }
-    if (report.jump) break;
-    // On arrival the tracked rod should be the planned equilibrium; otherwise it jumped to
-    // another branch on the way (snap-through).
-    const RodConfiguration arrived = integrate(request.rod, w, Derivatives::AllNodes);
-    const double deviation = node_deviation(arrived, step.solution.configuration);
-    report.arrival_deviation.push_back(deviation);
-    report.max_deviation = std::max(report.max_deviation, deviation);
-    const StabilityReport stability = assess_stability(request.rod, arrived);
-    if (deviation > kJumpDeviation || (!stability.stable && !stability.degenerate)) {
-      report.jump = true;
-      report.jump_step = static_cast<int>(k);
-      report.note =
-          deviation > kJumpDeviation
-              ? "on arrival at waypoint " + std::to_string(k + 1) + " the tracked rod is " +
-                    std::to_string(deviation) +
-                    " m from the planned shape: it jumped to another equilibrium"
-              : "the tracked equilibrium at waypoint " + std::to_string(k + 1) + " is unstable";
-    }
-    from = step.end_effector;
+    const SegmentTracking segment =
+        track_segment(request, options, from, w, plan.steps[k], static_cast<int>(k) + 1);
+    record(report, segment, static_cast<int>(k));
+    w = segment.arrived;
+    from = plan.steps[k].end_effector;
   }
   if (!report.jump) report.note = "the rod follows the plan";
   return report;
@@ -188,48 +233,96 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
     return plan;
   }
 
-  // 3. p_init on the initial shape, and the n_inter objective sets to p_obj.
+  // 3. p_init on the initial shape; the objective set of fraction f is p_init + f (p_obj - p_init),
+  //    f = i / n_inter for the n_inter steps (the last is p_obj itself).
   plan.initial_points =
       project_onto_initial_shape(plan.initial_configuration, request.target.points);
   const std::vector<PointSet> sets =
       intermediate_targets(plan.initial_points, request.target.points, options.steps);
+  const auto set_at = [&](double f) {
+    PointSet set(request.target.points.size());
+    for (std::size_t k = 0; k < set.size(); ++k)
+      set[k] = plan.initial_points[k] + f * (request.target.points[k] - plan.initial_points[k]);
+    return set;
+  };
+  struct Pending {
+    double fraction;
+    PointSet points;
+    bool inserted;
+  };
+  std::vector<Pending> pending;
+  for (int i = 0; i < options.steps; ++i)
+    pending.push_back({static_cast<double>(i + 1) / options.steps, sets[i], false});
 
   // 4. One optimal shape per set, each warm-started from the last (see optimise_step). From the
-  //    third step on, the
-  //    secant w_k + (w_k - w_{k-1}) is tried as well (the sets move on straight lines, so the
-  //    optima move smoothly) and the start of lower cost is kept.
+  //    third step on, the secant extrapolation of the last two optima is tried as well (the sets
+  //    move on straight lines, so the optima move smoothly) and the start of lower cost is kept.
+  //    Each new waypoint is tracked from the last; where the rod would jump, a step is inserted
+  //    halfway and the segment planned again.
   BaseWrench w = plan.initial_wrench, w_before = plan.initial_wrench;
+  double f_last = 0.0, f_before = 0.0;
+  Pose from = compose(plan.initial_configuration.tip(), request.grasp.tip_to_end_effector);
+  BaseWrench tracked_w = plan.initial_wrench;
+  bool tracking = options.track_between_waypoints;
   plan.status = PlanStatus::Complete;
-  for (int i = 0; i < options.steps; ++i) {
+  for (std::size_t next = 0; next < pending.size();) {
+    const Pending& set = pending[next];
     ShapeTarget target = request.target;
-    target.points = sets[i];
+    target.points = set.points;
     ShapeProblem problem(request.rod, target, Workspace{}, request.grasp, StrainLimits{},
                          request.wrench_bounds);
     BaseWrench start = w;
-    if (i >= 2) {
-      const Vector6d secant = 2.0 * w.to_vector() - w_before.to_vector();
+    if (plan.steps.size() >= 2) {
+      const double ratio = (set.fraction - f_last) / (f_last - f_before);
+      const Vector6d secant = w.to_vector() + ratio * (w.to_vector() - w_before.to_vector());
       problem.evaluate(w.to_vector());
       const double cost_at_last = problem.cost();
       problem.evaluate(secant);
-      if (problem.cost() < cost_at_last && problem.constraints().allFinite())
-        start = Wrench::from_vector(secant);
+      if (problem.cost() < cost_at_last) start = Wrench::from_vector(secant);
     }
     ShapeSolution solution = optimise_step(request, target, problem, start, options.optimizer);
+    const int number = static_cast<int>(plan.steps.size()) + 1;
     if (!solution.converged()) {
       plan.status = PlanStatus::Partial;
-      plan.failed_step = i;
-      plan.message = "step " + std::to_string(i + 1) + " of " + std::to_string(options.steps) +
-                     " failed: " + solution.message;
+      plan.failed_step = static_cast<int>(plan.steps.size());
+      plan.message = "step " + std::to_string(number) + " (fraction " +
+                     std::to_string(set.fraction) + " of the way) failed: " + solution.message;
       break;
     }
-    w_before = w;
-    w = solution.base_wrench;
     const Pose end_effector =
         compose(solution.configuration.tip(), request.grasp.tip_to_end_effector);
-    plan.steps.push_back({sets[i], std::move(solution), end_effector});
+    PlanStep step{set.fraction, set.inserted, set.points, std::move(solution), end_effector};
+    if (tracking) {
+      const SegmentTracking segment =
+          track_segment(request, options, from, tracked_w, step, number);
+      if (segment.jump && plan.tracking.refinements < options.max_refinements) {
+        // Plan the segment again through a set halfway (from the same last optimum).
+        const double half = 0.5 * (f_last + set.fraction);
+        pending.insert(pending.begin() + static_cast<std::ptrdiff_t>(next),
+                       {half, set_at(half), true});
+        ++plan.tracking.refinements;
+        continue;
+      }
+      record(plan.tracking, segment, static_cast<int>(plan.steps.size()));
+      if (segment.jump) tracking = false;  // past a jump, following the plan means nothing
+      tracked_w = segment.arrived;
+      from = end_effector;
+    }
+    w_before = w;
+    f_before = f_last;
+    w = step.solution.base_wrench;
+    f_last = set.fraction;
+    plan.steps.push_back(std::move(step));
+    ++next;
   }
   if (plan.status == PlanStatus::Complete)
-    plan.message = "complete: " + std::to_string(options.steps) + " steps";
+    plan.message = "complete: " + std::to_string(plan.steps.size()) + " steps";
+  if (plan.tracking.performed && !plan.tracking.jump)
+    plan.tracking.note = plan.tracking.refinements > 0
+                             ? "the rod follows the plan (" +
+                                   std::to_string(plan.tracking.refinements) +
+                                   " steps inserted where it would have jumped)"
+                             : "the rod follows the plan";
 
   // 5. The timed end-effector path through the waypoints.
   std::vector<Pose> waypoints{
@@ -237,9 +330,6 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   for (const PlanStep& step : plan.steps) waypoints.push_back(step.end_effector);
   plan.end_effector_path = time_parameterize(waypoints, options.end_effector);
 
-  // 6. Does the rod follow the plan between the waypoints?
-  if (options.track_between_waypoints && !plan.steps.empty())
-    plan.tracking = track_plan(request, options, plan);
   return plan;
 }
 

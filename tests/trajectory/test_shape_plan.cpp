@@ -8,6 +8,7 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
 
@@ -158,6 +159,44 @@ TEST(ShapePlan, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
   const TrackingReport stay = track_plan(b.request, options, one_step_plan(b.up, b.up));
   EXPECT_FALSE(stay.jump) << stay.note;
   EXPECT_LE(stay.max_deviation, 1e-6);
+}
+
+}  // namespace
+}  // namespace rodshape
+
+namespace rodshape {
+namespace {
+
+// The bundled lifted bend asks, on straight lines between the objective sets, for shapes the rod
+// cannot pass between continuously (plan.svg shows intermediate optima curling back). Refinement
+// inserts steps halfway where the tracked rod would jump: every inserted step lies strictly
+// between its neighbours, and the count respects max_refinements. (Here the jump persists: the
+// optima themselves change branch, which halving the step cannot cure; the plan says so.)
+TEST(ShapePlan, RefinementInsertsHalfwayStepsUpToTheLimit) {
+  PlanTask task =
+      read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_lifted_bend.yaml");
+  for (int limit : {0, 2}) {
+    task.options.max_refinements = limit;
+    const ShapePlan plan = plan_shape(task.request, task.options);
+    ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+    EXPECT_LE(plan.tracking.refinements, limit);
+    EXPECT_EQ(static_cast<int>(plan.steps.size()), task.options.steps + plan.tracking.refinements);
+    double previous = 0.0;
+    int inserted = 0;
+    for (const PlanStep& step : plan.steps) {
+      EXPECT_GT(step.fraction, previous);
+      previous = step.fraction;
+      inserted += step.inserted;
+    }
+    EXPECT_EQ(inserted, plan.tracking.refinements);
+    EXPECT_EQ(plan.steps.back().fraction, 1.0);
+    EXPECT_EQ(plan.steps.back().objective_points, task.request.target.points);
+    if (limit == 0) {
+      EXPECT_TRUE(plan.tracking.jump) << "the example was chosen because its rod jumps";
+    } else {
+      EXPECT_EQ(plan.tracking.refinements, limit);  // it still jumps, so every refinement is used
+    }
+  }
 }
 
 }  // namespace

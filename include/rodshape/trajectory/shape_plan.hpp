@@ -41,7 +41,10 @@ struct PlanOptions {
   EndEffectorLimits end_effector;
   bool track_between_waypoints = true;
   int tracking_substeps = 10;  // continuation steps from one waypoint to the next
-  /// Throws InputError naming "trajectory.steps" etc.
+  /// Where the tracked rod does not arrive on the planned shape (a jump), a step is inserted
+  /// halfway between the two objective sets and the segment re-planned, at most this many times.
+  int max_refinements = 4;
+  /// Throws InputError naming "trajectory.steps", "trajectory.max_refinements" etc.
   void validate() const;
 };
 
@@ -49,6 +52,8 @@ enum class PlanStatus { Complete, Partial, Infeasible };
 std::string to_string(PlanStatus status);
 
 struct PlanStep {
+  double fraction = 1.0;  // the objective set is p_init + fraction (p_obj - p_init)
+  bool inserted = false;  // a refinement step, inserted where the tracked rod jumped
   PointSet objective_points;
   ShapeSolution solution;  // the optimal shape of this step (configuration, cost, stability, IPOPT)
   Pose end_effector;       // world_T_tip · tip_T_ee
@@ -64,7 +69,8 @@ struct TrackingReport {
   /// A jump: the tracked equilibrium lost stability, the continuation failed, or the base wrench
   /// changed discontinuously (snap-through) between two substeps.
   bool jump = false;
-  int jump_step = -1;  // the waypoint being approached when it happened
+  int jump_step = -1;   // the waypoint being approached when it happened
+  int refinements = 0;  // steps inserted by plan_shape to avoid jumps
   std::string note;
 };
 
