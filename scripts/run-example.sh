@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the Debian packages rodshape needs, builds it (Release) into build/ and solves the bundled
-# example: the paper's rubber band, clamped at both ends (examples/rubber_band.yaml). The result is
-# written to out/rubber_band.json; a one-line summary is printed.
+# Installs the Debian packages rodshape needs, builds it (Release) into build/ and runs the bundled
+# examples of the paper's rubber band: its equilibrium clamped at both ends
+# (examples/rubber_band.yaml → out/rubber_band.json), then the main job, a plan that bends it into an
+# S in seven optimal steps (examples/plan_s_curve.yaml → out/plan_s_curve/: plan.json,
+# trajectory.csv, plan.svg). One summary line each.
 # Usage: bash scripts/run-example.sh       (as root, or with sudo available)
 # RODSHAPE_JOBS sets the number of parallel compile jobs (default 2).
 set -euo pipefail
@@ -30,4 +32,6 @@ print(f"rubber_band: status={r['status']} residual={residual} energy={energy} st
       f"(full result: {sys.argv[1]})")
 PY
 fi
-exit "$status"
+[ "$status" -eq 0 ] || exit "$status"
+
+build/rodshape plan examples/plan_s_curve.yaml -o out/plan_s_curve
