@@ -12,6 +12,8 @@
 #include "command.hpp"
 #include "equilibrium_command.hpp"
 #include "exit_code.hpp"
+#include "fk_command.hpp"
+#include "ik_command.hpp"
 #include "plan_command.hpp"
 #include "rodshape/error.hpp"
 
@@ -42,7 +44,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 2 bad input (task file, command line, output path; for plan also "
-      "an infeasible target), 3 solver did not converge or plan stopped at a failed step (the "
+      "an infeasible target), 3 solver did not converge, plan stopped at a failed step or ik found "
+      "no solution (the "
       "result is still written), 1 internal error.");
   app.failure_message([](const CLI::App*, const CLI::Error& error) {
     return "error: " + one_line(error.what()) + " (run 'rodshape --help')\n";
@@ -55,6 +58,8 @@ int main(int argc, char** argv) {
   };
   add(make_equilibrium_command());
   add(make_plan_command());
+  add(make_fk_command());
+  add(make_ik_command());
 
   try {
     app.parse(argc, argv);

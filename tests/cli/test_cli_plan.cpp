@@ -160,7 +160,8 @@ TEST_F(CliPlan, CompletePlanWritesPlanTrajectoryAndPicture) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err, "");
   expect_one_line(result.out);
-  EXPECT_EQ(result.out.rfind(task.string() + ": complete plan, 2 steps (2 requested)", 0), 0u) << result.out;
+  EXPECT_EQ(result.out.rfind(task.string() + ": complete plan, 2 steps (2 requested)", 0), 0u)
+      << result.out;
 
   // plan.json: every documented key.
   const Json j = Json::parse(read_file(outdir / "plan.json"));

@@ -1,0 +1,84 @@
+// fk_command.cpp: the tip link's pose at given joint positions, for users who check an arm model.
+//   URDF -> ArmModel (robot) -> forward_kinematics -> {"position": [x, y, z], "rotation": [w, x, y,
+//   z]}
+#include "fk_command.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "exit_code.hpp"
+#include "rodshape/robot/arm_model.hpp"
+
+namespace rodshape::cli {
+
+std::string json_number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char buffer[32];
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  if (error != std::errc()) return "null";
+  return std::string(buffer, end);
+}
+
+std::string json_numbers(const Eigen::VectorXd& values) {
+  std::string text = "[";
+  for (Eigen::Index i = 0; i < values.size(); ++i)
+    text += (i > 0 ? ", " : "") + json_number(values(i));
+  return text + "]";
+}
+
+namespace {
+
+class FkCommand final : public Command {
+ public:
+  CLI::App* add_to(CLI::App& app) override {
+    CLI::App* command = app.add_subcommand(
+        "fk",
+        "Forward kinematics: print the tip link's pose in the base link's frame as JSON "
+        "{\"position\": [x, y, z], \"rotation\": [w, x, y, z]} (m; unit quaternion, w >= 0). "
+        "The joint positions (rad or m) must lie within the URDF's limits. Docs: docs/robot.md.");
+    command->add_option("urdf", urdf_path_, "The arm's URDF file, e.g. data/robots/panda.urdf")
+        ->required()
+        ->type_name("URDF");
+    command->add_option("q", q_, "One position per moving joint of the chain, base to tip")
+        ->required()
+        ->type_name("Q");
+    add_chain_options(*command);
+    return command;
+  }
+
+  int run() override {
+    const ArmModel arm = ArmModel::from_urdf_file(urdf_path_, base_link_, tip_link_);
+    const Eigen::VectorXd q =
+        Eigen::Map<const Eigen::VectorXd>(q_.data(), static_cast<Eigen::Index>(q_.size()));
+    arm.check_joint_positions(q, "q");
+    const Pose base_T_tip = arm.forward_kinematics(q);
+    std::cout << "{\"position\": " << json_numbers(base_T_tip.position)
+              << ", \"rotation\": " << json_numbers(base_T_tip.quaternion_wxyz()) << "}\n"
+              << std::flush;
+    return kSuccess;
+  }
+
+ private:
+  void add_chain_options(CLI::App& command) {
+    command.add_option("--base", base_link_, "Base link of the chain (default: the URDF's root)")
+        ->type_name("LINK");
+    command
+        .add_option("--tip", tip_link_,
+                    "Tip link of the chain (default: the last link below the base)")
+        ->type_name("LINK");
+  }
+
+  std::string urdf_path_;
+  std::vector<double> q_;
+  std::string base_link_;
+  std::string tip_link_;
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_fk_command() { return std::make_unique<FkCommand>(); }
+
+}  // namespace rodshape::cli

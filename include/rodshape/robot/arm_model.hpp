@@ -1,0 +1,89 @@
+// arm_model.hpp: a serial arm, read from a URDF file: the chain of joints between a base link and a
+// tip link, its joint limits (position and velocity), forward kinematics and the tip's Jacobian.
+// The chain is held by Orocos KDL and the URDF is read by urdfdom; neither appears here (pimpl).
+//
+// Frames: world_T_tip is the tip link's pose in the base link's frame. The Jacobian maps joint
+// velocities to the tip's twist [v; ω], both in the base frame, v being the tip origin's velocity.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/pose.hpp"
+
+namespace rodshape {
+
+/// One moving joint of the chain. Continuous joints have infinite position limits; a joint whose
+/// URDF gives no velocity limit (continuous joints may omit it) has an infinite one.
+struct JointInfo {
+  std::string name;
+  bool prismatic = false;     // false: revolute or continuous (rad); true: prismatic (m)
+  double lower = 0.0;         // rad or m
+  double upper = 0.0;         // rad or m
+  double max_velocity = 0.0;  // rad/s or m/s
+};
+
+class ArmModel {
+ public:
+  /// Reads the URDF file at `path` and takes the chain from `base_link` to `tip_link`. An empty
+  /// `base_link` is the URDF's root link; an empty `tip_link` is the last link below the base (the
+  /// deepest leaf; when two leaves are equally deep the tip must be named). Throws InputError when
+  /// the file cannot be read or does not parse, a link is unknown, the tip is not below the base,
+  /// the chain holds a floating, planar or mimic joint, or a limit is malformed.
+  static ArmModel from_urdf_file(const std::string& path,
+                                 const std::string& base_link = "",
+                                 const std::string& tip_link = "");
+  /// As from_urdf_file, from the URDF text; `source` names it in messages.
+  static ArmModel from_urdf_string(const std::string& urdf,
+                                   const std::string& base_link = "",
+                                   const std::string& tip_link = "",
+                                   const std::string& source = "URDF");
+
+  ArmModel(const ArmModel&);
+  ArmModel(ArmModel&&) noexcept;
+  ArmModel& operator=(const ArmModel&);
+  ArmModel& operator=(ArmModel&&) noexcept;
+  ~ArmModel();
+
+  const std::string& robot_name() const;
+  const std::string& base_link() const;
+  const std::string& tip_link() const;
+
+  /// Number of moving joints n (fixed joints are folded into the chain's geometry).
+  int joints() const;
+  const std::vector<JointInfo>& joint_info() const;
+  std::vector<std::string> joint_names() const;
+  Eigen::VectorXd lower_limits() const;
+  Eigen::VectorXd upper_limits() const;
+  Eigen::VectorXd velocity_limits() const;
+
+  /// Throws InputError unless `q` has n finite entries within the position limits (a margin of
+  /// `tolerance` is allowed). `what` names the vector in the message, e.g. "q" or "--seed".
+  void check_joint_positions(const Eigen::VectorXd& q,
+                             const std::string& what = "q",
+                             double tolerance = 1e-12) const;
+  /// q with every entry clamped to its joint's position limits.
+  Eigen::VectorXd clamp_to_limits(const Eigen::VectorXd& q) const;
+
+  /// base_T_tip at joint positions `q` (n finite entries, else InputError; limits are not checked,
+  /// see check_joint_positions).
+  Pose forward_kinematics(const Eigen::VectorXd& q) const;
+  /// base_T_tip and the 6×n Jacobian J_twist_q (rows: v then ω, base frame) at `q`.
+  void forward_kinematics(const Eigen::VectorXd& q,
+                          Pose& base_T_tip,
+                          Eigen::Matrix<double, 6, Eigen::Dynamic>& J_twist_q) const;
+
+  /// An upper bound of the distance from the base frame's origin to the tip's origin over all
+  /// joint positions (the sum of the chain's offsets and prismatic strokes).
+  double reach() const;
+
+ private:
+  struct Impl;
+  explicit ArmModel(std::shared_ptr<const Impl> impl);
+  void check_size(const Eigen::VectorXd& q, const std::string& what) const;
+  std::shared_ptr<const Impl> impl_;  // immutable, so copies share it
+};
+
+}  // namespace rodshape

@@ -1,0 +1,58 @@
+// inverse_kinematics.hpp: joint positions that put an arm's tip at a pose, within the joint limits.
+//
+// Damped least squares (Levenberg–Marquardt) on the pose error, started from a seed (the previous
+// waypoint, so that a trajectory stays on one branch). One iteration at q:
+//   e = [p* - p(q); log(R* R(q)ᵀ)]                        (base frame; m and rad)
+//   Δq = J_Aᵀ (J_A J_Aᵀ + μ I)⁻¹ e + N (-k ∇H(q))          J_A: J with blocked joints' columns
+//   zeroed q ← clamp(q + Δq, lower, upper)                        accepted only if |e| decreases
+// μ shrinks ×10 after an accepted step (down to 1e-12, so the end is Gauss–Newton and converges
+// quadratically) and grows ×10 after a rejected one. A joint is blocked while it sits on a limit
+// and the step would push it further. For a redundant arm (n > 6) the null-space term
+// N = I - J_A⁺ J_A moves the arm away from its limits without moving the tip:
+//   H(q) = ½ Σ ((q_i - mid_i) / range_i)²,  mid and range from each joint's limits.
+// When the seed's solve stalls, the solve restarts from seeds drawn (deterministically) within the
+// limits; IkResult::restarts says so, since such a solution may lie on another branch.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+
+#include "rodshape/core/pose.hpp"
+#include "rodshape/robot/arm_model.hpp"
+#include "rodshape/solvers/solve_status.hpp"
+
+namespace rodshape {
+
+struct IkOptions {
+  double position_tolerance = 1e-10;  // converged when |p* - p| ≤ this (m) ...
+  double rotation_tolerance = 1e-10;  // ... and the angle of R* Rᵀ ≤ this (rad)
+  int max_iterations = 200;           // per attempt (the seed and each restart)
+  int max_restarts = 20;              // random seeds tried after the seed's solve stalls; 0: none
+  double limit_avoidance_gain = 0.1;  // k above; 0 turns the null-space motion off
+  unsigned random_seed = 1;           // for the restart seeds
+  /// Throws InputError naming "ik.position_tolerance" etc.
+  void validate() const;
+};
+
+struct IkResult {
+  SolveStatus status = SolveStatus::NotRun;  // Converged, or Singular ("out of reach: ..."), or
+                                             // IterationLimit
+  std::string message;                       // empty when converged
+  Eigen::VectorXd q;                         // best joint positions found (within limits)
+  int iterations = 0;                        // over all attempts
+  int restarts = 0;                          // attempts after the first one
+  double position_error = 0.0;               // |p* - p(q)|, m
+  double rotation_error = 0.0;               // angle of R* R(q)ᵀ, rad
+  bool converged() const { return status == SolveStatus::Converged; }
+};
+
+/// Joint positions with forward_kinematics(q) = `target` (to the tolerances), starting from `seed`.
+/// Throws InputError when `seed` has the wrong size, is not finite or lies outside the limits, when
+/// `target` is not finite or its rotation is not a rotation, or when `options` are invalid. A
+/// target the arm cannot reach is a status: Singular with a message "out of reach: ...".
+IkResult solve_ik(const ArmModel& arm,
+                  const Pose& target,
+                  const Eigen::VectorXd& seed,
+                  const IkOptions& options = {});
+
+}  // namespace rodshape

@@ -1,0 +1,380 @@
+// arm_model.cpp: URDF (urdfdom) -> KDL::Chain between two links, with the joint limits.
+//
+// Each URDF joint becomes one KDL segment named after its child link, as kdl_parser builds them:
+// the segment's frame at q is F_parent_joint · Rot(axis, q) (or · Trans(axis · q)), with
+// F_parent_joint the joint's <origin>. Fixed joints are segments with a KDL::Joint::Fixed joint.
+#include "rodshape/robot/arm_model.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_model/model.h>
+#include <urdf_parser/urdf_parser.h>
+#include <kdl/chain.hpp>
+#include <kdl/chainfksolverpos_recursive.hpp>
+#include <kdl/chainjnttojacsolver.hpp>
+#include <kdl/frames.hpp>
+#include <kdl/jacobian.hpp>
+#include <kdl/jntarray.hpp>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <utility>
+
+#include "rodshape/error.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+struct ArmModel::Impl {
+  std::string robot_name;
+  std::string base_link;
+  std::string tip_link;
+  KDL::Chain chain;
+  std::vector<JointInfo> joints;
+  double reach = 0.0;
+};
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+std::string quoted(const std::string& name) { return "'" + name + "'"; }
+
+/// Collects what urdfdom reports through console_bridge while it parses (instead of printing it),
+/// so that the InputError can say why the URDF did not parse.
+class CapturingHandler final : public console_bridge::OutputHandler {
+ public:
+  void log(const std::string& text,
+           console_bridge::LogLevel level,
+           const char* /*filename*/,
+           int /*line*/) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR) {
+      if (!errors.empty()) errors += "; ";
+      errors += text;
+    }
+  }
+  std::string errors;
+};
+
+urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& urdf, const std::string& source) {
+  // console_bridge's handler is process-wide; parse one URDF at a time.
+  static std::mutex mutex;
+  const std::lock_guard<std::mutex> lock(mutex);
+  CapturingHandler handler;
+  console_bridge::useOutputHandler(&handler);
+  urdf::ModelInterfaceSharedPtr model;
+  try {
+    model = urdf::parseURDF(urdf);
+  } catch (const std::exception& error) {
+    handler.errors += (handler.errors.empty() ? "" : "; ") + std::string(error.what());
+  }
+  console_bridge::restorePreviousOutputHandler();
+  if (!model) {
+    std::string why = handler.errors.empty() ? "not a valid URDF robot" : handler.errors;
+    if (why.find("No root link") != std::string::npos) why += " (the joints form a closed loop)";
+    throw InputError(source + ": the URDF does not parse: " + why);
+  }
+  return model;
+}
+
+KDL::Vector to_kdl(const urdf::Vector3& v) { return KDL::Vector(v.x, v.y, v.z); }
+
+KDL::Frame to_kdl(const urdf::Pose& pose) {
+  double x = 0.0, y = 0.0, z = 0.0, w = 1.0;
+  pose.rotation.getQuaternion(x, y, z, w);
+  return KDL::Frame(KDL::Rotation::Quaternion(x, y, z, w), to_kdl(pose.position));
+}
+
+std::vector<std::string> link_names(const urdf::ModelInterface& model) {
+  std::vector<std::string> names;
+  for (const auto& [name, link] : model.links_) names.push_back(name);
+  return names;
+}
+
+urdf::LinkConstSharedPtr find_link(const urdf::ModelInterface& model,
+                                   const std::string& name,
+                                   const std::string& role,
+                                   const std::string& source) {
+  urdf::LinkConstSharedPtr link = model.getLink(name);
+  if (link) return link;
+  std::string known;
+  for (const std::string& candidate : link_names(model))
+    known += (known.empty() ? "" : ", ") + candidate;
+  throw InputError(source + ": unknown " + role + " link " + quoted(name) + " in robot " +
+                   quoted(model.getName()) + " (links: " + known + ")");
+}
+
+/// A link that is the child of two joints closes a loop; urdfdom keeps only one of the two.
+void reject_closed_loops(const urdf::ModelInterface& model, const std::string& source) {
+  std::map<std::string, std::string> parent_joint_of;
+  for (const auto& [name, joint] : model.joints_) {
+    const auto [it, inserted] = parent_joint_of.emplace(joint->child_link_name, name);
+    if (!inserted) {
+      throw InputError(source + ": the joints form a closed loop: link " +
+                       quoted(joint->child_link_name) + " is the child of both " +
+                       quoted(it->second) + " and " + quoted(name) +
+                       "; a serial chain needs a tree");
+    }
+  }
+}
+
+/// The deepest leaf below `base`; throws when two leaves are equally deep (the tip is ambiguous).
+std::string default_tip(const urdf::LinkConstSharedPtr& base, const std::string& source) {
+  std::vector<std::string> deepest;
+  int deepest_depth = -1;
+  std::vector<std::pair<urdf::LinkConstSharedPtr, int>> stack{{base, 0}};
+  while (!stack.empty()) {
+    const auto [link, depth] = stack.back();
+    stack.pop_back();
+    if (link->child_links.empty()) {
+      if (depth > deepest_depth) {
+        deepest_depth = depth;
+        deepest.clear();
+      }
+      if (depth == deepest_depth) deepest.push_back(link->name);
+    }
+    for (const auto& child : link->child_links) stack.emplace_back(child, depth + 1);
+  }
+  if (deepest.size() > 1) {
+    std::sort(deepest.begin(), deepest.end());
+    std::string names;
+    for (const std::string& name : deepest) names += (names.empty() ? "" : ", ") + name;
+    throw InputError(source + ": the chain below " + quoted(base->name) +
+                     " branches into equally long chains ending at " + names +
+                     "; name the tip link (--tip)");
+  }
+  return deepest.front();
+}
+
+JointInfo read_joint_info(const urdf::Joint& joint, const std::string& source) {
+  const std::string where = source + ": joint " + quoted(joint.name);
+  JointInfo info;
+  info.name = joint.name;
+  info.prismatic = joint.type == urdf::Joint::PRISMATIC;
+  if (joint.type == urdf::Joint::CONTINUOUS) {
+    info.lower = -kInfinity;
+    info.upper = kInfinity;
+    info.max_velocity =
+        joint.limits && joint.limits->velocity > 0.0 ? joint.limits->velocity : kInfinity;
+    return info;
+  }
+  if (!joint.limits) throw InputError(where + " has no <limit>");
+  info.lower = joint.limits->lower;
+  info.upper = joint.limits->upper;
+  info.max_velocity = joint.limits->velocity;
+  if (!std::isfinite(info.lower) || !std::isfinite(info.upper) || !(info.lower <= info.upper)) {
+    throw InputError(where + ": limit lower = " + detail::format_value(info.lower) +
+                     " and upper = " + detail::format_value(info.upper) +
+                     " must be finite with lower <= upper");
+  }
+  if (!(info.max_velocity > 0.0)) {
+    throw InputError(where + ": limit velocity = " + detail::format_value(info.max_velocity) +
+                     " must be > 0");
+  }
+  return info;
+}
+
+/// The KDL segment of one URDF joint (named after its child link), and whether it moves.
+KDL::Segment segment_of(const urdf::Joint& joint, const std::string& source) {
+  const std::string where = source + ": joint " + quoted(joint.name);
+  const KDL::Frame parent_T_joint = to_kdl(joint.parent_to_joint_origin_transform);
+  switch (joint.type) {
+    case urdf::Joint::FIXED:
+      return KDL::Segment(joint.child_link_name, KDL::Joint(joint.name, KDL::Joint::Fixed),
+                          parent_T_joint);
+    case urdf::Joint::REVOLUTE:
+    case urdf::Joint::CONTINUOUS:
+    case urdf::Joint::PRISMATIC: {
+      if (joint.mimic)
+        throw InputError(where + " mimics another joint; mimic joints are not supported");
+      KDL::Vector axis = to_kdl(joint.axis);
+      const double norm = axis.Norm();
+      if (!(norm > 1e-12) || !std::isfinite(norm))
+        throw InputError(where + " has a zero or non-finite <axis>");
+      axis = axis / norm;
+      const KDL::Joint::JointType type =
+          joint.type == urdf::Joint::PRISMATIC ? KDL::Joint::TransAxis : KDL::Joint::RotAxis;
+      return KDL::Segment(joint.child_link_name,
+                          KDL::Joint(joint.name, parent_T_joint.p, parent_T_joint.M * axis, type),
+                          parent_T_joint);
+    }
+    case urdf::Joint::FLOATING:
+      throw InputError(where +
+                       " is floating; a serial chain needs revolute, continuous, "
+                       "prismatic or fixed joints");
+    case urdf::Joint::PLANAR:
+      throw InputError(where +
+                       " is planar; a serial chain needs revolute, continuous, "
+                       "prismatic or fixed joints");
+    default:
+      throw InputError(where + " has an unknown type");
+  }
+}
+
+Pose to_pose(const KDL::Frame& frame) {
+  Pose pose;
+  pose.position = Eigen::Vector3d(frame.p.x(), frame.p.y(), frame.p.z());
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) pose.rotation(r, c) = frame.M(r, c);
+  return pose;
+}
+
+KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
+  KDL::JntArray array(static_cast<unsigned>(q.size()));
+  array.data = q;
+  return array;
+}
+
+}  // namespace
+
+ArmModel ArmModel::from_urdf_file(const std::string& path,
+                                  const std::string& base_link,
+                                  const std::string& tip_link) {
+  std::ifstream file(path);
+  if (!file) throw InputError(path + ": cannot read the URDF file");
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw InputError(path + ": cannot read the URDF file");
+  return from_urdf_string(text.str(), base_link, tip_link, path);
+}
+
+ArmModel ArmModel::from_urdf_string(const std::string& urdf,
+                                    const std::string& base_link,
+                                    const std::string& tip_link,
+                                    const std::string& source) {
+  const urdf::ModelInterfaceSharedPtr model = parse_urdf(urdf, source);
+  reject_closed_loops(*model, source);
+
+  const urdf::LinkConstSharedPtr base =
+      base_link.empty() ? model->getRoot() : find_link(*model, base_link, "base", source);
+  const std::string tip_name = tip_link.empty() ? default_tip(base, source) : tip_link;
+  const urdf::LinkConstSharedPtr tip = find_link(*model, tip_name, "tip", source);
+
+  // Walk up from the tip to the base, collecting the joints on the way.
+  std::vector<urdf::JointConstSharedPtr> path;
+  std::set<std::string> visited;
+  for (urdf::LinkConstSharedPtr link = tip; link->name != base->name; link = link->getParent()) {
+    if (!visited.insert(link->name).second || !link->parent_joint || !link->getParent()) {
+      throw InputError(source + ": tip link " + quoted(tip->name) + " is not below base link " +
+                       quoted(base->name) + " in robot " + quoted(model->getName()));
+    }
+    path.push_back(link->parent_joint);
+  }
+  std::reverse(path.begin(), path.end());
+
+  auto impl = std::make_shared<Impl>();
+  impl->robot_name = model->getName();
+  impl->base_link = base->name;
+  impl->tip_link = tip->name;
+  for (const urdf::JointConstSharedPtr& joint : path) {
+    const KDL::Segment segment = segment_of(*joint, source);
+    impl->reach += segment.getFrameToTip().p.Norm();
+    if (segment.getJoint().getType() != KDL::Joint::Fixed) {
+      impl->joints.push_back(read_joint_info(*joint, source));
+      const JointInfo& info = impl->joints.back();
+      if (info.prismatic) impl->reach += std::max(std::abs(info.lower), std::abs(info.upper));
+    }
+    impl->chain.addSegment(segment);
+  }
+  if (impl->joints.empty()) {
+    throw InputError(source + ": the chain from " + quoted(base->name) + " to " +
+                     quoted(tip->name) + " has no moving joint");
+  }
+  return ArmModel(std::move(impl));
+}
+
+ArmModel::ArmModel(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+ArmModel::ArmModel(const ArmModel&) = default;
+ArmModel::ArmModel(ArmModel&&) noexcept = default;
+ArmModel& ArmModel::operator=(const ArmModel&) = default;
+ArmModel& ArmModel::operator=(ArmModel&&) noexcept = default;
+ArmModel::~ArmModel() = default;
+
+const std::string& ArmModel::robot_name() const { return impl_->robot_name; }
+const std::string& ArmModel::base_link() const { return impl_->base_link; }
+const std::string& ArmModel::tip_link() const { return impl_->tip_link; }
+int ArmModel::joints() const { return static_cast<int>(impl_->joints.size()); }
+const std::vector<JointInfo>& ArmModel::joint_info() const { return impl_->joints; }
+double ArmModel::reach() const { return impl_->reach; }
+
+std::vector<std::string> ArmModel::joint_names() const {
+  std::vector<std::string> names;
+  for (const JointInfo& joint : impl_->joints) names.push_back(joint.name);
+  return names;
+}
+
+Eigen::VectorXd ArmModel::lower_limits() const {
+  Eigen::VectorXd values(joints());
+  for (int i = 0; i < joints(); ++i) values(i) = impl_->joints[i].lower;
+  return values;
+}
+
+Eigen::VectorXd ArmModel::upper_limits() const {
+  Eigen::VectorXd values(joints());
+  for (int i = 0; i < joints(); ++i) values(i) = impl_->joints[i].upper;
+  return values;
+}
+
+Eigen::VectorXd ArmModel::velocity_limits() const {
+  Eigen::VectorXd values(joints());
+  for (int i = 0; i < joints(); ++i) values(i) = impl_->joints[i].max_velocity;
+  return values;
+}
+
+void ArmModel::check_size(const Eigen::VectorXd& q, const std::string& what) const {
+  if (q.size() != joints()) {
+    throw InputError(what + " has " + std::to_string(q.size()) + " values but the chain from " +
+                     quoted(base_link()) + " to " + quoted(tip_link()) + " has " +
+                     std::to_string(joints()) + " joints");
+  }
+  detail::require_finite(what, q);
+}
+
+void ArmModel::check_joint_positions(const Eigen::VectorXd& q,
+                                     const std::string& what,
+                                     double tolerance) const {
+  check_size(q, what);
+  for (int i = 0; i < joints(); ++i) {
+    const JointInfo& joint = impl_->joints[i];
+    if (q(i) < joint.lower - tolerance || q(i) > joint.upper + tolerance) {
+      throw InputError(what + "[" + std::to_string(i) + "] = " + detail::format_value(q(i)) +
+                       " is outside the limits of joint " + quoted(joint.name) + ": [" +
+                       detail::format_value(joint.lower) + ", " +
+                       detail::format_value(joint.upper) + "]");
+    }
+  }
+}
+
+Eigen::VectorXd ArmModel::clamp_to_limits(const Eigen::VectorXd& q) const {
+  assert(q.size() == joints());
+  return q.cwiseMax(lower_limits()).cwiseMin(upper_limits());
+}
+
+Pose ArmModel::forward_kinematics(const Eigen::VectorXd& q) const {
+  check_size(q, "q");
+  KDL::ChainFkSolverPos_recursive solver(impl_->chain);
+  KDL::Frame base_T_tip;
+  const int code = solver.JntToCart(to_kdl(q), base_T_tip);
+  if (code < 0) throw RodshapeError("KDL forward kinematics failed: " + std::to_string(code));
+  return to_pose(base_T_tip);
+}
+
+void ArmModel::forward_kinematics(const Eigen::VectorXd& q,
+                                  Pose& base_T_tip,
+                                  Eigen::Matrix<double, 6, Eigen::Dynamic>& J_twist_q) const {
+  base_T_tip = forward_kinematics(q);
+  KDL::ChainJntToJacSolver solver(impl_->chain);
+  KDL::Jacobian jacobian(static_cast<unsigned>(joints()));
+  const int code = solver.JntToJac(to_kdl(q), jacobian);
+  if (code < 0) throw RodshapeError("KDL Jacobian failed: " + std::to_string(code));
+  // KDL's Jacobian: rows vx vy vz ωx ωy ωz, base frame, reference point the chain's tip.
+  J_twist_q = jacobian.data;
+}
+
+}  // namespace rodshape
