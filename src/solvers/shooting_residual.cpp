@@ -1,17 +1,13 @@
 #include "rodshape/solvers/shooting_residual.hpp"
 
+#include "overloaded.hpp"
 #include "rodshape/core/so3.hpp"
 
 namespace rodshape {
 
 namespace {
 
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
+using detail::Overloaded;
 
 /// Residual and (optionally) Jacobian of a held tip; `released` axes use the tip wrench instead.
 void held_tip_residual(const Pose& target,

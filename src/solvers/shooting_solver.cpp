@@ -12,6 +12,8 @@
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "validation.hpp"
 
+#include "overloaded.hpp"
+
 namespace rodshape {
 
 void ShootingOptions::validate() const {
@@ -37,12 +39,7 @@ std::string ShootingSummary::brief() const {
 
 namespace {
 
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
+using detail::Overloaded;
 
 void validate_pose(const Pose& pose, const std::string& field) {
   detail::require_finite(field + ".position", pose.position);

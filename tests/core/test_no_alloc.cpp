@@ -1,16 +1,11 @@
 // test_no_alloc.cpp: integrate() into an already-sized configuration allocates nothing.
 //
-// Two checks:
-//  1. Global operator new/new[] replaced by counting versions: catches std::vector growth,
-//     std::string and any `new` in the library (the replacement is program-wide).
-//  2. On glibc, malloc/calloc/realloc/posix_memalign/aligned_alloc replaced by counting versions
-//     that forward to glibc's own allocator (__libc_*): catches Eigen's dynamic-size allocations in
-//     the library, which go through std::malloc, not operator new, so check 1 misses them. Skipped
-//     under sanitizers, which interpose malloc themselves.
-// Also: the data() pointers of every vector in the configuration are unchanged across the call.
+// The counters (operator new everywhere; malloc & co. on glibc without sanitizers) are
+// tests/support/allocation_counter.hpp, which explains them. Also checked: the data() pointers of
+// every vector in the configuration are unchanged across the call.
 // (EIGEN_RUNTIME_NO_MALLOC is not used: it only checks Eigen code compiled in a TU that defines it,
 // and with the other test TUs linked in, the linker may keep their unchecked copies of Eigen's
-// inline allocation functions — it does at -O0. Check 2 sees every allocation whatever the TU.)
+// inline allocation functions — it does at -O0. The malloc counter sees every allocation.)
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 
@@ -22,111 +17,7 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
-
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_new_calls{0};
-std::atomic<long> g_malloc_calls{0};
-
-void* counted_new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_new_calls.fetch_add(1, std::memory_order_relaxed);
-  if (size == 0) size = 1;
-  if (void* p = std::malloc(size)) return p;
-  throw std::bad_alloc();
-}
-
-void* counted_new_aligned(std::size_t size, std::align_val_t alignment) {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_new_calls.fetch_add(1, std::memory_order_relaxed);
-  const std::size_t a = static_cast<std::size_t>(alignment);
-  const std::size_t rounded = ((size == 0 ? 1 : size) + a - 1) / a * a;
-  if (void* p = std::aligned_alloc(a, rounded)) return p;
-  throw std::bad_alloc();
-}
-
-}  // namespace
-
-// ---- 2. operator new ----------------------------------------------------------------------------
-void* operator new(std::size_t size) { return counted_new(size); }
-void* operator new[](std::size_t size) { return counted_new(size); }
-void* operator new(std::size_t size, std::align_val_t a) { return counted_new_aligned(size, a); }
-void* operator new[](std::size_t size, std::align_val_t a) { return counted_new_aligned(size, a); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return counted_new(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return counted_new(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-
-// ---- 3. malloc (glibc, no sanitizers)
-// ------------------------------------------------------------
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || \
-    __has_feature(thread_sanitizer)
-#define RODSHAPE_TEST_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define RODSHAPE_TEST_SANITIZED 1
-#endif
-
-#if defined(__GLIBC__) && !defined(RODSHAPE_TEST_SANITIZED)
-#define RODSHAPE_COUNT_MALLOC 1
-extern "C" {
-// glibc's allocator under its exported internal names: replacing malloc by forwarding to these is
-// the interposition glibc documents ("Replacing malloc"); free stays glibc's.
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* p, std::size_t size);
-void* __libc_memalign(std::size_t alignment, std::size_t size);
-
-static void count_malloc() {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_malloc_calls.fetch_add(1, std::memory_order_relaxed);
-}
-void* malloc(std::size_t size) noexcept {
-  count_malloc();
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_realloc(p, size);
-}
-int posix_memalign(void** out, std::size_t alignment, std::size_t size) noexcept {
-  count_malloc();
-  void* p = __libc_memalign(alignment, size);
-  if (p == nullptr) return 12;  // ENOMEM
-  *out = p;
-  return 0;
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_memalign(alignment, size);
-}
-}
-#endif
+#include "support/allocation_counter.hpp"
 
 namespace rodshape {
 namespace {
@@ -152,16 +43,7 @@ struct DataPointers {
                  c.dtheta_dw.data(), c.dn_dw.data(), c.dm_dw.data()} {}
 };
 
-/// Runs `call` with every counter armed; returns (operator new calls, malloc calls).
-template <typename Call>
-std::pair<long, long> count_allocations(Call&& call) {
-  g_new_calls = 0;
-  g_malloc_calls = 0;
-  g_counting = true;
-  call();
-  g_counting = false;
-  return {g_new_calls.load(), g_malloc_calls.load()};
-}
+using testing::count_allocations;
 
 TEST(NoAlloc, CountersSeeAnAllocation) {
   // The counters work (else the test below proves nothing): a vector growing inside the window is

@@ -1,10 +1,8 @@
 // test_shape_problem_no_alloc.cpp: ShapeProblem::evaluate() allocates nothing after construction
 // (the first call included), with every kind of constraint row and cost term active.
 //
-// The counting machinery is that of tests/core/test_no_alloc.cpp (which explains it): the global
-// operator new/new[] replaced by counting versions, and on glibc without sanitizers malloc & co.
-// replaced by counting versions that forward to glibc. Both replacements are program-wide: this
-// executable (rodshape_tests_optimisation) must hold no other.
+// The counting machinery is tests/support/allocation_counter.hpp (program-wide replacements: this
+// executable, rodshape_tests_optimisation, must hold no other).
 #include <gtest/gtest.h>
 #include <Eigen/Core>
 
@@ -17,111 +15,7 @@
 
 #include "rodshape/core/so3.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
-
-namespace {
-
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_new_calls{0};
-std::atomic<long> g_malloc_calls{0};
-
-void* counted_new(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_new_calls.fetch_add(1, std::memory_order_relaxed);
-  if (size == 0) size = 1;
-  if (void* p = std::malloc(size)) return p;
-  throw std::bad_alloc();
-}
-
-void* counted_new_aligned(std::size_t size, std::align_val_t alignment) {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_new_calls.fetch_add(1, std::memory_order_relaxed);
-  const std::size_t a = static_cast<std::size_t>(alignment);
-  const std::size_t rounded = ((size == 0 ? 1 : size) + a - 1) / a * a;
-  if (void* p = std::aligned_alloc(a, rounded)) return p;
-  throw std::bad_alloc();
-}
-
-}  // namespace
-
-// ---- 2. operator new ----------------------------------------------------------------------------
-void* operator new(std::size_t size) { return counted_new(size); }
-void* operator new[](std::size_t size) { return counted_new(size); }
-void* operator new(std::size_t size, std::align_val_t a) { return counted_new_aligned(size, a); }
-void* operator new[](std::size_t size, std::align_val_t a) { return counted_new_aligned(size, a); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return counted_new(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return counted_new(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
-
-// ---- 3. malloc (glibc, no sanitizers)
-// ------------------------------------------------------------
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || \
-    __has_feature(thread_sanitizer)
-#define RODSHAPE_TEST_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define RODSHAPE_TEST_SANITIZED 1
-#endif
-
-#if defined(__GLIBC__) && !defined(RODSHAPE_TEST_SANITIZED)
-#define RODSHAPE_COUNT_MALLOC 1
-extern "C" {
-// glibc's allocator under its exported internal names: replacing malloc by forwarding to these is
-// the interposition glibc documents ("Replacing malloc"); free stays glibc's.
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* p, std::size_t size);
-void* __libc_memalign(std::size_t alignment, std::size_t size);
-
-static void count_malloc() {
-  if (g_counting.load(std::memory_order_relaxed))
-    g_malloc_calls.fetch_add(1, std::memory_order_relaxed);
-}
-void* malloc(std::size_t size) noexcept {
-  count_malloc();
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_calloc(count, size);
-}
-void* realloc(void* p, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_realloc(p, size);
-}
-int posix_memalign(void** out, std::size_t alignment, std::size_t size) noexcept {
-  count_malloc();
-  void* p = __libc_memalign(alignment, size);
-  if (p == nullptr) return 12;  // ENOMEM
-  *out = p;
-  return 0;
-}
-void* aligned_alloc(std::size_t alignment, std::size_t size) noexcept {
-  count_malloc();
-  return __libc_memalign(alignment, size);
-}
-}
-#endif
+#include "support/allocation_counter.hpp"
 
 namespace rodshape {
 namespace {
@@ -153,16 +47,7 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   return ShapeProblem(rod, target, ws, grasp, limits);
 }
 
-/// Runs `call` with every counter armed; returns (operator new calls, malloc calls).
-template <typename Call>
-std::pair<long, long> count_allocations(Call&& call) {
-  g_new_calls = 0;
-  g_malloc_calls = 0;
-  g_counting = true;
-  call();
-  g_counting = false;
-  return {g_new_calls.load(), g_malloc_calls.load()};
-}
+using testing::count_allocations;
 
 TEST(ShapeProblemNoAlloc, CountersSeeAnAllocation) {
   std::vector<double> grows;
