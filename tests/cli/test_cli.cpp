@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_runner.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -19,58 +21,13 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-const std::string kCli = RODSHAPE_CLI_PATH;
 const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::quoted;
+using rodshape::testing::read_file;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ASSERT_FALSE(kCli.empty()) << "the rodshape tool was not built";
-    std::string pattern = (fs::temp_directory_path() / "rodshape_cli_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  /// Runs `rodshape <arguments>` (already quoted for the shell).
-  Outcome run(const std::string& arguments) const {
-    const fs::path out = directory_ / "stdout.txt";
-    const fs::path err = directory_ / "stderr.txt";
-    const std::string command =
-        quoted(kCli) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(out);
-    result.err = read_file(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
-  }
-
-  fs::path write_task(const std::string& name, const std::string& text) const {
-    const fs::path path = directory_ / name;
-    std::ofstream(path) << text;
-    return path;
-  }
-
-  fs::path directory_;
-};
+class Cli : public rodshape::testing::CliTest {};
 
 // Line numbers in the cases below refer to this text.
 const std::string kBand = R"(rod:

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_runner.hpp"
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -24,55 +26,16 @@ using Json = nlohmann::json;
 
 const std::string kCli = RODSHAPE_CLI_PATH;
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::quoted;
+using rodshape::testing::read_file;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-class CliPlan : public ::testing::Test {
+class CliPlan : public rodshape::testing::CliTest {
  protected:
-  void SetUp() override {
-    ASSERT_FALSE(kCli.empty()) << "the rodshape tool was not built";
-    std::string pattern = (fs::temp_directory_path() / "rodshape_cli_plan_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   /// Runs `rodshape plan <task> -o <outdir>`.
   Outcome plan(const fs::path& task, const fs::path& outdir) const {
-    const fs::path out = directory_ / "stdout.txt";
-    const fs::path err = directory_ / "stderr.txt";
-    const std::string command = quoted(kCli) + " plan " + quoted(task.string()) + " -o " +
-                                quoted(outdir.string()) + " >" + quoted(out.string()) + " 2>" +
-                                quoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(out);
-    result.err = read_file(err);
-    fs::remove(out);
-    fs::remove(err);
-    return result;
+    return run("plan " + quoted(task.string()) + " -o " + quoted(outdir.string()));
   }
-
-  fs::path write_task(const std::string& name, const std::string& text) const {
-    const fs::path path = directory_ / name;
-    std::ofstream(path) << text;
-    return path;
-  }
-
-  fs::path directory_;
 };
 
 // A gentle bend of the rubber band (the points lie on the band integrated from the base wrench

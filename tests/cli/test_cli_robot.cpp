@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/cli_runner.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -19,57 +21,19 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-const std::string kCli = RODSHAPE_CLI_PATH;
 const std::string kPanda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
 const std::string kReady =
     "0 -0.7853981633974483 0 -2.356194490192345 0 1.5707963267948966 0.7853981633974483";
 
-struct Outcome {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::quoted;
 
-std::string read_file(const fs::path& path) {
-  std::ifstream file(path);
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
-class CliRobot : public ::testing::Test {
+class CliRobot : public rodshape::testing::CliTest {
  protected:
-  void SetUp() override {
-    ASSERT_FALSE(kCli.empty()) << "the rodshape tool was not built";
-    std::string pattern = (fs::temp_directory_path() / "rodshape_cli_robot_XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    directory_ = pattern;
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
-  /// Runs `rodshape <arguments>` (already quoted for the shell).
-  Outcome run(const std::string& arguments) const {
-    const fs::path out = directory_ / "stdout.txt";
-    const fs::path err = directory_ / "stderr.txt";
-    const std::string command =
-        quoted(kCli) + " " + arguments + " >" + quoted(out.string()) + " 2>" + quoted(err.string());
-    const int status = std::system(command.c_str());
-    Outcome result;
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = read_file(out);
-    result.err = read_file(err);
-    return result;
-  }
-
+  /// Writes a file and returns its path quoted for the shell.
   std::string write(const std::string& name, const std::string& text) const {
-    const fs::path path = directory_ / name;
-    std::ofstream(path) << text;
-    return quoted(path.string());
+    return quoted(write_task(name, text).string());
   }
-
-  fs::path directory_;
 };
 
 TEST_F(CliRobot, FkPrintsTheFlangePoseAtTheReadyPose) {
