@@ -1,11 +1,14 @@
 // plan_command.cpp: plan the shape a task file asks for and write plan.json, trajectory.csv and
-// plan.svg into the output directory.
-//   task file -> PlanTask (io) -> plan_shape (trajectory) -> JSON, CSV, SVG (io)
+// plan.svg into the output directory; with a robot section, also the joint trajectory that follows
+// the end-effector path (joint_trajectory.csv and .json).
+//   task file -> PlanTask (io) -> plan_shape (trajectory) -> joint_trajectory (robot)
+//             -> JSON, CSV, SVG (io)
 #include "plan_command.hpp"
 
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +18,7 @@
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/robot/joint_trajectory.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
 
 namespace rodshape::cli {
@@ -54,7 +58,9 @@ class PlanCommand final : public Command {
         "plan",
         "Plan the rod's deformation towards a target shape (objective points): n_inter optimal "
         "shapes, each warm-started from the last, and the timed end-effector path through their "
-        "tip poses. Writes OUTDIR/plan.json, OUTDIR/trajectory.csv and OUTDIR/plan.svg.");
+        "tip poses. Writes OUTDIR/plan.json, OUTDIR/trajectory.csv and OUTDIR/plan.svg; with a "
+        "robot section, also the joint trajectory OUTDIR/joint_trajectory.csv and "
+        "OUTDIR/joint_trajectory.json.");
     command->add_option("task", task_path_, "Task file (YAML); format in docs/task-file.md")
         ->required()
         ->type_name("TASK.yaml");
@@ -79,6 +85,23 @@ class PlanCommand final : public Command {
       throw InputError(task_path_ + ": " + error.what());
     }
 
+    // The robot is a composition of the plan's path with an arm: computed here, not in plan_shape.
+    std::optional<JointTrajectory> joints;
+    if (task.robot) {
+      if (plan.status != PlanStatus::Infeasible && !plan.end_effector_path.empty()) {
+        try {
+          joints = joint_trajectory(task.robot->arm, plan.end_effector_path, task.robot->placement,
+                                    task.robot->options);
+        } catch (const InputError& error) {
+          throw InputError(task_path_ + ": robot: " + error.what());
+        }
+      } else {
+        joints.emplace();
+        joints->joint_names = task.robot->arm.joint_names();
+        joints->message = "no end-effector path to follow";
+      }
+    }
+
     make_directory(output_directory_);
     const fs::path directory(output_directory_);
     std::vector<std::string> written;
@@ -86,7 +109,7 @@ class PlanCommand final : public Command {
       write_file_atomically((directory / name).string(), content);
       written.push_back(name);
     };
-    write("plan.json", plan_result_json(plan, task));
+    write("plan.json", plan_result_json(plan, task, joints ? &*joints : nullptr));
     if (plan.status != PlanStatus::Infeasible) {
       write("trajectory.csv", trajectory_csv(plan.end_effector_path));
       write("plan.svg", plan_svg(plan, task));
@@ -95,6 +118,15 @@ class PlanCommand final : public Command {
       std::error_code ignored;
       fs::remove(directory / "trajectory.csv", ignored);
       fs::remove(directory / "plan.svg", ignored);
+    }
+    if (joints && joints->complete()) {
+      write("joint_trajectory.csv", joint_trajectory_csv(*joints));
+      write("joint_trajectory.json", joint_trajectory_json(*joints));
+    } else {
+      // No joint trajectory: remove that of an earlier run, which would not match plan.json.
+      std::error_code ignored;
+      fs::remove(directory / "joint_trajectory.csv", ignored);
+      fs::remove(directory / "joint_trajectory.json", ignored);
     }
 
     const int completed = static_cast<int>(plan.steps.size());
@@ -111,6 +143,11 @@ class PlanCommand final : public Command {
       }
       if (plan.tracking.performed && plan.tracking.jump)
         std::cout << "; tracking: " << plan.tracking.note;
+      if (joints && joints->complete()) {
+        std::cout << "; joint trajectory: " << joints->t.size() << " samples, "
+                  << std::setprecision(4) << joints->duration() << " s";
+        if (joints->slowed) std::cout << " (slowed ×" << joints->slowdown << ")";
+      }
       std::cout << "; wrote";
       for (const std::string& name : written) std::cout << " " << (directory / name).string();
       std::cout << "\n" << std::flush;
@@ -118,6 +155,10 @@ class PlanCommand final : public Command {
 
     switch (plan.status) {
       case PlanStatus::Complete:
+        if (joints && !joints->complete()) {
+          std::cerr << "error: " << task_path_ << ": joint trajectory: " << joints->message << "\n";
+          return kNotConverged;
+        }
         return kSuccess;
       case PlanStatus::Infeasible:
         std::cerr << "error: " << task_path_ << ": infeasible target: " << plan.message << "\n";

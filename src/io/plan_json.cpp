@@ -1,5 +1,7 @@
 // plan_json.cpp: plan.json and trajectory.csv (schemas in docs/task-file.md). A step's
 // configuration is written by configuration_json(), exactly as `equilibrium` writes its result.
+#include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -133,9 +135,47 @@ Json tracking_object(const TrackingReport& tracking) {
   };
 }
 
+Json joint_trajectory_object(const JointTrajectory& joints) {
+  const bool complete = joints.complete();
+  return {
+      {"status", to_string(joints.status)},
+      {"message", joints.message},
+      {"file", complete ? Json("joint_trajectory.csv") : Json(nullptr)},
+      {"samples", static_cast<int>(joints.t.size())},
+      {"duration", complete ? json_number(joints.duration()) : Json(nullptr)},
+      {"path_duration", json_number(joints.path_duration)},
+      {"slowed", joints.slowed},
+      {"slowdown", json_number(joints.slowdown)},
+      {"failed_sample", joints.failed_sample >= 0 ? Json(joints.failed_sample) : Json(nullptr)},
+      {"ik_restarts", joints.ik_restarts},
+      {"max_position_error", json_number(joints.max_position_error)},
+      {"max_rotation_error", json_number(joints.max_rotation_error)},
+  };
+}
+
+Json joint_values(const Eigen::VectorXd& values) {
+  Json list = Json::array();
+  for (Eigen::Index j = 0; j < values.size(); ++j) list.push_back(json_number(values(j)));
+  return list;
+}
+
+/// ROS builtin_interfaces/Duration: whole seconds and nanoseconds in [0, 1e9).
+Json ros_duration(double seconds) {
+  const auto total = static_cast<std::int64_t>(std::llround(seconds * 1e9));
+  std::int64_t sec = total / 1000000000;
+  std::int64_t nanosec = total % 1000000000;
+  if (nanosec < 0) {
+    nanosec += 1000000000;
+    --sec;
+  }
+  return {{"sec", sec}, {"nanosec", nanosec}};
+}
+
 }  // namespace
 
-std::string plan_result_json(const ShapePlan& plan, const PlanTask& task) {
+std::string plan_result_json(const ShapePlan& plan,
+                             const PlanTask& task,
+                             const JointTrajectory* joints) {
   const PlanRequest& request = task.request;
   const ConstitutiveModel model = request.rod.properties.model;
   const bool complete = plan.status == PlanStatus::Complete;
@@ -162,6 +202,36 @@ std::string plan_result_json(const ShapePlan& plan, const PlanTask& task) {
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
+  result["joint_trajectory"] = joints ? joint_trajectory_object(*joints) : Json(nullptr);
+  return io_detail::format_json(result);
+}
+
+std::string joint_trajectory_csv(const JointTrajectory& trajectory) {
+  std::ostringstream out;
+  out << "t";
+  for (const std::string& name : trajectory.joint_names) out << ',' << name;
+  out << '\n' << std::setprecision(12);
+  for (std::size_t i = 0; i < trajectory.t.size() && i < trajectory.q.size(); ++i) {
+    out << trajectory.t[i];
+    for (Eigen::Index j = 0; j < trajectory.q[i].size(); ++j) out << ',' << trajectory.q[i](j);
+    out << '\n';
+  }
+  return out.str();
+}
+
+std::string joint_trajectory_json(const JointTrajectory& trajectory) {
+  Json points = Json::array();
+  for (std::size_t i = 0; i < trajectory.t.size() && i < trajectory.q.size(); ++i) {
+    Json point;
+    point["positions"] = joint_values(trajectory.q[i]);
+    point["velocities"] =
+        i < trajectory.qdot.size() ? joint_values(trajectory.qdot[i]) : Json::array();
+    point["time_from_start"] = ros_duration(trajectory.t[i]);
+    points.push_back(std::move(point));
+  }
+  Json result;
+  result["joint_names"] = trajectory.joint_names;
+  result["points"] = std::move(points);
   return io_detail::format_json(result);
 }
 

@@ -1,11 +1,13 @@
 // plan_sections.cpp: the readers of the sections that a plan task adds (see plan_sections.hpp).
 #include "io/plan_sections.hpp"
 
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "io/task_sections.hpp"
+#include "rodshape/error.hpp"
 
 namespace rodshape::io_detail {
 
@@ -144,6 +146,52 @@ void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& o
   read_number(optimizer, "constraint_tolerance", options.constraint_tolerance);
   read_integer(optimizer, "multi_starts", options.multi_starts);
   read_integer(optimizer, "print_level", options.print_level);
+}
+
+PlanRobot read_robot_section(const YamlField& robot, const std::string& task_directory) {
+  robot.expect_mapping(
+      {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed"},
+      {{"flange_T_ee", "the end effector on the flange is robot.flange_to_end_effector"},
+       {"tool", "the end effector on the flange is robot.flange_to_end_effector"},
+       {"world_T_base", "the arm's base in the world is robot.base"}});
+  const YamlField urdf = robot.require("urdf");
+  std::filesystem::path path(urdf.text());
+  if (path.is_relative() && !task_directory.empty())
+    path = std::filesystem::path(task_directory) / path;
+  const YamlField base_link = robot.get("base_link");
+  const YamlField tip_link = robot.get("tip_link");
+  const std::string base_name = base_link.present() ? base_link.text() : "";
+  const std::string tip_name = tip_link.present() ? tip_link.text() : "";
+
+  std::optional<ArmModel> arm;
+  try {
+    arm = ArmModel::from_urdf_file(path.string(), base_name, tip_name);
+  } catch (const InputError& error) {
+    // Say which field the URDF's complaint is about.
+    const std::string message = error.what();
+    const auto mentions = [&](const char* text) { return message.find(text) != std::string::npos; };
+    if (mentions(": unknown base link") && base_link.present())
+      base_link.fail(base_link.path() + ": " + message);
+    if ((mentions(": unknown tip link") || mentions(" is not below base link")) &&
+        tip_link.present())
+      tip_link.fail(tip_link.path() + ": " + message);
+    urdf.fail(urdf.path() + ": " + message);
+  }
+
+  PlanRobot result{path.string(), std::move(*arm), {}, {}};
+  if (const YamlField base = robot.get("base"); base.present())
+    result.placement.world_T_base = read_pose(base);
+  if (const YamlField offset = robot.get("flange_to_end_effector"); offset.present())
+    result.placement.flange_T_ee = read_pose(offset);
+  if (const YamlField seed = robot.get("seed"); seed.present()) {
+    const std::vector<YamlField> values = seed.elements();
+    Eigen::VectorXd q(static_cast<Eigen::Index>(values.size()));
+    for (std::size_t i = 0; i < values.size(); ++i)
+      q(static_cast<Eigen::Index>(i)) = values[i].number();
+    seed.located([&] { result.arm.check_joint_positions(q, seed.path()); });
+    result.options.seed = q;
+  }
+  return result;
 }
 
 }  // namespace rodshape::io_detail

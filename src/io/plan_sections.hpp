@@ -6,9 +6,11 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "io/yaml_field.hpp"
 #include "rodshape/core/pose.hpp"
+#include "rodshape/io/plan_task.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
 #include "rodshape/optimisation/shape_optimizer.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
@@ -51,5 +53,10 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options);
 
 /// `optimizer`: max_iterations, tolerance, constraint_tolerance, multi_starts, print_level.
 void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options);
+
+/// `robot`: urdf (relative to `task_directory` unless absolute), base_link, tip_link, base (a
+/// pose), flange_to_end_effector (a pose), seed (joint positions). Reads the URDF; its errors are
+/// reported at the field they concern (robot.tip_link for an unknown tip link, else robot.urdf).
+PlanRobot read_robot_section(const YamlField& robot, const std::string& task_directory);
 
 }  // namespace rodshape::io_detail

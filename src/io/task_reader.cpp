@@ -45,6 +45,7 @@ const std::vector<io_detail::KeyHint>& equilibrium_hints() {
        "wrench_bounds is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"trajectory", "trajectory is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"optimizer", "optimizer is a section of plan tasks (rodshape plan); equilibrium has solver"},
+      {"robot", "robot is a section of plan tasks (rodshape plan), not of equilibrium"},
   };
   return hints;
 }
@@ -53,7 +54,7 @@ const std::vector<std::string_view>& plan_sections() {
   static const std::vector<std::string_view> sections = {
       "rod",       "gravity", "distributed_load", "base",   "target",        "weights",
       "workspace", "grasp",   "initial",          "limits", "wrench_bounds", "trajectory",
-      "optimizer"};
+      "optimizer", "robot"};
   return sections;
 }
 
@@ -158,6 +159,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     io_detail::read_trajectory_section(trajectory, task.options);
   if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
     io_detail::read_optimizer_section(optimizer, task.options.optimizer);
+  if (const YamlField robot = root.get("robot"); robot.present()) {
+    task.robot = io_detail::read_robot_section(
+        robot, std::filesystem::path(source_name).parent_path().string());
+  }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
   root.located([&] {

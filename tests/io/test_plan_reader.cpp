@@ -286,9 +286,78 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     const PlanTask task = read_plan_task(entry.path().string());
     EXPECT_EQ(task.request.target.points.size(), 10u);
     EXPECT_EQ(task.options.steps, 7);
+    EXPECT_EQ(task.robot.has_value(), name == "plan_panda_s_curve.yaml");
     ++count;
   }
-  EXPECT_EQ(count, 6);
+  EXPECT_EQ(count, 7);
+}
+
+// ---- the robot section --------------------------------------------------------------------------
+
+const std::string kPanda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
+
+/// kPlan with a robot section (from line 21 on) whose other lines are `fields`.
+std::string plan_with_robot(const std::string& fields) {
+  return kPlan + "robot:\n  urdf: " + kPanda + "\n" + fields;
+}
+
+TEST(PlanReader, WithoutARobotSectionThereIsNoRobot) {
+  EXPECT_FALSE(parse_plan_task(kPlan, "plan.yaml").robot.has_value());
+}
+
+TEST(PlanReader, RobotSectionReadsTheArmItsPlacementAndSeed) {
+  const PlanTask task = parse_plan_task(
+      plan_with_robot("  base_link: panda_link0\n  tip_link: panda_link8\n"
+                      "  base: {position: [-0.45, 0, -0.2]}\n"
+                      "  flange_to_end_effector: {position: [0, 0, 0.1], rotation: [0, 1, 0, 0]}\n"
+                      "  seed: [0, -0.5, 0, -2, 0, 1.5, 0.5]\n"),
+      "plan.yaml");
+  ASSERT_TRUE(task.robot.has_value());
+  EXPECT_EQ(task.robot->arm.joints(), 7);
+  EXPECT_EQ(task.robot->arm.tip_link(), "panda_link8");
+  EXPECT_TRUE(CompareMatrices(task.robot->placement.world_T_base.position,
+                              Eigen::Vector3d(-0.45, 0, -0.2), 0.0));
+  EXPECT_TRUE(
+      CompareMatrices(task.robot->placement.flange_T_ee.position, Eigen::Vector3d(0, 0, 0.1), 0.0));
+  const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
+  EXPECT_TRUE(CompareMatrices(task.robot->placement.flange_T_ee.rotation, turn, 1e-15));
+  ASSERT_EQ(task.robot->options.seed.size(), 7);
+  EXPECT_EQ(task.robot->options.seed(3), -2.0);
+}
+
+TEST(PlanReader, RobotDefaultsAreIdentityPlacementAndNoSeed) {
+  const PlanTask task = parse_plan_task(plan_with_robot(""), "plan.yaml");
+  ASSERT_TRUE(task.robot.has_value());
+  EXPECT_TRUE(task.robot->placement.world_T_base.rotation.isIdentity(0.0));
+  EXPECT_TRUE(task.robot->placement.flange_T_ee.position.isZero(0.0));
+  EXPECT_EQ(task.robot->options.seed.size(), 0);
+}
+
+TEST(PlanReader, RobotUrdfIsRelativeToTheTaskFile) {
+  const std::string task_file = std::string(RODSHAPE_SOURCE_DIR) + "/examples/some_plan.yaml";
+  const PlanTask task =
+      parse_plan_task(kPlan + "robot:\n  urdf: ../data/robots/panda.urdf\n", task_file);
+  ASSERT_TRUE(task.robot.has_value());
+  EXPECT_EQ(task.robot->arm.robot_name(), "panda");
+}
+
+TEST(PlanReader, BadRobotFieldsAreNamedAtTheirLine) {
+  EXPECT_EQ(
+      error_of(plan_with_robot("  tip_link: panda_hand\n"))
+          .rfind("plan.yaml:23: robot.tip_link: " + kPanda + ": unknown tip link 'panda_hand'", 0),
+      0u);
+  EXPECT_EQ(error_of(plan_with_robot("  base_link: nowhere\n"))
+                .rfind("plan.yaml:23: robot.base_link: ", 0),
+            0u);
+  EXPECT_NE(error_of(plan_with_robot("  bse: {position: [0, 0, 0]}\n")).find("robot.bse"),
+            std::string::npos);
+  EXPECT_EQ(error_of(plan_with_robot("  seed: [0, 0, 0]\n")).rfind("plan.yaml:23: robot.seed", 0),
+            0u);
+  EXPECT_EQ(error_of(kPlan + "robot:\n  urdf: /nowhere/arm.urdf\n")
+                .rfind("plan.yaml:22: robot.urdf: /nowhere/arm.urdf: cannot read", 0),
+            0u);
+  EXPECT_NE(error_of(kPlan + "robot:\n  base_link: panda_link0\n").find("robot.urdf is required"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // plan_output.hpp: what `rodshape plan` writes: the plan as JSON (plan.json), the timed
-// end-effector path as CSV (trajectory.csv) and a picture of the steps as SVG (plan.svg). Each
+// end-effector path as CSV (trajectory.csv), a picture of the steps as SVG (plan.svg) and, when the
+// task has a robot, the joint trajectory (joint_trajectory.csv, joint_trajectory.json). Each
 // function returns the whole text; write it with write_file_atomically(). Schemas are in
 // docs/task-file.md.
 #pragma once
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "rodshape/io/plan_task.hpp"
+#include "rodshape/robot/joint_trajectory.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
 
@@ -17,12 +19,25 @@ namespace rodshape {
 /// configuration and points, one entry per step that succeeded (objective points, configuration as
 /// `equilibrium` writes it, end-effector pose, energy, distances, stability, the optimiser's
 /// account), the end-effector path's summary and the tracking report. Ends with a newline.
-std::string plan_result_json(const ShapePlan& plan, const PlanTask& task);
+/// `joint_trajectory` is the summary {status, message, file, samples, duration, path_duration,
+/// slowed, slowdown, ik_restarts, max_position_error, max_rotation_error} of `joints`, or null when
+/// `joints` is null (a task without a robot).
+std::string plan_result_json(const ShapePlan& plan,
+                             const PlanTask& task,
+                             const JointTrajectory* joints = nullptr);
 
 /// "t,x,y,z,qw,qx,qy,qz" and one line per sample of `path` (s, m, unit quaternion). Consecutive
 /// quaternions lie in the same hemisphere (q and -q are one rotation; the first has qw ≥ 0), so
 /// that a consumer may interpolate them componentwise.
 std::string trajectory_csv(const std::vector<TimedPose>& path);
+
+/// "t,<joint names...>" and one line per sample: time (s) and joint positions (rad or m).
+std::string joint_trajectory_csv(const JointTrajectory& trajectory);
+
+/// The joint trajectory shaped like ROS trajectory_msgs/JointTrajectory:
+/// {"joint_names": [...], "points": [{"positions": [...], "velocities": [...],
+///  "time_from_start": {"sec": int, "nanosec": int}}, ...]}. Ends with a newline.
+std::string joint_trajectory_json(const JointTrajectory& trajectory);
 
 /// A self-contained SVG picture of the plan: three projections (x–z, y–z, x–y) at one common
 /// scale, with grids labelled in metres; the initial rod (grey), each step's rod (a colour ramp

@@ -1,0 +1,58 @@
+// Benchmarks of the robot area on the bundled Panda: a warm inverse kinematics solve (the step of a
+// joint trajectory: the target 1 mm from the seed's pose) and the joint trajectory of the S-curve
+// plan (examples/plan_panda_s_curve.yaml: IK at every sample of its end-effector path, velocities,
+// velocity-limit check). The plan itself is made once, outside the timing.
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/robot/arm_model.hpp"
+#include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/trajectory/shape_plan.hpp"
+
+namespace {
+
+using namespace rodshape;
+
+const std::string kSource = RODSHAPE_SOURCE_DIR;
+
+void BM_IkWarm(benchmark::State& state) {
+  const ArmModel arm = ArmModel::from_urdf_file(kSource + "/data/robots/panda.urdf");
+  const Eigen::VectorXd seed = default_seed(arm);
+  Pose target = arm.forward_kinematics(seed);
+  target.position += Eigen::Vector3d(0.0006, -0.0005, 0.0006);  // 1.0 mm away
+  IkResult result;
+  for (auto _ : state) {
+    result = solve_ik(arm, target, seed);
+    benchmark::DoNotOptimize(result.q.data());
+  }
+  if (!result.converged()) state.SkipWithError(result.message.c_str());
+  state.counters["iterations"] = result.iterations;
+}
+
+void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
+  const PlanTask task = read_plan_task(kSource + "/examples/plan_panda_s_curve.yaml");
+  const ShapePlan plan = plan_shape(task.request, task.options);
+  if (plan.status != PlanStatus::Complete || !task.robot) {
+    state.SkipWithError("the S-curve plan did not complete");
+    return;
+  }
+  JointTrajectory joints;
+  for (auto _ : state) {
+    joints = joint_trajectory(task.robot->arm, plan.end_effector_path, task.robot->placement,
+                              task.robot->options);
+    benchmark::DoNotOptimize(joints.q.data());
+  }
+  if (!joints.complete()) state.SkipWithError(joints.message.c_str());
+  state.counters["samples"] = static_cast<double>(joints.t.size());
+  state.counters["slowdown"] = joints.slowdown;
+}
+
+}  // namespace
+
+BENCHMARK(BM_IkWarm)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_JointTrajectoryPaperExperiment)->Unit(benchmark::kMillisecond);

@@ -1,0 +1,87 @@
+// joint_trajectory.hpp: the joint trajectory that makes an arm follow a timed end-effector path.
+//
+// Frames: the path gives world_T_ee; the arm's base link sits at world_T_base and its tip link (the
+// flange) carries the end effector at flange_T_ee, so the IK target of a sample is
+//   base_T_flange = world_T_base⁻¹ · world_T_ee · flange_T_ee⁻¹.
+// Positions: solve_ik at every sample, seeded from the previous sample's solution (the first from
+// `seed`), so that the arm stays on one branch.
+// Velocities: finite differences between samples, central inside
+//   q̇_i = (q_{i+1} - q_{i-1}) / (t_{i+1} - t_{i-1}),
+// one-sided at the ends (q̇_0 = (q_1 - q_0) / (t_1 - t_0), likewise backward at the last sample).
+// Velocity limits: a segment between samples i and i+1 needs Δt_i ≥ max_j |Δq_j| / v_lim,j; a
+// segment that is faster is stretched to exactly that duration (the samples after it are shifted
+// later; the poses are not changed, nothing is clipped). Since a central difference is a weighted
+// mean of its two segments' rates, every sample's velocity then respects the limits too.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/pose.hpp"
+#include "rodshape/robot/arm_model.hpp"
+#include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/trajectory/end_effector_path.hpp"
+
+namespace rodshape {
+
+/// Where the arm is: its base link in the world and the end effector on its tip link (flange).
+struct ArmPlacement {
+  Pose world_T_base;  // identity: the arm's base frame is the world frame
+  Pose flange_T_ee;   // identity: the end effector is the tip link's frame
+};
+
+struct JointTrajectoryOptions {
+  /// The joint positions the first sample's IK starts from; empty: default_seed(arm).
+  Eigen::VectorXd seed;
+  IkOptions ik;
+};
+
+enum class JointTrajectoryStatus {
+  Complete,     // every sample has joint positions; velocities within the limits
+  Unreachable,  // a sample's pose has no IK solution (message: its time and pose)
+  NotRun,       // nothing was asked (an empty path)
+};
+std::string to_string(JointTrajectoryStatus status);  // "complete", "unreachable", "not_run"
+
+struct JointTrajectory {
+  JointTrajectoryStatus status = JointTrajectoryStatus::NotRun;
+  std::string message;  // empty when complete
+  std::vector<std::string> joint_names;
+  /// Sample times, s (re-timed when slowed). Unreachable: the samples solved before the failure,
+  /// at the path's times, and qdot is empty.
+  std::vector<double> t;
+  std::vector<Eigen::VectorXd> q;     // joint positions per sample (rad or m)
+  std::vector<Eigen::VectorXd> qdot;  // joint velocities per sample (rad/s or m/s)
+  bool slowed = false;                // a segment was stretched to respect the velocity limits
+  double slowdown = 1.0;              // duration after / duration of the path (1 if not slowed)
+  double path_duration = 0.0;         // the end-effector path's own duration, s
+  int failed_sample = -1;             // the unreachable sample's index, else -1
+  int ik_restarts = 0;                // samples whose IK needed a restart (a possible branch jump)
+  double max_position_error = 0.0;    // over the samples, |p* - p(q)| of the flange, m
+  double max_rotation_error = 0.0;    // over the samples, rad
+  bool complete() const { return status == JointTrajectoryStatus::Complete; }
+  double duration() const { return t.empty() ? 0.0 : t.back() - t.front(); }
+};
+
+/// The default first seed: the Panda "ready" pose (0, -π/4, 0, -3π/4, 0, π/2, π/4) for a 7-joint
+/// arm, else zeros clamped into the limits.
+Eigen::VectorXd default_seed(const ArmModel& arm);
+
+/// The joint trajectory that follows `path` (world_T_ee over time, e.g. ShapePlan's
+/// end_effector_path). Throws InputError for a seed of the wrong size or outside the limits,
+/// invalid IK options or a non-finite pose; an unreachable pose is a status.
+JointTrajectory joint_trajectory(const ArmModel& arm,
+                                 const std::vector<TimedPose>& path,
+                                 const ArmPlacement& placement = {},
+                                 const JointTrajectoryOptions& options = {});
+
+/// base_T_flange for the end-effector pose world_T_ee (the IK target of a sample).
+Pose flange_target(const ArmPlacement& placement, const Pose& world_T_ee);
+
+/// world_T_ee of the arm at `q`: world_T_base · FK(q) · flange_T_ee.
+Pose end_effector_pose(const ArmModel& arm,
+                       const ArmPlacement& placement,
+                       const Eigen::VectorXd& q);
+
+}  // namespace rodshape

@@ -1,0 +1,152 @@
+// joint_trajectory.cpp: IK along a timed end-effector path, finite-difference velocities and the
+// re-timing that keeps them within the joint velocity limits (see joint_trajectory.hpp).
+#include "rodshape/robot/joint_trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "rodshape/error.hpp"
+
+namespace rodshape {
+
+namespace {
+
+Pose compose(const Pose& a, const Pose& b) {
+  Pose result;
+  result.position = a.position + a.rotation * b.position;
+  result.rotation = a.rotation * b.rotation;
+  return result;
+}
+
+Pose inverse(const Pose& a) {
+  Pose result;
+  result.rotation = a.rotation.transpose();
+  result.position = -(result.rotation * a.position);
+  return result;
+}
+
+std::string describe_pose(const Pose& pose) {
+  std::ostringstream out;
+  out.precision(6);
+  const Eigen::Vector4d q = pose.quaternion_wxyz();
+  out << "position [" << pose.position.x() << ", " << pose.position.y() << ", " << pose.position.z()
+      << "] m, rotation [" << q[0] << ", " << q[1] << ", " << q[2] << ", " << q[3] << "]";
+  return out.str();
+}
+
+/// Finite-difference velocities: central inside, one-sided at the ends; zero for a single sample.
+std::vector<Eigen::VectorXd> differentiate(const std::vector<double>& t,
+                                           const std::vector<Eigen::VectorXd>& q) {
+  const std::size_t n = q.size();
+  std::vector<Eigen::VectorXd> qdot(n);
+  if (n == 1) qdot[0] = Eigen::VectorXd::Zero(q[0].size());
+  for (std::size_t i = 0; n > 1 && i < n; ++i) {
+    const std::size_t before = i == 0 ? 0 : i - 1;
+    const std::size_t after = i + 1 == n ? n - 1 : i + 1;
+    qdot[i] = (q[after] - q[before]) / (t[after] - t[before]);
+  }
+  return qdot;
+}
+
+}  // namespace
+
+std::string to_string(JointTrajectoryStatus status) {
+  switch (status) {
+    case JointTrajectoryStatus::Complete:
+      return "complete";
+    case JointTrajectoryStatus::Unreachable:
+      return "unreachable";
+    case JointTrajectoryStatus::NotRun:
+      return "not_run";
+  }
+  return "unknown";
+}
+
+Eigen::VectorXd default_seed(const ArmModel& arm) {
+  if (arm.joints() == 7) {
+    constexpr double pi = std::numbers::pi;
+    Eigen::VectorXd q(7);
+    q << 0.0, -pi / 4.0, 0.0, -3.0 * pi / 4.0, 0.0, pi / 2.0, pi / 4.0;
+    return arm.clamp_to_limits(q);
+  }
+  return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
+}
+
+Pose flange_target(const ArmPlacement& placement, const Pose& world_T_ee) {
+  return compose(compose(inverse(placement.world_T_base), world_T_ee),
+                 inverse(placement.flange_T_ee));
+}
+
+Pose end_effector_pose(const ArmModel& arm,
+                       const ArmPlacement& placement,
+                       const Eigen::VectorXd& q) {
+  return compose(compose(placement.world_T_base, arm.forward_kinematics(q)), placement.flange_T_ee);
+}
+
+JointTrajectory joint_trajectory(const ArmModel& arm,
+                                 const std::vector<TimedPose>& path,
+                                 const ArmPlacement& placement,
+                                 const JointTrajectoryOptions& options) {
+  options.ik.validate();
+  Eigen::VectorXd seed = options.seed.size() > 0 ? options.seed : default_seed(arm);
+  arm.check_joint_positions(seed, "seed");
+
+  JointTrajectory result;
+  result.joint_names = arm.joint_names();
+  if (path.empty()) {
+    result.message = "the end-effector path is empty";
+    return result;
+  }
+  result.path_duration = path.back().t - path.front().t;
+
+  // Positions, sample by sample, each IK seeded from the last solution.
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const TimedPose& sample = path[i];
+    if (!std::isfinite(sample.t) || (i > 0 && !(sample.t > path[i - 1].t)))
+      throw InputError("joint_trajectory: the path's sample times must be finite and increasing");
+    const IkResult ik = solve_ik(arm, flange_target(placement, sample.pose), seed, options.ik);
+    if (!ik.converged()) {
+      std::ostringstream message;
+      message.precision(6);
+      message << "no inverse kinematics solution at t = " << sample.t << " s (sample " << i
+              << ") for the end-effector pose " << describe_pose(sample.pose) << ": " << ik.message;
+      result.status = JointTrajectoryStatus::Unreachable;
+      result.message = message.str();
+      result.failed_sample = static_cast<int>(i);
+      return result;
+    }
+    if (ik.restarts > 0) ++result.ik_restarts;
+    result.max_position_error = std::max(result.max_position_error, ik.position_error);
+    result.max_rotation_error = std::max(result.max_rotation_error, ik.rotation_error);
+    result.t.push_back(sample.t);
+    result.q.push_back(ik.q);
+    seed = ik.q;
+  }
+
+  // Re-timing: stretch every segment that is faster than the velocity limits allow.
+  const Eigen::VectorXd limits = arm.velocity_limits();
+  std::vector<double> retimed(result.t.size());
+  retimed[0] = result.t[0];
+  for (std::size_t i = 0; i + 1 < result.t.size(); ++i) {
+    const double dt = result.t[i + 1] - result.t[i];
+    const Eigen::VectorXd step = (result.q[i + 1] - result.q[i]).cwiseAbs();
+    double needed = 0.0;  // max_j |Δq_j| / v_lim,j (an infinite limit needs no time)
+    for (Eigen::Index j = 0; j < step.size(); ++j) {
+      if (std::isfinite(limits(j))) needed = std::max(needed, step(j) / limits(j));
+    }
+    const bool too_fast = needed > dt;
+    if (too_fast) result.slowed = true;
+    retimed[i + 1] = retimed[i] + (too_fast ? needed : dt);
+  }
+  if (result.slowed) {
+    result.t = std::move(retimed);
+    if (result.path_duration > 0.0) result.slowdown = result.duration() / result.path_duration;
+  }
+  result.qdot = differentiate(result.t, result.q);
+  result.status = JointTrajectoryStatus::Complete;
+  return result;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,184 @@
+// test_cli_plan_robot.cpp: `rodshape plan` with a robot section. The bundled Panda example writes
+// joint_trajectory.csv and joint_trajectory.json (the shape of ROS trajectory_msgs/JointTrajectory)
+// whose last positions put the end effector where plan.json says; an unknown tip link is bad input
+// (exit 2) named with its line; an arm too far away gives exit 3, plan.json saying why.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "rodshape/robot/arm_model.hpp"
+#include "support/cli_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+const fs::path kSource = RODSHAPE_SOURCE_DIR;
+const fs::path kExample = kSource / "examples" / "plan_panda_s_curve.yaml";
+
+using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::quoted;
+using rodshape::testing::read_file;
+
+/// `text` with the first occurrence of `from` replaced by `to` (which must be there).
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The 1-based line of the first occurrence of `needle` in `text`.
+int line_of(const std::string& text, const std::string& needle) {
+  const std::size_t at = text.find(needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+class CliPlanRobot : public rodshape::testing::CliTest {
+ protected:
+  Outcome plan(const fs::path& task, const fs::path& outdir) const {
+    return run("plan " + quoted(task.string()) + " -o " + quoted(outdir.string()));
+  }
+
+  /// The example, its URDF path made absolute so that the copy works from the temporary directory.
+  std::string example_text() const {
+    return replaced(read_file(kExample), "urdf: ../data/robots/panda.urdf",
+                    "urdf: " + (kSource / "data" / "robots" / "panda.urdf").string());
+  }
+};
+
+Eigen::Vector3d vector3(const Json& value) {
+  return {value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>()};
+}
+
+TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
+  const fs::path out = directory_ / "out";
+  const Outcome outcome = plan(kExample, out);
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  ASSERT_TRUE(fs::exists(out / "joint_trajectory.csv"));
+  ASSERT_TRUE(fs::exists(out / "joint_trajectory.json"));
+
+  const Json plan = Json::parse(read_file(out / "plan.json"));
+  const Json& summary = plan.at("joint_trajectory");
+  EXPECT_EQ(summary.at("status"), "complete");
+  EXPECT_EQ(summary.at("message"), "");
+  EXPECT_EQ(summary.at("file"), "joint_trajectory.csv");
+  const int samples = summary.at("samples").get<int>();
+  EXPECT_EQ(samples, plan.at("end_effector_path").at("samples").get<int>());
+  EXPECT_GE(summary.at("slowdown").get<double>(), 1.0);
+  EXPECT_GE(summary.at("duration").get<double>(),
+            plan.at("end_effector_path").at("duration").get<double>() - 1e-12);
+
+  const Json trajectory = Json::parse(read_file(out / "joint_trajectory.json"));
+  const rodshape::ArmModel arm =
+      rodshape::ArmModel::from_urdf_file((kSource / "data" / "robots" / "panda.urdf").string());
+  EXPECT_EQ(trajectory.at("joint_names").get<std::vector<std::string>>(), arm.joint_names());
+  const Json& points = trajectory.at("points");
+  ASSERT_EQ(static_cast<int>(points.size()), samples);
+  double previous = -1.0;
+  for (const Json& point : points) {
+    ASSERT_EQ(point.at("positions").size(), 7u);
+    ASSERT_EQ(point.at("velocities").size(), 7u);
+    const Json& time = point.at("time_from_start");
+    ASSERT_TRUE(time.at("sec").is_number_integer());
+    ASSERT_TRUE(time.at("nanosec").is_number_integer());
+    const long long nanosec = time.at("nanosec").get<long long>();
+    EXPECT_GE(nanosec, 0);
+    EXPECT_LT(nanosec, 1000000000);
+    const double t = time.at("sec").get<double>() + 1e-9 * static_cast<double>(nanosec);
+    EXPECT_GT(t, previous);
+    previous = t;
+  }
+
+  // The last positions put the end effector (world_T_base · FK · flange_T_ee, as the example
+  // places the arm) on the last step's end-effector pose.
+  Eigen::VectorXd q(7);
+  for (int j = 0; j < 7; ++j) q(j) = points.back().at("positions").at(j).get<double>();
+  const rodshape::Pose flange = arm.forward_kinematics(q);
+  const Eigen::Vector3d base(-0.45, 0.0, -0.2);                          // robot.base
+  const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
+  const Eigen::Vector3d ee =
+      base + flange.position + flange.rotation * Eigen::Vector3d(0, 0, 0.1034);
+  const Json& last = plan.at("steps").back().at("end_effector");
+  EXPECT_LT((ee - vector3(last.at("position"))).norm(), 1e-6);
+  const Json& wxyz = last.at("rotation");
+  const Eigen::Quaterniond expected(wxyz.at(0).get<double>(), wxyz.at(1).get<double>(),
+                                    wxyz.at(2).get<double>(), wxyz.at(3).get<double>());
+  const Eigen::Matrix3d reached = flange.rotation * turn;
+  EXPECT_LT(Eigen::AngleAxisd(reached * expected.toRotationMatrix().transpose()).angle(), 1e-6);
+
+  // The CSV: header t and the joint names, one line per sample.
+  std::istringstream csv(read_file(out / "joint_trajectory.csv"));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("t,panda_joint1,", 0), 0u) << header;
+  int lines = 0;
+  for (std::string line; std::getline(csv, line);) ++lines;
+  EXPECT_EQ(lines, samples);
+}
+
+TEST_F(CliPlanRobot, AnUnknownTipLinkIsBadInputNamedWithItsLine) {
+  const std::string text = replaced(example_text(), "tip_link: panda_link8", "tip_link: panda_hnd");
+  const fs::path task = write_task("bad_tip.yaml", text);
+  const Outcome outcome = plan(task, directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  const std::string where = task.string() + ":" + std::to_string(line_of(text, "tip_link:")) + ":";
+  EXPECT_NE(outcome.err.find(where + " robot.tip_link"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("unknown tip link 'panda_hnd'"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(directory_ / "out" / "plan.json"));
+}
+
+TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
+  const fs::path typo =
+      write_task("typo.yaml", replaced(example_text(), "  base_link:", "  base_lnk:"));
+  Outcome outcome = plan(typo, directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("robot.base_lnk"), std::string::npos) << outcome.err;
+
+  const fs::path missing = write_task(
+      "missing.yaml", replaced(read_file(kExample), "../data/robots/panda.urdf", "nowhere.urdf"));
+  outcome = plan(missing, directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("robot.urdf"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find((directory_ / "nowhere.urdf").string()), std::string::npos)
+      << outcome.err;
+}
+
+TEST_F(CliPlanRobot, AnArmOutOfReachWritesThePlanAndExitsThree) {
+  const fs::path task = write_task(
+      "far.yaml", replaced(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]"));
+  const fs::path out = directory_ / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "joint_trajectory.csv") << "stale\n";  // from an earlier run
+  const Outcome outcome = plan(task, out);
+  EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
+  EXPECT_NE(outcome.err.find("joint trajectory: no inverse kinematics solution at t = 0 s"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_TRUE(fs::exists(out / "plan.json"));
+  EXPECT_TRUE(fs::exists(out / "trajectory.csv"));
+  EXPECT_FALSE(fs::exists(out / "joint_trajectory.csv"));
+  EXPECT_FALSE(fs::exists(out / "joint_trajectory.json"));
+  const Json plan = Json::parse(read_file(out / "plan.json"));
+  EXPECT_EQ(plan.at("status"), "complete");
+  const Json& summary = plan.at("joint_trajectory");
+  EXPECT_EQ(summary.at("status"), "unreachable");
+  EXPECT_EQ(summary.at("failed_sample"), 0);
+  EXPECT_TRUE(summary.at("file").is_null());
+  EXPECT_NE(summary.at("message").get<std::string>().find("pose position [0, 0, 0.29] m"),
+            std::string::npos)
+      << summary.at("message");
+}
+
+}  // namespace
