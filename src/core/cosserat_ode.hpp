@@ -22,7 +22,6 @@ namespace rodshape::detail {
 using OdeState = Eigen::Matrix<double, 14, 1>;    // (q, p, n, m, e)
 using OdeTangent = Eigen::Matrix<double, 6, 14>;  // row j: d(state)/dw_j
 using Matrix63d = Eigen::Matrix<double, 6, 3>;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 /// Offsets of each quantity in OdeState (and columns of OdeTangent).
 struct Slot {

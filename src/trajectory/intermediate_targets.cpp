@@ -13,23 +13,27 @@ PointSet project_onto_initial_shape(const RodConfiguration& initial, const Point
   return projected;
 }
 
+PointSet objective_set(const PointSet& initial, const PointSet& objective, double fraction) {
+  if (initial.size() != objective.size())
+    throw InputError("objective_set: " + std::to_string(initial.size()) + " initial points for " +
+                     std::to_string(objective.size()) + " objective points");
+  if (fraction == 1.0) return objective;  // exactly p_obj, not p_obj up to round-off
+  PointSet set(objective.size());
+  for (std::size_t k = 0; k < objective.size(); ++k)
+    set[k] = initial[k] + fraction * (objective[k] - initial[k]);
+  return set;
+}
+
 std::vector<PointSet> intermediate_targets(const PointSet& initial,
                                            const PointSet& objective,
                                            int n_inter) {
   if (n_inter < 1)
     throw InputError("trajectory.steps = " + std::to_string(n_inter) + " must be >= 1");
-  if (initial.size() != objective.size())
-    throw InputError("intermediate_targets: " + std::to_string(initial.size()) +
-                     " initial points for " + std::to_string(objective.size()) +
-                     " objective points");
-  std::vector<PointSet> steps(n_inter, PointSet(objective.size()));
-  for (int i = 1; i <= n_inter; ++i) {
-    const double fraction =
-        static_cast<double>(i) / n_inter;  // p^i = p_init + i (p_obj - p_init)/n
-    for (std::size_t k = 0; k < objective.size(); ++k)
-      steps[i - 1][k] = initial[k] + fraction * (objective[k] - initial[k]);
-    if (i == n_inter) steps[i - 1] = objective;  // exactly p_obj, not p_obj up to round-off
-  }
+  std::vector<PointSet> steps;
+  steps.reserve(n_inter);
+  for (int i = 1; i <= n_inter; ++i)  // p^i = p_init + i (p_obj - p_init) / n_inter
+    steps.push_back(
+        objective_set(initial, objective, i == n_inter ? 1.0 : static_cast<double>(i) / n_inter));
   return steps;
 }
 

@@ -240,10 +240,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   const std::vector<PointSet> sets =
       intermediate_targets(plan.initial_points, request.target.points, options.steps);
   const auto set_at = [&](double f) {
-    PointSet set(request.target.points.size());
-    for (std::size_t k = 0; k < set.size(); ++k)
-      set[k] = plan.initial_points[k] + f * (request.target.points[k] - plan.initial_points[k]);
-    return set;
+    return objective_set(plan.initial_points, request.target.points, f);
   };
   struct Pending {
     double fraction;

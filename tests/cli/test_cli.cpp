@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.hpp"
+#include "support/task_text.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -41,9 +42,7 @@ tip:
 )";
 
 std::string band_with(const std::string& from, const std::string& to) {
-  std::string text = kBand;
-  text.replace(text.find(from), from.size(), to);
-  return text;
+  return rodshape::testing::replaced_first(kBand, from, to);
 }
 
 struct BadTask {

@@ -18,6 +18,7 @@
 
 #include "rodshape/robot/arm_model.hpp"
 #include "support/cli_runner.hpp"
+#include "support/task_text.hpp"
 
 namespace {
 
@@ -31,13 +32,7 @@ using Outcome = rodshape::testing::CliOutcome;
 using rodshape::testing::quoted;
 using rodshape::testing::read_file;
 
-/// `text` with the first occurrence of `from` replaced by `to` (which must be there).
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using rodshape::testing::replaced_first;
 
 /// The 1-based line of the first occurrence of `needle` in `text`.
 int line_of(const std::string& text, const std::string& needle) {
@@ -53,8 +48,8 @@ class CliPlanRobot : public rodshape::testing::CliTest {
 
   /// The example, its URDF path made absolute so that the copy works from the temporary directory.
   std::string example_text() const {
-    return replaced(read_file(kExample), "urdf: ../data/robots/panda.urdf",
-                    "urdf: " + (kSource / "data" / "robots" / "panda.urdf").string());
+    return replaced_first(read_file(kExample), "urdf: ../data/robots/panda.urdf",
+                          "urdf: " + (kSource / "data" / "robots" / "panda.urdf").string());
   }
 };
 
@@ -129,7 +124,8 @@ TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
 }
 
 TEST_F(CliPlanRobot, AnUnknownTipLinkIsBadInputNamedWithItsLine) {
-  const std::string text = replaced(example_text(), "tip_link: panda_link8", "tip_link: panda_hnd");
+  const std::string text =
+      replaced_first(example_text(), "tip_link: panda_link8", "tip_link: panda_hnd");
   const fs::path task = write_task("bad_tip.yaml", text);
   const Outcome outcome = plan(task, directory_ / "out");
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
@@ -141,13 +137,14 @@ TEST_F(CliPlanRobot, AnUnknownTipLinkIsBadInputNamedWithItsLine) {
 
 TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
   const fs::path typo =
-      write_task("typo.yaml", replaced(example_text(), "  base_link:", "  base_lnk:"));
+      write_task("typo.yaml", replaced_first(example_text(), "  base_link:", "  base_lnk:"));
   Outcome outcome = plan(typo, directory_ / "out");
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("robot.base_lnk"), std::string::npos) << outcome.err;
 
-  const fs::path missing = write_task(
-      "missing.yaml", replaced(read_file(kExample), "../data/robots/panda.urdf", "nowhere.urdf"));
+  const fs::path missing =
+      write_task("missing.yaml",
+                 replaced_first(read_file(kExample), "../data/robots/panda.urdf", "nowhere.urdf"));
   outcome = plan(missing, directory_ / "out");
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("robot.urdf"), std::string::npos) << outcome.err;
@@ -157,7 +154,8 @@ TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
 
 TEST_F(CliPlanRobot, AnArmOutOfReachWritesThePlanAndExitsThree) {
   const fs::path task = write_task(
-      "far.yaml", replaced(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]"));
+      "far.yaml",
+      replaced_first(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]"));
   const fs::path out = directory_ / "out";
   fs::create_directories(out);
   std::ofstream(out / "joint_trajectory.csv") << "stale\n";  // from an earlier run

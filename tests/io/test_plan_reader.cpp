@@ -2,6 +2,7 @@
 // that the one-line message names the file, the line and the field; the sections a plan adds read
 // into the request and options they describe; the bundled plan examples read.
 #include <gtest/gtest.h>
+#include "support/task_text.hpp"
 
 #include <filesystem>
 #include <string>
@@ -40,11 +41,7 @@ trajectory:
 
 /// kPlan with the first occurrence of `from` replaced by `to`.
 std::string plan_with(const std::string& from, const std::string& to) {
-  std::string text = kPlan;
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
+  return testing::replaced_first(kPlan, from, to);
 }
 
 /// The message of the InputError that reading `text` throws, or "" if it reads.

@@ -2,6 +2,7 @@
 // the one-line message names the file, the line and the field; and the good cases: the bundled
 // examples read into the expected rod, and equivalent spellings give equal tasks.
 #include <gtest/gtest.h>
+#include "support/task_text.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -41,11 +42,7 @@ tip:
 
 /// kBand with the first occurrence of `from` replaced by `to`.
 std::string band_with(const std::string& from, const std::string& to) {
-  std::string text = kBand;
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
+  return testing::replaced_first(kBand, from, to);
 }
 
 /// The message of the InputError that reading `text` throws, or "" if it reads.

@@ -17,8 +17,12 @@ using PointSet = std::vector<Eigen::Vector3d>;
 /// The closest point of the initial curve Γ_0 to each objective point (continuous in s).
 PointSet project_onto_initial_shape(const RodConfiguration& initial, const PointSet& objective);
 
-/// The n_inter intermediate sets; throws InputError ("trajectory.steps") when n_inter < 1 and when
+/// p_init + fraction (p_obj - p_init); exactly p_obj when fraction is 1. Throws InputError when
 /// the two sets differ in size.
+PointSet objective_set(const PointSet& initial, const PointSet& objective, double fraction);
+
+/// The n_inter intermediate sets, objective_set(i / n_inter) for i = 1 … n_inter; throws InputError
+/// ("trajectory.steps") when n_inter < 1 and when the two sets differ in size.
 std::vector<PointSet> intermediate_targets(const PointSet& initial,
                                            const PointSet& objective,
                                            int n_inter);
