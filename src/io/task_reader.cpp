@@ -182,9 +182,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   // The tip must start inside the workspace (plan_shape checks this too, without a line): the
   // initial tip pose, or the tip of the rod at rest.
   if (!request.workspace.unbounded()) {
-    const Eigen::Vector3d tip = request.initial_tip ? request.initial_tip->position
-                                                    : integrate(request.rod, BaseWrench{}).p.back();
-    if (!request.workspace.contains(tip, 1e-9)) {
+    const Pose tip_pose = request.initial_tip ? *request.initial_tip
+                                              : integrate(request.rod, BaseWrench{}).tip();
+    if (!request.workspace.contains(tip_pose, 1e-9)) {
+      const Eigen::Vector3d& tip = tip_pose.position;
       std::ostringstream where;
       where.precision(4);
       where << "[" << tip.x() << ", " << tip.y() << ", " << tip.z() << "]";

@@ -1,7 +1,8 @@
 // shape_problem.cpp: F(w), ∇F(w), g(w) and dg/dw from one integration with all-node derivatives.
 //
 // Rows of g, in this order (constraint_count() in all):
-//  1. workspace, on the tip p(L): g_ws(p(L)), d/dw = dg_ws/dp · tip_dp_dw;
+//  1. workspace, on the tip pose (p(L), R(L)): g_ws, d/dw = dg_ws/dp · tip_dp_dw
+//     + dg_ws/dθ · tip_dtheta_dw (only the reach shell depends on R(L));
 //  2. grasp, one per true entry of Grasp::zero_wrench (force x, y, z, then moment x, y, z): the tip
 //     wrench in the tip frame, e_kᵀ R(L)ᵀ n(L) or e_kᵀ R(L)ᵀ m(L), bounds [0, 0];
 //     δ(Rᵀn) = (Rᵀn) × θ_L + Rᵀ δn (δR = R θ̂);
@@ -109,6 +110,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   dg_dw_ = Eigen::MatrixXd::Zero(constraint_count_, 6);
   workspace_g_ = Eigen::VectorXd::Zero(rows_.workspace);
   workspace_dg_dp_ = Eigen::MatrixXd::Zero(rows_.workspace, 3);
+  workspace_dg_dtheta_ = Eigen::MatrixXd::Zero(rows_.workspace, 3);
 }
 
 void ShapeProblem::evaluate(const Vector6d& w) {
@@ -161,9 +163,12 @@ void ShapeProblem::evaluate_constraints() {
   int row = 0;
   // 1. workspace
   if (rows_.workspace > 0) {
-    workspace_.evaluate(c.p[N], workspace_g_, workspace_dg_dp_);
+    workspace_.evaluate(Pose{c.p[N], c.R[N]}, workspace_g_, workspace_dg_dp_,
+                        workspace_dg_dtheta_);
     g_.head(rows_.workspace) = workspace_g_;
     dg_dw_.topRows(rows_.workspace) = workspace_dg_dp_.lazyProduct(c.tip_dp_dw);  // no GEMM buffers
+    if (workspace_.reach)
+      dg_dw_.topRows(rows_.workspace) += workspace_dg_dtheta_.lazyProduct(c.tip_dtheta_dw);
     row += rows_.workspace;
   }
   // 2. grasp: the tip wrench in the tip frame

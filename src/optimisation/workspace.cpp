@@ -1,12 +1,15 @@
-// workspace.cpp: the rows of g(p) for p(L) ∈ Ws, in the order box (x, y, z), inside balls, outside
-// balls, half-spaces. The balls are written squared, |p - c|² ≤ r² (≥ r² outside), so that g is a
-// polynomial in p (smooth everywhere, also at the centre, where |p - c| is not).
+// workspace.cpp: the rows of g for the tip pose (p, R) ∈ Ws, in the order box (x, y, z), inside
+// balls, outside balls, half-spaces, reach shell (outer, inner). The balls are written squared,
+// |p - c|² ≤ r² (≥ r² outside), so that g is a polynomial in p (smooth everywhere, also at the
+// centre, where |p - c| is not). The reach shell's point q = p + R t moves with the tip's rotation:
+//   δq = δp + R θ̂ t = δp - R t̂ θ,   so  d|q - c|²/dp = 2 (q - c)ᵀ,  d|q - c|²/dθ = -2 (q - c)ᵀ R t̂.
 #include "rodshape/optimisation/workspace.hpp"
 
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "rodshape/core/so3.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -22,10 +25,13 @@ std::string indexed(const char* name, std::size_t i) {
 }  // namespace
 
 int Workspace::constraint_count() const {
-  return (box ? 3 : 0) + static_cast<int>(inside.size() + outside.size() + half_spaces.size());
+  const int reach_rows = reach ? (reach->inner_radius > 0.0 ? 2 : 1) : 0;
+  return (box ? 3 : 0) + static_cast<int>(inside.size() + outside.size() + half_spaces.size()) +
+         reach_rows;
 }
 
-bool Workspace::contains(const Eigen::Vector3d& p, double tolerance) const {
+bool Workspace::contains(const Pose& tip, double tolerance) const {
+  const Eigen::Vector3d& p = tip.position;
   if (box) {
     if ((p.array() < box->lower.array() - tolerance).any()) return false;
     if ((p.array() > box->upper.array() + tolerance).any()) return false;
@@ -36,13 +42,20 @@ bool Workspace::contains(const Eigen::Vector3d& p, double tolerance) const {
     if ((p - ball.center).norm() < ball.radius - tolerance) return false;
   for (const HalfSpace& half : half_spaces)  // distance to the plane, not nᵀp - offset
     if (half.normal.dot(p) - half.offset > tolerance * half.normal.norm()) return false;
+  if (reach) {
+    const double r = (reach->point(tip) - reach->center).norm();
+    if (r > reach->outer_radius + tolerance || r < reach->inner_radius - tolerance) return false;
+  }
   return true;
 }
 
-void Workspace::evaluate(const Eigen::Vector3d& p,
+void Workspace::evaluate(const Pose& tip,
                          Eigen::Ref<Eigen::VectorXd> g,
-                         Eigen::Ref<Eigen::MatrixXd> dg_dp) const {
+                         Eigen::Ref<Eigen::MatrixXd> dg_dp,
+                         Eigen::Ref<Eigen::MatrixXd> dg_dtheta) const {
+  const Eigen::Vector3d& p = tip.position;
   const bool with_jacobian = dg_dp.rows() > 0;
+  if (with_jacobian) dg_dtheta.setZero();
   int row = 0;
   if (box) {
     g.segment<3>(row) = p;  // lower ≤ p ≤ upper
@@ -61,6 +74,17 @@ void Workspace::evaluate(const Eigen::Vector3d& p,
     g(row) = half.normal.dot(p);  // nᵀp ≤ offset
     if (with_jacobian) dg_dp.row(row) = half.normal.transpose();
     ++row;
+  }
+  if (reach) {
+    const Eigen::Vector3d d = reach->point(tip) - reach->center;
+    const int rows = reach->inner_radius > 0.0 ? 2 : 1;  // the same function, two bounds
+    for (int k = 0; k < rows; ++k, ++row) {
+      g(row) = d.squaredNorm();  // |q - c|²
+      if (with_jacobian) {
+        dg_dp.row(row) = 2.0 * d.transpose();
+        dg_dtheta.row(row) = -2.0 * d.transpose() * tip.rotation * hat(reach->tip_point);
+      }
+    }
   }
 }
 
@@ -82,6 +106,14 @@ void Workspace::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::Vect
   for (const HalfSpace& half : half_spaces) {
     lower(row) = -kInf;
     upper(row++) = half.offset;
+  }
+  if (reach) {
+    lower(row) = -kInf;
+    upper(row++) = reach->outer_radius * reach->outer_radius;
+    if (reach->inner_radius > 0.0) {
+      lower(row) = reach->inner_radius * reach->inner_radius;
+      upper(row++) = kInf;
+    }
   }
 }
 
@@ -110,6 +142,16 @@ void Workspace::validate() const {
     detail::require_finite(field + ".normal", half_spaces[i].normal);
     if (half_spaces[i].normal.norm() == 0.0) throw InputError(field + ".normal must be non-zero");
     detail::require_finite(field + ".offset", half_spaces[i].offset);
+  }
+  if (reach) {
+    detail::require_finite("workspace.reach.center", reach->center);
+    detail::require_finite("workspace.reach.tip_point", reach->tip_point);
+    detail::require_positive("workspace.reach.outer_radius", reach->outer_radius);
+    detail::require_non_negative("workspace.reach.inner_radius", reach->inner_radius);
+    if (reach->inner_radius >= reach->outer_radius)
+      throw InputError("workspace.reach: inner_radius = " +
+                       detail::format_value(reach->inner_radius) + " is not below outer_radius = " +
+                       detail::format_value(reach->outer_radius) + " (an empty shell)");
   }
 }
 

@@ -44,9 +44,12 @@ Vector6d base_wrench(const ClampedRod& rod) {
   return xi.cwiseProduct(testing::wrench_scales(rod));
 }
 
-/// Every kind of workspace set, each with a non-trivial gradient at the tip.
+/// Every kind of workspace set, each with a non-trivial gradient at the tip (the reach shell's
+/// point off the tip, so that its rows depend on R(L)).
 Workspace every_kind_of_workspace(const Eigen::Vector3d& tip) {
   Workspace ws;
+  ws.reach = Workspace::ReachShell{tip + Eigen::Vector3d(0.3, -0.2, 0.1), 0.1, 0.9,
+                                   Eigen::Vector3d(0.05, -0.08, -0.12)};
   ws.box =
       Workspace::Box{tip - Eigen::Vector3d(0.1, 0.2, 0.3), tip + Eigen::Vector3d::Constant(0.1)};
   ws.inside.push_back({tip + Eigen::Vector3d(0.05, -0.1, 0.02), 0.5});
@@ -96,7 +99,7 @@ TEST_P(ShapeProblemDerivatives, CostGradientAndEveryJacobianRowMatchCentralFinit
   const ClampedRod& rod = problem.rod();
   const int N = rod.intervals;
   const ShapeProblem::RowBlocks& rows = problem.row_blocks();
-  EXPECT_EQ(rows.workspace, 6);
+  EXPECT_EQ(rows.workspace, 8);
   EXPECT_EQ(rows.grasp, 2);
   EXPECT_EQ(rows.curvature, N + 1);
   EXPECT_EQ(rows.axial, GetParam().model == ConstitutiveModel::Cosserat ? N + 1 : 0);
@@ -173,21 +176,29 @@ TEST(ShapeProblem, RowValuesAndBoundsAreThoseDocumented) {
   EXPECT_EQ(up(4), kInf);
   EXPECT_TRUE(CompareScalars(g(5), ws.half_spaces[0].normal.dot(tip), 1e-15));
   EXPECT_EQ(up(5), 1.0);
-  // grasp: fx and mx of the tip wrench in the tip frame, = 0
+  // reach: |p(L) + R(L) t - c|² ≤ r_out², ≥ r_in²
   const Eigen::Matrix3d& R = c.R.back();
-  EXPECT_TRUE(CompareScalars(g(6), (R.transpose() * c.n.back()).x(), 1e-15));
-  EXPECT_TRUE(CompareScalars(g(7), (R.transpose() * c.m.back()).x(), 1e-15));
-  EXPECT_EQ(lo(6), 0.0);
-  EXPECT_EQ(up(7), 0.0);
+  const double reach_squared = (tip + R * ws.reach->tip_point - ws.reach->center).squaredNorm();
+  EXPECT_TRUE(CompareScalars(g(6), reach_squared, 1e-15));
+  EXPECT_TRUE(CompareScalars(g(7), reach_squared, 1e-15));
+  EXPECT_EQ(lo(6), -kInf);
+  EXPECT_EQ(up(6), 0.81);
+  EXPECT_EQ(lo(7), 0.1 * 0.1);
+  EXPECT_EQ(up(7), kInf);
+  // grasp: fx and mx of the tip wrench in the tip frame, = 0
+  EXPECT_TRUE(CompareScalars(g(8), (R.transpose() * c.n.back()).x(), 1e-15));
+  EXPECT_TRUE(CompareScalars(g(9), (R.transpose() * c.m.back()).x(), 1e-15));
+  EXPECT_EQ(lo(8), 0.0);
+  EXPECT_EQ(up(9), 0.0);
   // curvature |u - ũ|² ≤ κ², axial v_z - ṽ_z ∈ [-ε, ε], node by node
   const int nodes = c.nodes();
   const Eigen::Vector3d& u_rest = problem.rod().properties.u_rest;
   for (int i = 0; i < nodes; ++i) {
-    EXPECT_TRUE(CompareScalars(g(8 + i), (c.u[i] - u_rest).squaredNorm(), 1e-12)) << i;
-    EXPECT_EQ(up(8 + i), 64.0);
-    EXPECT_TRUE(CompareScalars(g(8 + nodes + i), c.v[i].z() - 1.0, 1e-15)) << i;
-    EXPECT_EQ(lo(8 + nodes + i), -0.01);
-    EXPECT_EQ(up(8 + nodes + i), 0.01);
+    EXPECT_TRUE(CompareScalars(g(10 + i), (c.u[i] - u_rest).squaredNorm(), 1e-12)) << i;
+    EXPECT_EQ(up(10 + i), 64.0);
+    EXPECT_TRUE(CompareScalars(g(10 + nodes + i), c.v[i].z() - 1.0, 1e-15)) << i;
+    EXPECT_EQ(lo(10 + nodes + i), -0.01);
+    EXPECT_EQ(up(10 + nodes + i), 0.01);
   }
 }
 
@@ -311,6 +322,15 @@ TEST(ShapeProblem, BadInputThrowsInputErrorNamingTheField) {
   ws.inside.push_back({Eigen::Vector3d::Zero(), -0.2});
   const std::string radius = input_error_message([&] { ShapeProblem problem(rod, good, ws); });
   EXPECT_NE(radius.find("workspace.inside[0].radius"), std::string::npos) << radius;
+  const auto reach_error = [&](double inner, double outer, double x) {
+    Workspace shell;
+    shell.reach = Workspace::ReachShell{{x, 0.0, 0.0}, inner, outer, Eigen::Vector3d::Zero()};
+    return input_error_message([&] { ShapeProblem problem(rod, good, shell); });
+  };
+  EXPECT_NE(reach_error(0.0, -0.5, 0.0).find("workspace.reach.outer_radius"), std::string::npos);
+  EXPECT_NE(reach_error(-0.1, 0.5, 0.0).find("workspace.reach.inner_radius"), std::string::npos);
+  EXPECT_NE(reach_error(0.6, 0.5, 0.0).find("empty shell"), std::string::npos);
+  EXPECT_NE(reach_error(0.1, 0.5, std::nan("")).find("workspace.reach.center"), std::string::npos);
   for (double bad : {0.0, -1.0}) {
     StrainLimits limits;
     limits.max_curvature = bad;

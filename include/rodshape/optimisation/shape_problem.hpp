@@ -1,6 +1,6 @@
 // shape_problem.hpp: the paper's optimisation over the base wrench w = (n(0), m(0)):
 //   min_w F(w) = W1/(2L) ∫ (Δvᵀ K_tra Δv + Δuᵀ K_rot Δu) ds + W2 Σᵢ dist(Γ, p_obj,i)
-//   s.t. p(L) ∈ Ws, grasp wrench components = 0, strain limits, w_lower ≤ w ≤ w_upper,
+//   s.t. (p(L), R(L)) ∈ Ws, grasp wrench components = 0, strain limits, w_lower ≤ w ≤ w_upper,
 // with F, g and their exact first derivatives from one integration with all-node derivatives.
 // Note W1/(2L) ∫ (…) ds = W1 E / L with E the elastic energy.
 #pragma once
@@ -38,7 +38,7 @@ class ShapeProblem {
                WrenchBounds wrench_bounds = {});
 
   /// How many rows of g each block has; the blocks follow each other in this order (see
-  /// shape_problem.cpp): workspace (on p(L)), grasp (one per zero_wrench entry), curvature (one per
+  /// shape_problem.cpp): workspace (on the tip pose), grasp (one per zero_wrench entry), curvature (one per
   /// node), axial strain (one per node, Cosserat only).
   struct RowBlocks {
     int workspace = 0, grasp = 0, curvature = 0, axial = 0;
@@ -97,6 +97,7 @@ class ShapeProblem {
   // scratch for the workspace rows
   Eigen::VectorXd workspace_g_;
   Eigen::MatrixXd workspace_dg_dp_;
+  Eigen::MatrixXd workspace_dg_dtheta_;
 };
 
 }  // namespace rodshape
