@@ -13,20 +13,6 @@ namespace rodshape {
 
 namespace {
 
-Pose compose(const Pose& a, const Pose& b) {
-  Pose result;
-  result.position = a.position + a.rotation * b.position;
-  result.rotation = a.rotation * b.rotation;
-  return result;
-}
-
-Pose inverse(const Pose& a) {
-  Pose result;
-  result.rotation = a.rotation.transpose();
-  result.position = -(result.rotation * a.position);
-  return result;
-}
-
 std::string describe_pose(const Pose& pose) {
   std::ostringstream out;
   out.precision(6);

@@ -38,18 +38,6 @@ std::string to_string(PlanStatus status) {
 
 namespace {
 
-/// world_T_a · a_T_b.
-Pose compose(const Pose& world_T_a, const Pose& a_T_b) {
-  return {world_T_a.position + world_T_a.rotation * a_T_b.position,
-          world_T_a.rotation * a_T_b.rotation};
-}
-
-/// (world_T_b · (a_T_b)⁻¹) = world_T_a.
-Pose remove_offset(const Pose& world_T_b, const Pose& a_T_b) {
-  const Eigen::Matrix3d R = world_T_b.rotation * a_T_b.rotation.transpose();
-  return {world_T_b.position - R * a_T_b.position, R};
-}
-
 std::string format_point(const Eigen::Vector3d& p) {
   std::ostringstream out;
   out.precision(4);
@@ -136,7 +124,7 @@ SegmentTracking track_segment(const PlanRequest& request,
   for (int j = 1; j <= options.tracking_substeps; ++j) {
     const double sigma = static_cast<double>(j) / options.tracking_substeps;
     const Pose ee = interpolate(from, step.end_effector, sigma);
-    const Pose tip = remove_offset(ee, request.grasp.tip_to_end_effector);
+    const Pose tip = compose(ee, inverse(request.grasp.tip_to_end_effector));
     const ShootingSolution tracked =
         solve_equilibrium(request.rod, held_tip(tip, request.grasp), w, shooting);
     if (!tracked.summary.converged()) {

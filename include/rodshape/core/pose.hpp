@@ -19,4 +19,15 @@ struct Pose {
   }
 };
 
+/// a_T_c = a_T_b · b_T_c.
+inline Pose compose(const Pose& a_T_b, const Pose& b_T_c) {
+  return {a_T_b.position + a_T_b.rotation * b_T_c.position, a_T_b.rotation * b_T_c.rotation};
+}
+
+/// b_T_a = (a_T_b)⁻¹.
+inline Pose inverse(const Pose& a_T_b) {
+  const Eigen::Matrix3d R = a_T_b.rotation.transpose();
+  return {-(R * a_T_b.position), R};
+}
+
 }  // namespace rodshape

@@ -25,6 +25,13 @@ struct JointInfo {
   double max_velocity = 0.0;  // rad/s or m/s
 };
 
+/// A moving joint's axis at some joint positions, in the base frame: the line through `origin`
+/// along the unit vector `direction` (the rotation axis, or the direction of travel).
+struct JointAxis {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+};
+
 class ArmModel {
  public:
   /// Reads the URDF file at `path` and takes the chain from `base_link` to `tip_link`. An empty
@@ -74,6 +81,10 @@ class ArmModel {
   void forward_kinematics(const Eigen::VectorXd& q,
                           Pose& base_T_tip,
                           Eigen::Matrix<double, 6, Eigen::Dynamic>& J_twist_q) const;
+
+  /// Every moving joint's axis at joint positions `q` (n finite entries, else InputError), in the
+  /// chain's order.
+  std::vector<JointAxis> joint_axes(const Eigen::VectorXd& q) const;
 
   /// An upper bound of the distance from the base frame's origin to the tip's origin over all
   /// joint positions (the sum of the chain's offsets and prismatic strokes).

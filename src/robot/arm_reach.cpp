@@ -1,0 +1,171 @@
+// arm_reach.cpp: shoulder and wrist points from the joint axes, the range of |w - c| by sampling
+// and projected gradient refinement, and the shell in the rod's tip frame.
+//
+// Nearest point of line a (a₀ + s â) to line b (b₀ + t b̂), unit directions, c = â·b̂,
+// d = â·(a₀ - b₀), e = b̂·(a₀ - b₀):  s = (c e - d) / (1 - c²); parallel lines: s = -d (the foot of
+// b₀ on a).
+// Gradient of r(q) = |w(q) - c|: the wrist point moves with the flange, ẇ = v + ω × (R w_flange)
+// (v, ω the flange's twist, KDL's Jacobian), so  ∂r/∂q = êᵀ (J_v - [R w_flange]ₓ J_ω),
+// ê = (w - c) / r.
+#include "rodshape/robot/arm_reach.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "rodshape/core/so3.hpp"
+#include "rodshape/error.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Eigen::Vector3d nearest_point_on(const JointAxis& a, const JointAxis& b) {
+  const Eigen::Vector3d ab = a.origin - b.origin;
+  const double c = a.direction.dot(b.direction);
+  const double d = a.direction.dot(ab);
+  const double e = b.direction.dot(ab);
+  const double denominator = 1.0 - c * c;
+  const double s = denominator > 1e-12 ? (c * e - d) / denominator : -d;
+  return a.origin + s * a.direction;
+}
+
+/// The joint positions the axes are read at: zero, clamped into the limits.
+Eigen::VectorXd reference_positions(const ArmModel& arm) {
+  return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
+}
+
+/// Sampling range of a joint: its limits, or one turn for a continuous joint.
+double sample_lower(const JointInfo& joint) { return std::isfinite(joint.lower) ? joint.lower : -kPi; }
+double sample_upper(const JointInfo& joint) { return std::isfinite(joint.upper) ? joint.upper : kPi; }
+
+struct DistanceAt {
+  double r = 0.0;
+  Eigen::VectorXd gradient;  // ∂r/∂q
+};
+
+DistanceAt distance_and_gradient(const ArmModel& arm,
+                                 const ArmReach& reach,
+                                 const Eigen::VectorXd& q) {
+  Pose base_T_flange;
+  Eigen::Matrix<double, 6, Eigen::Dynamic> J;
+  arm.forward_kinematics(q, base_T_flange, J);
+  const Eigen::Vector3d arm_vector = base_T_flange.rotation * reach.wrist_in_tip_link;
+  const Eigen::Vector3d d = base_T_flange.position + arm_vector - reach.shoulder;
+  DistanceAt result;
+  result.r = d.norm();
+  result.gradient = Eigen::VectorXd::Zero(arm.joints());
+  if (result.r > 1e-12) {
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> dw_dq =
+        J.topRows<3>() - hat(arm_vector) * J.bottomRows<3>();
+    result.gradient = (d / result.r).transpose() * dw_dq;
+  }
+  return result;
+}
+
+/// From `q`, projected gradient steps that increase (sign +1) or decrease (sign -1) r within the
+/// limits, with a step that doubles after a success and halves after a failure.
+void refine(const ArmModel& arm,
+            const ArmReach& reach,
+            double sign,
+            int steps,
+            Eigen::VectorXd& q,
+            double& r) {
+  const Eigen::VectorXd lower = arm.lower_limits(), upper = arm.upper_limits();
+  DistanceAt at = distance_and_gradient(arm, reach, q);
+  double step = 0.05;  // rad (or m) for the largest component
+  for (int k = 0; k < steps && step > 1e-12; ++k) {
+    Eigen::VectorXd direction = sign * at.gradient;
+    for (int i = 0; i < q.size(); ++i)  // a joint on a limit that the step pushes further stays
+      if ((q(i) <= lower(i) && direction(i) < 0.0) || (q(i) >= upper(i) && direction(i) > 0.0))
+        direction(i) = 0.0;
+    const double largest = direction.cwiseAbs().maxCoeff();
+    if (!(largest > 0.0)) break;
+    const Eigen::VectorXd trial =
+        (q + (step / largest) * direction).cwiseMax(lower).cwiseMin(upper);
+    const DistanceAt there = distance_and_gradient(arm, reach, trial);
+    if (sign * (there.r - at.r) > 0.0) {
+      q = trial;
+      at = there;
+      step *= 2.0;
+    } else {
+      step *= 0.5;
+    }
+  }
+  r = at.r;
+}
+
+}  // namespace
+
+void ArmReachOptions::validate() const {
+  if (samples < 1) throw InputError("reach.samples = " + std::to_string(samples) + " must be >= 1");
+  if (refinement_steps < 0)
+    throw InputError("reach.refinement_steps = " + std::to_string(refinement_steps) +
+                     " must be >= 0");
+}
+
+double ArmReach::wrist_distance(const Pose& base_T_flange) const {
+  return (base_T_flange.position + base_T_flange.rotation * wrist_in_tip_link - shoulder).norm();
+}
+
+ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options) {
+  options.validate();
+  const int n = arm.joints();
+  ArmReach reach;
+  const Eigen::VectorXd q0 = reference_positions(arm);
+  const std::vector<JointAxis> axes = arm.joint_axes(q0);
+  reach.shoulder = n >= 2 ? nearest_point_on(axes[0], axes[1]) : axes[0].origin;
+  const Eigen::Vector3d wrist_in_base =
+      n >= 2 ? nearest_point_on(axes[n - 1], axes[n - 2]) : axes[n - 1].origin;
+  const Pose base_T_flange = arm.forward_kinematics(q0);
+  reach.wrist_in_tip_link = base_T_flange.rotation.transpose() * (wrist_in_base - base_T_flange.position);
+
+  std::mt19937 random(options.random_seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<JointInfo>& joints = arm.joint_info();
+  Eigen::VectorXd q(n);
+  reach.min_distance = std::numeric_limits<double>::infinity();
+  reach.max_distance = -1.0;
+  for (int k = 0; k < options.samples; ++k) {
+    for (int i = 0; i < n; ++i)
+      q(i) = sample_lower(joints[i]) + unit(random) * (sample_upper(joints[i]) - sample_lower(joints[i]));
+    const double r = reach.wrist_distance(arm.forward_kinematics(q));
+    if (r < reach.min_distance) {
+      reach.min_distance = r;
+      reach.q_min_distance = q;
+    }
+    if (r > reach.max_distance) {
+      reach.max_distance = r;
+      reach.q_max_distance = q;
+    }
+  }
+  refine(arm, reach, +1.0, options.refinement_steps, reach.q_max_distance, reach.max_distance);
+  refine(arm, reach, -1.0, options.refinement_steps, reach.q_min_distance, reach.min_distance);
+  return reach;
+}
+
+Workspace::ReachShell reach_shell(const ArmReach& reach,
+                                  const ArmPlacement& placement,
+                                  const Pose& tip_T_ee,
+                                  double margin) {
+  detail::require_non_negative("reach.margin", margin);
+  Workspace::ReachShell shell;
+  shell.center = placement.world_T_base.position + placement.world_T_base.rotation * reach.shoulder;
+  const Pose tip_T_flange = compose(tip_T_ee, inverse(placement.flange_T_ee));
+  shell.tip_point = tip_T_flange.position + tip_T_flange.rotation * reach.wrist_in_tip_link;
+  shell.inner_radius = reach.min_distance + margin;
+  shell.outer_radius = reach.max_distance - margin;
+  if (!(shell.outer_radius > shell.inner_radius)) {
+    throw InputError("reach.margin = " + detail::format_value(margin) +
+                     " leaves no shell: the wrist reaches " + detail::format_value(reach.min_distance) +
+                     " to " + detail::format_value(reach.max_distance) + " m from the shoulder");
+  }
+  return shell;
+}
+
+}  // namespace rodshape
