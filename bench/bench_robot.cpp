@@ -44,7 +44,7 @@ void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
   JointTrajectory joints;
   for (auto _ : state) {
     joints = joint_trajectory(task.robot->arm, plan.end_effector_path, task.robot->placement,
-                              task.robot->options);
+                              task.robot->options.joints);
     benchmark::DoNotOptimize(joints.q.data());
   }
   if (!joints.complete()) state.SkipWithError(joints.message.c_str());

@@ -1,8 +1,9 @@
 // plan_command.cpp: plan the shape a task file asks for and write plan.json, trajectory.csv and
-// plan.svg into the output directory; with a robot section, also the joint trajectory that follows
-// the end-effector path (joint_trajectory.csv and .json).
-//   task file -> PlanTask (io) -> plan_shape (trajectory) -> joint_trajectory (robot)
-//             -> JSON, CSV, SVG (io)
+// plan.svg into the output directory; with a robot section, the plan respects the arm's reach, its
+// poses are checked by inverse kinematics, and the joint trajectory that follows the end-effector
+// path is written too (joint_trajectory.csv and .json).
+//   task file -> PlanTask (io) -> plan_shape (trajectory), or with a robot plan_with_arm (robot:
+//             reach, IK checks, re-plans, joint trajectory) -> JSON, CSV, SVG (io)
 #include "plan_command.hpp"
 
 #include <filesystem>
@@ -18,7 +19,7 @@
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
-#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/robot/arm_plan.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
 
 namespace rodshape::cli {
@@ -77,30 +78,22 @@ class PlanCommand final : public Command {
   int run() override {
     const PlanTask task = read_plan_task(task_path_);
     check_directory(output_directory_);
-    ShapePlan plan;
+    ShapePlan shape_plan;
+    std::optional<ArmPlan> arm;
     try {
-      plan = plan_shape(task.request, task.options);
+      if (task.robot) {
+        arm = plan_with_arm(task.request, task.options, task.robot->arm, task.robot->placement,
+                            task.robot->options);
+      } else {
+        shape_plan = plan_shape(task.request, task.options);
+      }
     } catch (const InputError& error) {
       // The library names the field; say which file it is about.
       throw InputError(task_path_ + ": " + error.what());
     }
-
-    // The robot is a composition of the plan's path with an arm: computed here, not in plan_shape.
-    std::optional<JointTrajectory> joints;
-    if (task.robot) {
-      if (plan.status != PlanStatus::Infeasible && !plan.end_effector_path.empty()) {
-        try {
-          joints = joint_trajectory(task.robot->arm, plan.end_effector_path, task.robot->placement,
-                                    task.robot->options);
-        } catch (const InputError& error) {
-          throw InputError(task_path_ + ": robot: " + error.what());
-        }
-      } else {
-        joints.emplace();
-        joints->joint_names = task.robot->arm.joint_names();
-        joints->message = "no end-effector path to follow";
-      }
-    }
+    const ShapePlan& plan = arm ? arm->plan : shape_plan;
+    const JointTrajectory* joints = arm ? &arm->joints : nullptr;
+    if (arm && arm->status == ArmPlanStatus::NotChecked) arm->joints.message = arm->message;
 
     make_directory(output_directory_);
     const fs::path directory(output_directory_);
@@ -109,7 +102,7 @@ class PlanCommand final : public Command {
       write_file_atomically((directory / name).string(), content);
       written.push_back(name);
     };
-    write("plan.json", plan_result_json(plan, task, joints ? &*joints : nullptr));
+    write("plan.json", plan_result_json(plan, task, arm ? &*arm : nullptr));
     if (plan.status != PlanStatus::Infeasible) {
       write("trajectory.csv", trajectory_csv(plan.end_effector_path));
       write("plan.svg", plan_svg(plan, task));
@@ -143,6 +136,11 @@ class PlanCommand final : public Command {
       }
       if (plan.tracking.performed && plan.tracking.jump)
         std::cout << "; tracking: " << plan.tracking.note;
+      if (arm && arm->shell) {
+        std::cout << "; reach shell " << std::setprecision(3) << arm->shell->inner_radius << "–"
+                  << arm->shell->outer_radius << " m";
+        if (!arm->replans.empty()) std::cout << " (" << arm->replans.size() << " re-plans)";
+      }
       if (joints && joints->complete()) {
         std::cout << "; joint trajectory: " << joints->t.size() << " samples, "
                   << std::setprecision(4) << joints->duration() << " s";
@@ -155,8 +153,8 @@ class PlanCommand final : public Command {
 
     switch (plan.status) {
       case PlanStatus::Complete:
-        if (joints && !joints->complete()) {
-          std::cerr << "error: " << task_path_ << ": joint trajectory: " << joints->message << "\n";
+        if (arm && !arm->reachable()) {
+          std::cerr << "error: " << task_path_ << ": robot: " << arm->message << "\n";
           return kNotConverged;
         }
         return kSuccess;

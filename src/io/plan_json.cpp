@@ -171,11 +171,40 @@ Json ros_duration(double seconds) {
   return {{"sec", sec}, {"nanosec", nanosec}};
 }
 
+Json shell_object(const Workspace::ReachShell& shell) {
+  return {{"center", json_vector(shell.center)},
+          {"inner_radius", json_number(shell.inner_radius)},
+          {"outer_radius", json_number(shell.outer_radius)},
+          {"tip_point", json_vector(shell.tip_point)}};
+}
+
+Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
+  Json reach = nullptr;
+  if (arm.reach && arm.shell) {
+    reach = shell_object(*arm.shell);
+    reach["wrist_range"] = {json_number(arm.reach->min_distance),
+                            json_number(arm.reach->max_distance)};
+    reach["margin"] = json_number(options.reach_margin);
+  }
+  Json replans = Json::array();
+  for (const Replan& replan : arm.replans) {
+    Json entry = shell_object(replan.shell);
+    entry["reason"] = replan.reason;
+    entry["wrist_distance"] = json_number(replan.wrist_distance);
+    replans.push_back(std::move(entry));
+  }
+  Json waypoints = Json::array();
+  for (const Eigen::VectorXd& q : arm.waypoint_q) waypoints.push_back(joint_values(q));
+  return {{"status", to_string(arm.status)},
+          {"message", arm.message},
+          {"reach", std::move(reach)},
+          {"replans", std::move(replans)},
+          {"waypoint_joint_positions", std::move(waypoints)}};
+}
+
 }  // namespace
 
-std::string plan_result_json(const ShapePlan& plan,
-                             const PlanTask& task,
-                             const JointTrajectory* joints) {
+std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const ArmPlan* arm) {
   const PlanRequest& request = task.request;
   const ConstitutiveModel model = request.rod.properties.model;
   const bool complete = plan.status == PlanStatus::Complete;
@@ -202,7 +231,9 @@ std::string plan_result_json(const ShapePlan& plan,
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
-  result["joint_trajectory"] = joints ? joint_trajectory_object(*joints) : Json(nullptr);
+  result["robot"] =
+      arm && task.robot ? robot_object(*arm, task.robot->options) : Json(nullptr);
+  result["joint_trajectory"] = arm ? joint_trajectory_object(arm->joints) : Json(nullptr);
   return io_detail::format_json(result);
 }
 

@@ -150,7 +150,7 @@ void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& o
 
 PlanRobot read_robot_section(const YamlField& robot, const std::string& task_directory) {
   robot.expect_mapping(
-      {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed"},
+      {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach"},
       {{"flange_T_ee", "the end effector on the flange is robot.flange_to_end_effector"},
        {"tool", "the end effector on the flange is robot.flange_to_end_effector"},
        {"world_T_base", "the arm's base in the world is robot.base"}});
@@ -189,7 +189,17 @@ PlanRobot read_robot_section(const YamlField& robot, const std::string& task_dir
     for (std::size_t i = 0; i < values.size(); ++i)
       q(static_cast<Eigen::Index>(i)) = values[i].number();
     seed.located([&] { result.arm.check_joint_positions(q, seed.path()); });
-    result.options.seed = q;
+    result.options.joints.seed = q;
+  }
+  if (const YamlField reach = robot.get("reach"); reach.present()) {
+    reach.expect_mapping({"use", "margin", "tightening", "max_replans", "samples"});
+    if (const YamlField use = reach.get("use"); use.present()) result.options.use_reach = use.boolean();
+    read_number(reach, "margin", result.options.reach_margin);
+    read_number(reach, "tightening", result.options.replan_tightening);
+    read_integer(reach, "max_replans", result.options.max_replans);
+    read_integer(reach, "samples", result.options.reach.samples);
+    // The names InputError uses ("reach.margin", ...) are the fields of this section.
+    reach.located([&] { result.options.validate(); });
   }
   return result;
 }

@@ -103,9 +103,9 @@ void refine(const ArmModel& arm,
 }  // namespace
 
 void ArmReachOptions::validate() const {
-  if (samples < 1) throw InputError("reach.samples = " + std::to_string(samples) + " must be >= 1");
+  if (samples < 1) throw InputError("robot.reach.samples = " + std::to_string(samples) + " must be >= 1");
   if (refinement_steps < 0)
-    throw InputError("reach.refinement_steps = " + std::to_string(refinement_steps) +
+    throw InputError("robot.reach.refinement_steps = " + std::to_string(refinement_steps) +
                      " must be >= 0");
 }
 
@@ -153,7 +153,7 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
                                   const ArmPlacement& placement,
                                   const Pose& tip_T_ee,
                                   double margin) {
-  detail::require_non_negative("reach.margin", margin);
+  detail::require_non_negative("robot.reach.margin", margin);
   Workspace::ReachShell shell;
   shell.center = placement.world_T_base.position + placement.world_T_base.rotation * reach.shoulder;
   const Pose tip_T_flange = compose(tip_T_ee, inverse(placement.flange_T_ee));
@@ -161,7 +161,7 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
   shell.inner_radius = reach.min_distance + margin;
   shell.outer_radius = reach.max_distance - margin;
   if (!(shell.outer_radius > shell.inner_radius)) {
-    throw InputError("reach.margin = " + detail::format_value(margin) +
+    throw InputError("robot.reach.margin = " + detail::format_value(margin) +
                      " leaves no shell: the wrist reaches " + detail::format_value(reach.min_distance) +
                      " to " + detail::format_value(reach.max_distance) + " m from the shoulder");
   }

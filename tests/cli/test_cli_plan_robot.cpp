@@ -1,7 +1,9 @@
 // test_cli_plan_robot.cpp: `rodshape plan` with a robot section. The bundled Panda example writes
 // joint_trajectory.csv and joint_trajectory.json (the shape of ROS trajectory_msgs/JointTrajectory)
 // whose last positions put the end effector where plan.json says; an unknown tip link is bad input
-// (exit 2) named with its line; an arm too far away gives exit 3, plan.json saying why.
+// (exit 2) named with its line; an arm too far from the clamp to hold the rod where it starts is
+// bad input (exit 2) that gives the wrist's distance; without the reach shell it gives exit 3,
+// plan.json saying why; plan.json's robot section holds the shell and every step's joints.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -113,6 +115,19 @@ TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
   const Eigen::Matrix3d reached = flange.rotation * turn;
   EXPECT_LT(Eigen::AngleAxisd(reached * expected.toRotationMatrix().transpose()).angle(), 1e-6);
 
+  // The robot section: the reach shell around the shoulder (0.333 m above the base), the wrist
+  // 0.107 + 0.1034 m beyond the tip along the tip's tangent (the hand grasps from above), and the
+  // joints of the initial pose and of each step.
+  const Json& robot = plan.at("robot");
+  EXPECT_EQ(robot.at("status"), "reachable");
+  const Json& reach = robot.at("reach");
+  EXPECT_LT((vector3(reach.at("center")) - Eigen::Vector3d(-0.45, 0.0, 0.133)).norm(), 1e-12);
+  EXPECT_LT((vector3(reach.at("tip_point")) - Eigen::Vector3d(0.0, 0.0, 0.2104)).norm(), 1e-12);
+  EXPECT_DOUBLE_EQ(reach.at("outer_radius").get<double>(),
+                   reach.at("wrist_range").at(1).get<double>() - 0.02);
+  EXPECT_EQ(robot.at("replans").size(), 0u);
+  EXPECT_EQ(robot.at("waypoint_joint_positions").size(), plan.at("steps").size() + 1);
+
   // The CSV: header t and the joint names, one line per sample.
   std::istringstream csv(read_file(out / "joint_trajectory.csv"));
   std::string header;
@@ -152,16 +167,31 @@ TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
       << outcome.err;
 }
 
-TEST_F(CliPlanRobot, AnArmOutOfReachWritesThePlanAndExitsThree) {
+TEST_F(CliPlanRobot, AnArmTooFarFromTheClampIsBadInputGivingTheWristsDistance) {
   const fs::path task = write_task(
       "far.yaml",
       replaced_first(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]"));
+  const Outcome outcome = plan(task, directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("far.yaml: robot: where the rod starts, the arm's wrist would be"),
+            std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find("outside its reach shell"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(fs::exists(directory_ / "out" / "plan.json"));
+}
+
+TEST_F(CliPlanRobot, WithoutTheReachShellAnArmOutOfReachWritesThePlanAndExitsThree) {
+  const fs::path task = write_task(
+      "far.yaml",
+      replaced_first(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]") +
+          "  reach: {use: false}\n");
   const fs::path out = directory_ / "out";
   fs::create_directories(out);
   std::ofstream(out / "joint_trajectory.csv") << "stale\n";  // from an earlier run
   const Outcome outcome = plan(task, out);
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
-  EXPECT_NE(outcome.err.find("joint trajectory: no inverse kinematics solution at t = 0 s"),
+  EXPECT_NE(outcome.err.find(
+                "robot: the initial end-effector pose has no inverse kinematics solution"),
             std::string::npos)
       << outcome.err;
   EXPECT_TRUE(fs::exists(out / "plan.json"));
@@ -170,12 +200,14 @@ TEST_F(CliPlanRobot, AnArmOutOfReachWritesThePlanAndExitsThree) {
   EXPECT_FALSE(fs::exists(out / "joint_trajectory.json"));
   const Json plan = Json::parse(read_file(out / "plan.json"));
   EXPECT_EQ(plan.at("status"), "complete");
+  const Json& robot = plan.at("robot");
+  EXPECT_EQ(robot.at("status"), "unreachable");
+  EXPECT_TRUE(robot.at("reach").is_null());
+  EXPECT_EQ(robot.at("waypoint_joint_positions").size(), 0u);
   const Json& summary = plan.at("joint_trajectory");
-  EXPECT_EQ(summary.at("status"), "unreachable");
-  EXPECT_EQ(summary.at("failed_sample"), 0);
+  EXPECT_EQ(summary.at("status"), "not_run");
   EXPECT_TRUE(summary.at("file").is_null());
-  EXPECT_NE(summary.at("message").get<std::string>().find("pose position [0, 0, 0.29] m"),
-            std::string::npos)
+  EXPECT_NE(summary.at("message").get<std::string>().find("not computed"), std::string::npos)
       << summary.at("message");
 }
 

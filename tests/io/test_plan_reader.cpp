@@ -318,8 +318,8 @@ TEST(PlanReader, RobotSectionReadsTheArmItsPlacementAndSeed) {
       CompareMatrices(task.robot->placement.flange_T_ee.position, Eigen::Vector3d(0, 0, 0.1), 0.0));
   const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
   EXPECT_TRUE(CompareMatrices(task.robot->placement.flange_T_ee.rotation, turn, 1e-15));
-  ASSERT_EQ(task.robot->options.seed.size(), 7);
-  EXPECT_EQ(task.robot->options.seed(3), -2.0);
+  ASSERT_EQ(task.robot->options.joints.seed.size(), 7);
+  EXPECT_EQ(task.robot->options.joints.seed(3), -2.0);
 }
 
 TEST(PlanReader, RobotDefaultsAreIdentityPlacementAndNoSeed) {
@@ -327,7 +327,7 @@ TEST(PlanReader, RobotDefaultsAreIdentityPlacementAndNoSeed) {
   ASSERT_TRUE(task.robot.has_value());
   EXPECT_TRUE(task.robot->placement.world_T_base.rotation.isIdentity(0.0));
   EXPECT_TRUE(task.robot->placement.flange_T_ee.position.isZero(0.0));
-  EXPECT_EQ(task.robot->options.seed.size(), 0);
+  EXPECT_EQ(task.robot->options.joints.seed.size(), 0);
 }
 
 TEST(PlanReader, RobotUrdfIsRelativeToTheTaskFile) {
@@ -338,7 +338,31 @@ TEST(PlanReader, RobotUrdfIsRelativeToTheTaskFile) {
   EXPECT_EQ(task.robot->arm.robot_name(), "panda");
 }
 
+TEST(PlanReader, RobotReachSectionReadsItsOptions) {
+  const PlanTask defaults = parse_plan_task(plan_with_robot(""), "plan.yaml");
+  EXPECT_TRUE(defaults.robot->options.use_reach);
+  const PlanTask task = parse_plan_task(
+      plan_with_robot("  reach: {use: false, margin: 0.05, tightening: 0.01, max_replans: 5, "
+                      "samples: 100}\n"),
+      "plan.yaml");
+  const ArmPlanOptions& options = task.robot->options;
+  EXPECT_FALSE(options.use_reach);
+  EXPECT_EQ(options.reach_margin, 0.05);
+  EXPECT_EQ(options.replan_tightening, 0.01);
+  EXPECT_EQ(options.max_replans, 5);
+  EXPECT_EQ(options.reach.samples, 100);
+}
+
 TEST(PlanReader, BadRobotFieldsAreNamedAtTheirLine) {
+  EXPECT_EQ(error_of(plan_with_robot("  reach: {margin: -0.1}\n"))
+                .rfind("plan.yaml:23: robot.reach.margin = -0.1 must be >= 0", 0),
+            0u)
+      << error_of(plan_with_robot("  reach: {margin: -0.1}\n"));
+  EXPECT_EQ(error_of(plan_with_robot("  reach: {max_replans: -1}\n"))
+                .rfind("plan.yaml:23: robot.reach.max_replans", 0),
+            0u);
+  EXPECT_NE(error_of(plan_with_robot("  reach: {marg: 0.1}\n")).find("robot.reach.marg"),
+            std::string::npos);
   EXPECT_EQ(
       error_of(plan_with_robot("  tip_link: panda_hand\n"))
           .rfind("plan.yaml:23: robot.tip_link: " + kPanda + ": unknown tip link 'panda_hand'", 0),

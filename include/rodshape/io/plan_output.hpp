@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rodshape/io/plan_task.hpp"
+#include "rodshape/robot/arm_plan.hpp"
 #include "rodshape/robot/joint_trajectory.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
@@ -19,12 +20,15 @@ namespace rodshape {
 /// configuration and points, one entry per step that succeeded (objective points, configuration as
 /// `equilibrium` writes it, end-effector pose, energy, distances, stability, the optimiser's
 /// account), the end-effector path's summary and the tracking report. Ends with a newline.
-/// `joint_trajectory` is the summary {status, message, file, samples, duration, path_duration,
-/// slowed, slowdown, ik_restarts, max_position_error, max_rotation_error} of `joints`, or null when
-/// `joints` is null (a task without a robot).
+/// With an arm (`arm` not null; `plan` is then arm->plan): `robot` is {status, message, reach
+/// (the shell the plan was made with: center, inner_radius, outer_radius, tip_point, wrist_range,
+/// margin; null when not used), replans (reason, wrist_distance and the shell that followed),
+/// waypoint_joint_positions} and `joint_trajectory` the summary {status, message, file, samples,
+/// duration, path_duration, slowed, slowdown, failed_sample, ik_restarts, max_position_error,
+/// max_rotation_error} of arm->joints; both are null without an arm (a task without a robot).
 std::string plan_result_json(const ShapePlan& plan,
                              const PlanTask& task,
-                             const JointTrajectory* joints = nullptr);
+                             const ArmPlan* arm = nullptr);
 
 /// "t,x,y,z,qw,qx,qy,qz" and one line per sample of `path` (s, m, unit quaternion). Consecutive
 /// quaternions lie in the same hemisphere (q and -q are one rotation; the first has qw ≥ 0), so

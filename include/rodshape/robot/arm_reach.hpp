@@ -31,7 +31,7 @@ struct ArmReachOptions {
   int samples = 4096;          // joint positions drawn uniformly within the limits
   int refinement_steps = 200;  // projected gradient steps from the extreme samples
   unsigned random_seed = 1;
-  /// Throws InputError naming "reach.samples" etc.
+  /// Throws InputError naming "robot.reach.samples" etc.
   void validate() const;
 };
 
@@ -53,7 +53,7 @@ ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options =
 /// r_max - margin] around the shoulder, for the wrist point expressed in the tip frame. The hand
 /// holds the tip at tip_T_ee (Grasp::tip_to_end_effector) and the flange at flange_T_ee
 /// (ArmPlacement), so tip_T_flange = tip_T_ee · flange_T_ee⁻¹. Throws InputError when the margin is negative or leaves no
-/// shell ("reach.margin").
+/// shell ("robot.reach.margin").
 Workspace::ReachShell reach_shell(const ArmReach& reach,
                                   const ArmPlacement& placement,
                                   const Pose& tip_T_ee,

@@ -1,0 +1,161 @@
+// test_arm_plan.cpp: planning with the arm (the Panda example's scene). Every planned pose's IK
+// solution puts the end effector on the planned pose; the wrist stays in the reach shell; an arm
+// placed so that the target needs the wrist beyond its reach gets a plan that stops on the shell;
+// a pose on the shell that IK cannot reach leads to one re-plan with the shell tightened exactly as
+// documented, or, with no re-plans allowed, to the status Unreachable; a start outside the shell
+// and a doubled reach shell are bad input.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <functional>
+#include <string>
+
+#include "rodshape/error.hpp"
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/robot/arm_plan.hpp"
+#include "rodshape/robot/inverse_kinematics.hpp"
+
+namespace {
+
+using rodshape::ArmPlan;
+using rodshape::ArmPlanOptions;
+using rodshape::ArmPlanStatus;
+using rodshape::PlanTask;
+using rodshape::Pose;
+
+const std::string kExample =
+    std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml";
+
+/// The example's task with the arm's base moved to x = `base_x` (the example has -0.45).
+PlanTask panda_task(double base_x = -0.45) {
+  PlanTask task = rodshape::read_plan_task(kExample);
+  task.robot->placement.world_T_base.position.x() = base_x;
+  return task;
+}
+
+ArmPlan plan(const PlanTask& task, const ArmPlanOptions& options) {
+  return rodshape::plan_with_arm(task.request, task.options, task.robot->arm,
+                                 task.robot->placement, options);
+}
+
+double wrist_distance(const ArmPlan& arm, const Pose& tip) {
+  return (arm.shell->point(tip) - arm.shell->center).norm();
+}
+
+double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+  return Eigen::AngleAxisd(a * b.transpose()).angle();
+}
+
+TEST(ArmPlan, EveryPlannedPoseHasJointsThatPutTheHandThere) {
+  const PlanTask task = panda_task();
+  const ArmPlan arm = plan(task, task.robot->options);
+  ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
+  ASSERT_EQ(arm.plan.status, rodshape::PlanStatus::Complete) << arm.plan.message;
+  EXPECT_TRUE(arm.replans.empty());
+  ASSERT_TRUE(arm.shell.has_value());
+  EXPECT_DOUBLE_EQ(arm.shell->outer_radius, arm.reach->max_distance - 0.02);  // default margin
+  ASSERT_EQ(arm.waypoint_q.size(), arm.plan.steps.size() + 1);
+  // IK converges to 1e-10 m and rad (IkOptions); the pose chain adds round-off only.
+  for (std::size_t k = 1; k < arm.waypoint_q.size(); ++k) {
+    const Pose reached =
+        rodshape::end_effector_pose(task.robot->arm, task.robot->placement, arm.waypoint_q[k]);
+    const Pose& planned = arm.plan.steps[k - 1].end_effector;
+    EXPECT_LE((reached.position - planned.position).norm(), 1e-9) << "step " << k;
+    EXPECT_LE(rotation_angle(reached.rotation, planned.rotation), 1e-9) << "step " << k;
+    const Pose tip = arm.plan.steps[k - 1].solution.configuration.tip();
+    EXPECT_LE(wrist_distance(arm, tip), arm.shell->outer_radius) << "step " << k;
+    EXPECT_GE(wrist_distance(arm, tip), arm.shell->inner_radius) << "step " << k;
+  }
+  EXPECT_TRUE(arm.joints.complete()) << arm.joints.message;
+  EXPECT_EQ(arm.joints.t.size(), arm.plan.end_effector_path.size());
+}
+
+TEST(ArmPlan, ATargetBeyondTheArmsReachStopsOnTheShell) {
+  // 0.13 m further back, the S-curve's last shape would need the wrist 0.81 m from the shoulder,
+  // beyond the shell's 0.787 m: the last step's constraint is active and the points are missed by
+  // more than the unconstrained plan's sub-millimetre distances.
+  const PlanTask task = panda_task(-0.58);
+  const ArmPlan arm = plan(task, task.robot->options);
+  ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
+  ASSERT_EQ(arm.plan.status, rodshape::PlanStatus::Complete) << arm.plan.message;
+  const rodshape::ShapeSolution& last = arm.plan.steps.back().solution;
+  const double tolerance = task.options.optimizer.constraint_tolerance;
+  const double r = wrist_distance(arm, last.configuration.tip());
+  // g = r² ≤ r_out² holds to the constraint tolerance and is active (to IPOPT's tolerance).
+  EXPECT_LE(r * r, arm.shell->outer_radius * arm.shell->outer_radius + tolerance);
+  EXPECT_GE(r, arm.shell->outer_radius - 1e-4);
+  EXPECT_GT(last.cost.max_distance, 1e-3);
+  EXPECT_TRUE(arm.joints.complete()) << arm.joints.message;
+}
+
+TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
+  // With no margin the shell's outer radius is the sampled maximum itself, where the wrist's
+  // position is reachable only with the orientation it was found with: the last step (on the
+  // shell, as above) has no IK solution; one re-plan with the shell pulled in by the tightening
+  // below that pose's wrist distance succeeds.
+  const PlanTask task = panda_task(-0.58);
+  ArmPlanOptions options = task.robot->options;
+  options.reach_margin = 0.0;
+  const ArmPlan arm = plan(task, options);
+  ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
+  ASSERT_EQ(arm.replans.size(), 1u);
+  const rodshape::Replan& replan = arm.replans.front();
+  EXPECT_NE(replan.reason.find("has no inverse kinematics solution"), std::string::npos)
+      << replan.reason;
+  EXPECT_DOUBLE_EQ(replan.shell.outer_radius,
+                   std::min(arm.reach->max_distance, replan.wrist_distance) -
+                       options.replan_tightening);
+  EXPECT_DOUBLE_EQ(replan.shell.inner_radius, arm.reach->min_distance);
+  EXPECT_DOUBLE_EQ(arm.shell->outer_radius, replan.shell.outer_radius);
+  EXPECT_NE(arm.message.find("after 1 re-plan"), std::string::npos) << arm.message;
+
+  options.max_replans = 0;
+  const ArmPlan reported = plan(task, options);
+  EXPECT_EQ(reported.status, ArmPlanStatus::Unreachable);
+  EXPECT_TRUE(reported.replans.empty());
+  EXPECT_NE(reported.message.find("after 0 re-plans"), std::string::npos) << reported.message;
+  EXPECT_NE(reported.joints.message.find("not computed"), std::string::npos)
+      << reported.joints.message;
+}
+
+std::string input_error(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const rodshape::InputError& error) {
+    return error.what();
+  }
+  return "no InputError";
+}
+
+TEST(ArmPlan, AStartOutsideTheShellAndTwoReachShellsAreBadInput) {
+  const PlanTask far = panda_task(-3.0);
+  const std::string start = input_error([&] { plan(far, far.robot->options); });
+  EXPECT_NE(start.find("the arm's wrist would be"), std::string::npos) << start;
+  EXPECT_NE(start.find("outside its reach shell"), std::string::npos) << start;
+
+  PlanTask twice = panda_task();
+  twice.request.workspace.reach =
+      rodshape::Workspace::ReachShell{Eigen::Vector3d::Zero(), 0.0, 1.0, Eigen::Vector3d::Zero()};
+  const std::string doubled = input_error([&] { plan(twice, twice.robot->options); });
+  EXPECT_NE(doubled.find("workspace.reach"), std::string::npos) << doubled;
+
+  ArmPlanOptions options = far.robot->options;
+  options.replan_tightening = 0.0;
+  const std::string tightening = input_error([&] { plan(far, options); });
+  EXPECT_NE(tightening.find("robot.reach.tightening"), std::string::npos) << tightening;
+}
+
+TEST(ArmPlan, WithoutTheReachAnUnreachableStartIsReportedNotThrown) {
+  PlanTask far = panda_task(-3.0);
+  ArmPlanOptions options = far.robot->options;
+  options.use_reach = false;
+  const ArmPlan arm = plan(far, options);
+  EXPECT_EQ(arm.status, ArmPlanStatus::Unreachable);
+  EXPECT_FALSE(arm.shell.has_value());
+  EXPECT_NE(arm.message.find("the initial end-effector pose has no inverse kinematics solution"),
+            std::string::npos)
+      << arm.message;
+  EXPECT_EQ(arm.plan.status, rodshape::PlanStatus::Complete);
+}
+
+}  // namespace
