@@ -185,6 +185,15 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
     reach["wrist_range"] = {json_number(arm.reach->min_distance),
                             json_number(arm.reach->max_distance)};
     reach["margin"] = json_number(options.reach_margin);
+    // |w - c| where the rod starts and at each step: how close the plan came to the shell.
+    Json distances = Json::array();
+    const auto distance = [&](const Pose& tip) {
+      return json_number((arm.shell->point(tip) - arm.shell->center).norm());
+    };
+    distances.push_back(distance(arm.plan.initial_configuration.tip()));
+    for (const PlanStep& step : arm.plan.steps)
+      distances.push_back(distance(step.solution.configuration.tip()));
+    reach["wrist_distances"] = std::move(distances);
   }
   Json replans = Json::array();
   for (const Replan& replan : arm.replans) {
@@ -231,8 +240,7 @@ std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const 
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
-  result["robot"] =
-      arm && task.robot ? robot_object(*arm, task.robot->options) : Json(nullptr);
+  result["robot"] = arm && task.robot ? robot_object(*arm, task.robot->options) : Json(nullptr);
   result["joint_trajectory"] = arm ? joint_trajectory_object(arm->joints) : Json(nullptr);
   return io_detail::format_json(result);
 }

@@ -193,7 +193,8 @@ PlanRobot read_robot_section(const YamlField& robot, const std::string& task_dir
   }
   if (const YamlField reach = robot.get("reach"); reach.present()) {
     reach.expect_mapping({"use", "margin", "tightening", "max_replans", "samples"});
-    if (const YamlField use = reach.get("use"); use.present()) result.options.use_reach = use.boolean();
+    if (const YamlField use = reach.get("use"); use.present())
+      result.options.use_reach = use.boolean();
     read_number(reach, "margin", result.options.reach_margin);
     read_number(reach, "tightening", result.options.replan_tightening);
     read_integer(reach, "max_replans", result.options.max_replans);

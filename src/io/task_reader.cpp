@@ -182,8 +182,8 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   // The tip must start inside the workspace (plan_shape checks this too, without a line): the
   // initial tip pose, or the tip of the rod at rest.
   if (!request.workspace.unbounded()) {
-    const Pose tip_pose = request.initial_tip ? *request.initial_tip
-                                              : integrate(request.rod, BaseWrench{}).tip();
+    const Pose tip_pose =
+        request.initial_tip ? *request.initial_tip : integrate(request.rod, BaseWrench{}).tip();
     if (!request.workspace.contains(tip_pose, 1e-9)) {
       const Eigen::Vector3d& tip = tip_pose.position;
       std::ostringstream where;

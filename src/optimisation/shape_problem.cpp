@@ -163,8 +163,7 @@ void ShapeProblem::evaluate_constraints() {
   int row = 0;
   // 1. workspace
   if (rows_.workspace > 0) {
-    workspace_.evaluate(Pose{c.p[N], c.R[N]}, workspace_g_, workspace_dg_dp_,
-                        workspace_dg_dtheta_);
+    workspace_.evaluate(Pose{c.p[N], c.R[N]}, workspace_g_, workspace_dg_dp_, workspace_dg_dtheta_);
     g_.head(rows_.workspace) = workspace_g_;
     dg_dw_.topRows(rows_.workspace) = workspace_dg_dp_.lazyProduct(c.tip_dp_dw);  // no GEMM buffers
     if (workspace_.reach)

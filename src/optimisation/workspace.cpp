@@ -149,9 +149,10 @@ void Workspace::validate() const {
     detail::require_positive("workspace.reach.outer_radius", reach->outer_radius);
     detail::require_non_negative("workspace.reach.inner_radius", reach->inner_radius);
     if (reach->inner_radius >= reach->outer_radius)
-      throw InputError("workspace.reach: inner_radius = " +
-                       detail::format_value(reach->inner_radius) + " is not below outer_radius = " +
-                       detail::format_value(reach->outer_radius) + " (an empty shell)");
+      throw InputError(
+          "workspace.reach: inner_radius = " + detail::format_value(reach->inner_radius) +
+          " is not below outer_radius = " + detail::format_value(reach->outer_radius) +
+          " (an empty shell)");
   }
 }
 

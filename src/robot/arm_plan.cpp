@@ -49,7 +49,9 @@ std::string describe_shell(const Workspace::ReachShell& shell) {
 }
 
 /// The wrist's distance from the shoulder when the hand is at world_T_ee.
-double wrist_distance(const ArmReach& reach, const ArmPlacement& placement, const Pose& world_T_ee) {
+double wrist_distance(const ArmReach& reach,
+                      const ArmPlacement& placement,
+                      const Pose& world_T_ee) {
   return reach.wrist_distance(flange_target(placement, world_T_ee));
 }
 
@@ -80,7 +82,8 @@ WaypointCheck check_waypoints(const ArmModel& arm,
   for (std::size_t k = 0; k < poses.size(); ++k) {
     const IkResult ik = solve_ik(arm, flange_target(placement, poses[k]), seed, options.ik);
     if (!ik.converged()) {
-      const std::string which = k == 0 ? "the initial end-effector pose" : "step " + std::to_string(k) + "'s end-effector pose";
+      const std::string which = k == 0 ? "the initial end-effector pose"
+                                       : "step " + std::to_string(k) + "'s end-effector pose";
       return {static_cast<int>(k), which + " has no inverse kinematics solution: " + ik.message};
     }
     waypoint_q.push_back(ik.q);
@@ -154,8 +157,8 @@ ArmPlan plan_with_arm(const PlanRequest& request,
       }
     } else {
       // 2. The joint trajectory along the timed path (every sample by IK).
-      result.joints = joint_trajectory(arm, result.plan.end_effector_path, placement,
-                                       arm_options.joints);
+      result.joints =
+          joint_trajectory(arm, result.plan.end_effector_path, placement, arm_options.joints);
       if (result.joints.complete()) {
         result.status = ArmPlanStatus::Reachable;
         result.message = result.replans.empty()

@@ -41,8 +41,12 @@ Eigen::VectorXd reference_positions(const ArmModel& arm) {
 }
 
 /// Sampling range of a joint: its limits, or one turn for a continuous joint.
-double sample_lower(const JointInfo& joint) { return std::isfinite(joint.lower) ? joint.lower : -kPi; }
-double sample_upper(const JointInfo& joint) { return std::isfinite(joint.upper) ? joint.upper : kPi; }
+double sample_lower(const JointInfo& joint) {
+  return std::isfinite(joint.lower) ? joint.lower : -kPi;
+}
+double sample_upper(const JointInfo& joint) {
+  return std::isfinite(joint.upper) ? joint.upper : kPi;
+}
 
 struct DistanceAt {
   double r = 0.0;
@@ -103,7 +107,8 @@ void refine(const ArmModel& arm,
 }  // namespace
 
 void ArmReachOptions::validate() const {
-  if (samples < 1) throw InputError("robot.reach.samples = " + std::to_string(samples) + " must be >= 1");
+  if (samples < 1)
+    throw InputError("robot.reach.samples = " + std::to_string(samples) + " must be >= 1");
   if (refinement_steps < 0)
     throw InputError("robot.reach.refinement_steps = " + std::to_string(refinement_steps) +
                      " must be >= 0");
@@ -123,7 +128,8 @@ ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options) 
   const Eigen::Vector3d wrist_in_base =
       n >= 2 ? nearest_point_on(axes[n - 1], axes[n - 2]) : axes[n - 1].origin;
   const Pose base_T_flange = arm.forward_kinematics(q0);
-  reach.wrist_in_tip_link = base_T_flange.rotation.transpose() * (wrist_in_base - base_T_flange.position);
+  reach.wrist_in_tip_link =
+      base_T_flange.rotation.transpose() * (wrist_in_base - base_T_flange.position);
 
   std::mt19937 random(options.random_seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -133,7 +139,8 @@ ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options) 
   reach.max_distance = -1.0;
   for (int k = 0; k < options.samples; ++k) {
     for (int i = 0; i < n; ++i)
-      q(i) = sample_lower(joints[i]) + unit(random) * (sample_upper(joints[i]) - sample_lower(joints[i]));
+      q(i) = sample_lower(joints[i]) +
+             unit(random) * (sample_upper(joints[i]) - sample_lower(joints[i]));
     const double r = reach.wrist_distance(arm.forward_kinematics(q));
     if (r < reach.min_distance) {
       reach.min_distance = r;
@@ -162,8 +169,9 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
   shell.outer_radius = reach.max_distance - margin;
   if (!(shell.outer_radius > shell.inner_radius)) {
     throw InputError("robot.reach.margin = " + detail::format_value(margin) +
-                     " leaves no shell: the wrist reaches " + detail::format_value(reach.min_distance) +
-                     " to " + detail::format_value(reach.max_distance) + " m from the shoulder");
+                     " leaves no shell: the wrist reaches " +
+                     detail::format_value(reach.min_distance) + " to " +
+                     detail::format_value(reach.max_distance) + " m from the shoulder");
   }
   return shell;
 }

@@ -210,13 +210,14 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   }
   const Pose initial_tip = plan.initial_configuration.tip();
   if (!request.workspace.contains(initial_tip, 1e-9)) {
-    std::string reason = "workspace excludes the initial tip at " + format_point(initial_tip.position);
+    std::string reason =
+        "workspace excludes the initial tip at " + format_point(initial_tip.position);
     if (const auto& reach = request.workspace.reach) {
       const double r = (reach->point(initial_tip) - reach->center).norm();
       if (r > reach->outer_radius || r < reach->inner_radius)
-        reason += " (its reach point is " + std::to_string(r) + " m from the reach centre, outside [" +
-                  std::to_string(reach->inner_radius) + ", " + std::to_string(reach->outer_radius) +
-                  "] m)";
+        reason += " (its reach point is " + std::to_string(r) +
+                  " m from the reach centre, outside [" + std::to_string(reach->inner_radius) +
+                  ", " + std::to_string(reach->outer_radius) + "] m)";
     }
     throw InputError(reason);
   }

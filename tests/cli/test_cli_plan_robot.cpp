@@ -59,9 +59,19 @@ Eigen::Vector3d vector3(const Json& value) {
   return {value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>()};
 }
 
-TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
+/// A bundled Panda example and where its arm's base stands (robot.base.position.x).
+struct PandaExample {
+  const char* file;
+  double base_x;
+};
+
+void PrintTo(const PandaExample& example, std::ostream* out) { *out << example.file; }
+
+class CliPandaExamples : public CliPlanRobot, public ::testing::WithParamInterface<PandaExample> {};
+
+TEST_P(CliPandaExamples, WriteJointTrajectoriesThatEndOnThePlannedPose) {
   const fs::path out = directory_ / "out";
-  const Outcome outcome = plan(kExample, out);
+  const Outcome outcome = plan(kSource / "examples" / GetParam().file, out);
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
   ASSERT_TRUE(fs::exists(out / "joint_trajectory.csv"));
   ASSERT_TRUE(fs::exists(out / "joint_trajectory.json"));
@@ -103,7 +113,7 @@ TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
   Eigen::VectorXd q(7);
   for (int j = 0; j < 7; ++j) q(j) = points.back().at("positions").at(j).get<double>();
   const rodshape::Pose flange = arm.forward_kinematics(q);
-  const Eigen::Vector3d base(-0.45, 0.0, -0.2);                          // robot.base
+  const Eigen::Vector3d base(GetParam().base_x, 0.0, -0.2);              // robot.base
   const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
   const Eigen::Vector3d ee =
       base + flange.position + flange.rotation * Eigen::Vector3d(0, 0, 0.1034);
@@ -121,12 +131,22 @@ TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
   const Json& robot = plan.at("robot");
   EXPECT_EQ(robot.at("status"), "reachable");
   const Json& reach = robot.at("reach");
-  EXPECT_LT((vector3(reach.at("center")) - Eigen::Vector3d(-0.45, 0.0, 0.133)).norm(), 1e-12);
+  EXPECT_LT((vector3(reach.at("center")) - Eigen::Vector3d(GetParam().base_x, 0.0, 0.133)).norm(),
+            1e-12);
   EXPECT_LT((vector3(reach.at("tip_point")) - Eigen::Vector3d(0.0, 0.0, 0.2104)).norm(), 1e-12);
-  EXPECT_DOUBLE_EQ(reach.at("outer_radius").get<double>(),
-                   reach.at("wrist_range").at(1).get<double>() - 0.02);
+  const double outer = reach.at("outer_radius").get<double>();
+  EXPECT_DOUBLE_EQ(outer, reach.at("wrist_range").at(1).get<double>() - 0.02);
   EXPECT_EQ(robot.at("replans").size(), 0u);
   EXPECT_EQ(robot.at("waypoint_joint_positions").size(), plan.at("steps").size() + 1);
+  const Json& wrist = reach.at("wrist_distances");
+  ASSERT_EQ(wrist.size(), plan.at("steps").size() + 1);
+  for (const Json& r : wrist) EXPECT_LE(r.get<double>(), outer + 1e-6);  // r² to IPOPT's 1e-8
+  // The S-curve stays well inside; 0.13 m further back, the last step stops on the shell.
+  const double last_wrist = wrist.back().get<double>();
+  if (GetParam().base_x == -0.45)
+    EXPECT_LT(last_wrist, outer - 0.05);
+  else
+    EXPECT_GT(last_wrist, outer - 1e-4);
 
   // The CSV: header t and the joint names, one line per sample.
   std::istringstream csv(read_file(out / "joint_trajectory.csv"));
@@ -137,6 +157,15 @@ TEST_F(CliPlanRobot, ThePandaExampleWritesTheJointTrajectory) {
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, samples);
 }
+
+INSTANTIATE_TEST_SUITE_P(BundledPandaExamples,
+                         CliPandaExamples,
+                         ::testing::Values(PandaExample{"plan_panda_s_curve.yaml", -0.45},
+                                           PandaExample{"plan_panda_reach_limit.yaml", -0.58}),
+                         [](const auto& info) {
+                           return info.param.base_x == -0.45 ? std::string("SCurve")
+                                                             : std::string("ReachLimit");
+                         });
 
 TEST_F(CliPlanRobot, AnUnknownTipLinkIsBadInputNamedWithItsLine) {
   const std::string text =
@@ -190,9 +219,9 @@ TEST_F(CliPlanRobot, WithoutTheReachShellAnArmOutOfReachWritesThePlanAndExitsThr
   std::ofstream(out / "joint_trajectory.csv") << "stale\n";  // from an earlier run
   const Outcome outcome = plan(task, out);
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
-  EXPECT_NE(outcome.err.find(
-                "robot: the initial end-effector pose has no inverse kinematics solution"),
-            std::string::npos)
+  EXPECT_NE(
+      outcome.err.find("robot: the initial end-effector pose has no inverse kinematics solution"),
+      std::string::npos)
       << outcome.err;
   EXPECT_TRUE(fs::exists(out / "plan.json"));
   EXPECT_TRUE(fs::exists(out / "trajectory.csv"));

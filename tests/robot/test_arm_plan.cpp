@@ -23,8 +23,7 @@ using rodshape::ArmPlanStatus;
 using rodshape::PlanTask;
 using rodshape::Pose;
 
-const std::string kExample =
-    std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml";
+const std::string kExample = std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml";
 
 /// The example's task with the arm's base moved to x = `base_x` (the example has -0.45).
 PlanTask panda_task(double base_x = -0.45) {
@@ -34,8 +33,8 @@ PlanTask panda_task(double base_x = -0.45) {
 }
 
 ArmPlan plan(const PlanTask& task, const ArmPlanOptions& options) {
-  return rodshape::plan_with_arm(task.request, task.options, task.robot->arm,
-                                 task.robot->placement, options);
+  return rodshape::plan_with_arm(task.request, task.options, task.robot->arm, task.robot->placement,
+                                 options);
 }
 
 double wrist_distance(const ArmPlan& arm, const Pose& tip) {
@@ -102,9 +101,9 @@ TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
   const rodshape::Replan& replan = arm.replans.front();
   EXPECT_NE(replan.reason.find("has no inverse kinematics solution"), std::string::npos)
       << replan.reason;
-  EXPECT_DOUBLE_EQ(replan.shell.outer_radius,
-                   std::min(arm.reach->max_distance, replan.wrist_distance) -
-                       options.replan_tightening);
+  EXPECT_DOUBLE_EQ(
+      replan.shell.outer_radius,
+      std::min(arm.reach->max_distance, replan.wrist_distance) - options.replan_tightening);
   EXPECT_DOUBLE_EQ(replan.shell.inner_radius, arm.reach->min_distance);
   EXPECT_DOUBLE_EQ(arm.shell->outer_radius, replan.shell.outer_radius);
   EXPECT_NE(arm.message.find("after 1 re-plan"), std::string::npos) << arm.message;

@@ -26,7 +26,7 @@ const std::string kPanda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/pand
 struct DhRow {
   double a, d, alpha;
 };
-const DhRow kPandaDh[7] = {{0.0, 0.333, 0.0},  {0.0, 0.0, -pi / 2},       {0.0, 0.316, pi / 2},
+const DhRow kPandaDh[7] = {{0.0, 0.333, 0.0},     {0.0, 0.0, -pi / 2},       {0.0, 0.316, pi / 2},
                            {0.0825, 0.0, pi / 2}, {-0.0825, 0.384, -pi / 2}, {0.0, 0.0, pi / 2},
                            {0.088, 0.0, pi / 2}};
 
@@ -124,8 +124,9 @@ std::string toy_arm() {
   body += joint("shoulder", "l1", "l2", "0 0 0.1", "0 1 0", "lower=\"-1.5\" upper=\"1.5\"");
   body += joint("elbow", "l2", "l3", "0.4 0 0", "0 1 0", "lower=\"-2\" upper=\"2.5\"");
   body += joint("wrist", "l3", "l4", "0.3 0 0", "0 1 0", "lower=\"-2\" upper=\"2\"");
-  body += "<joint name=\"hand_fixed\" type=\"fixed\"><parent link=\"l4\"/><child link=\"hand\"/>"
-          "<origin xyz=\"0.1 0 0\" rpy=\"0 0 0\"/></joint>";
+  body +=
+      "<joint name=\"hand_fixed\" type=\"fixed\"><parent link=\"l4\"/><child link=\"hand\"/>"
+      "<origin xyz=\"0.1 0 0\" rpy=\"0 0 0\"/></joint>";
   return "<robot name=\"toy\">" + body + "</robot>";
 }
 

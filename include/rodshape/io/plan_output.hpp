@@ -22,10 +22,11 @@ namespace rodshape {
 /// account), the end-effector path's summary and the tracking report. Ends with a newline.
 /// With an arm (`arm` not null; `plan` is then arm->plan): `robot` is {status, message, reach
 /// (the shell the plan was made with: center, inner_radius, outer_radius, tip_point, wrist_range,
-/// margin; null when not used), replans (reason, wrist_distance and the shell that followed),
-/// waypoint_joint_positions} and `joint_trajectory` the summary {status, message, file, samples,
-/// duration, path_duration, slowed, slowdown, failed_sample, ik_restarts, max_position_error,
-/// max_rotation_error} of arm->joints; both are null without an arm (a task without a robot).
+/// margin, and wrist_distances |w - c| where the rod starts and at each step; null when not used),
+/// replans (reason, wrist_distance and the shell that followed), waypoint_joint_positions} and
+/// `joint_trajectory` the summary {status, message, file, samples, duration, path_duration, slowed,
+/// slowdown, failed_sample, ik_restarts, max_position_error, max_rotation_error} of arm->joints;
+/// both are null without an arm (a task without a robot).
 std::string plan_result_json(const ShapePlan& plan,
                              const PlanTask& task,
                              const ArmPlan* arm = nullptr);

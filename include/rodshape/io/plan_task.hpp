@@ -18,11 +18,11 @@ namespace rodshape {
 
 /// The task file's `robot` section: the arm (already read from its URDF) and where it stands.
 struct PlanRobot {
-  std::string urdf;                // the URDF file, resolved against the task file's directory
-  ArmModel arm;                    // the chain from robot.base_link to robot.tip_link
-  ArmPlacement placement;          // robot.base (world_T_base), robot.flange_to_end_effector
-  ArmPlanOptions options;          // robot.reach (the reach shell, re-plans); robot.seed in
-                                   // options.joints.seed (empty: default_seed)
+  std::string urdf;        // the URDF file, resolved against the task file's directory
+  ArmModel arm;            // the chain from robot.base_link to robot.tip_link
+  ArmPlacement placement;  // robot.base (world_T_base), robot.flange_to_end_effector
+  ArmPlanOptions options;  // robot.reach (the reach shell, re-plans); robot.seed in
+                           // options.joints.seed (empty: default_seed)
 };
 
 struct PlanTask {

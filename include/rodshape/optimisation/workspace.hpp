@@ -34,9 +34,7 @@ struct Workspace {
     double outer_radius = 0.0;
     Eigen::Vector3d tip_point = Eigen::Vector3d::Zero();  // t, in the tip frame
     /// q for a tip pose.
-    Eigen::Vector3d point(const Pose& tip) const {
-      return tip.position + tip.rotation * tip_point;
-    }
+    Eigen::Vector3d point(const Pose& tip) const { return tip.position + tip.rotation * tip_point; }
   };
 
   std::optional<Box> box;

@@ -21,14 +21,15 @@
 namespace rodshape {
 
 struct ArmPlanOptions {
-  bool use_reach = true;           // add the arm's reach shell to the workspace
-  double reach_margin = 0.02;      // m: the shell is [r_min + margin, r_max - margin]
+  bool use_reach = true;            // add the arm's reach shell to the workspace
+  double reach_margin = 0.02;       // m: the shell is [r_min + margin, r_max - margin]
   double replan_tightening = 0.02;  // m: how far past an unreachable pose's wrist distance the
                                     // tightened shell ends
   int max_replans = 3;
   ArmReachOptions reach;
   JointTrajectoryOptions joints;  // the first seed and the IK options, for the checks too
-  /// Throws InputError naming "robot.reach.margin", "robot.reach.tightening", "robot.reach.max_replans" etc.
+  /// Throws InputError naming "robot.reach.margin", "robot.reach.tightening",
+  /// "robot.reach.max_replans" etc.
   void validate() const;
 };
 
@@ -41,15 +42,15 @@ std::string to_string(ArmPlanStatus status);  // "reachable", "unreachable", "no
 
 /// One re-plan: which pose had no IK solution and the shell it led to.
 struct Replan {
-  std::string reason;            // the pose (step or path sample) and the IK's message
-  double wrist_distance = 0.0;   // |w - c| of that pose, m
-  Workspace::ReachShell shell;   // the shell of the next plan
+  std::string reason;           // the pose (step or path sample) and the IK's message
+  double wrist_distance = 0.0;  // |w - c| of that pose, m
+  Workspace::ReachShell shell;  // the shell of the next plan
 };
 
 struct ArmPlan {
   ArmPlanStatus status = ArmPlanStatus::NotChecked;
   std::string message;
-  ShapePlan plan;  // the last plan made
+  ShapePlan plan;                              // the last plan made
   std::optional<ArmReach> reach;               // the arm's reach (use_reach)
   std::optional<Workspace::ReachShell> shell;  // the shell the last plan was made with
   std::vector<Replan> replans;

@@ -36,7 +36,7 @@ struct ArmReachOptions {
 };
 
 struct ArmReach {
-  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();        // c, in the arm's base frame
+  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();           // c, in the arm's base frame
   Eigen::Vector3d wrist_in_tip_link = Eigen::Vector3d::Zero();  // w, in the tip link's frame
   double min_distance = 0.0;  // r_min: the smallest |w - c| found within the joint limits, m
   double max_distance = 0.0;  // r_max: the largest, m
@@ -52,8 +52,8 @@ ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options =
 /// The reach as a constraint on the rod's tip pose, in the world: the shell [r_min + margin,
 /// r_max - margin] around the shoulder, for the wrist point expressed in the tip frame. The hand
 /// holds the tip at tip_T_ee (Grasp::tip_to_end_effector) and the flange at flange_T_ee
-/// (ArmPlacement), so tip_T_flange = tip_T_ee · flange_T_ee⁻¹. Throws InputError when the margin is negative or leaves no
-/// shell ("robot.reach.margin").
+/// (ArmPlacement), so tip_T_flange = tip_T_ee · flange_T_ee⁻¹. Throws InputError when the margin is
+/// negative or leaves no shell ("robot.reach.margin").
 Workspace::ReachShell reach_shell(const ArmReach& reach,
                                   const ArmPlacement& placement,
                                   const Pose& tip_T_ee,
