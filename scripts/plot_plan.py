@@ -118,16 +118,17 @@ def joint_velocities(outdir, t, q):
     return v
 
 
-def plot_joints(outdir, urdf, waypoint_rows):
+def plot_joints(outdir, urdf, waypoint_rows, path_samples):
+    """Joint positions and velocities as fractions of their limits, over time."""
     header, rows = read_csv(outdir / "joint_trajectory.csv")
     names, t, q = header[1:], rows[:, 0], rows[:, 1:]
     if len(t) < 2:
         raise InputError("joint_trajectory.csv has fewer than two samples")
     limits = joint_limits(urdf, names)
     v = joint_velocities(outdir, t, q)
-    # Arrival rows of trajectory.csv are rows of joint_trajectory.csv (one row per sample, times
-    # stretched where the arm was slowed).
-    times = t[waypoint_rows] if waypoint_rows and waypoint_rows[-1] < len(t) else []
+    # The rows of trajectory.csv and joint_trajectory.csv are the same samples (the joints' times
+    # stretched where the arm was slowed), so the waypoints arrive at the same rows.
+    times = t[waypoint_rows] if len(t) == path_samples else []
 
     fig, (ax_q, ax_v) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
     # (margin to a limit, joint) and (|q̇| / limit, joint) at the worst sample
@@ -154,18 +155,21 @@ def plot_joints(outdir, urdf, waypoint_rows):
         ax.grid(axis="y", alpha=0.3)
     ax_q.set_ylim(-0.05, 1.05)
     ax_q.set_ylabel("(q − lower) / (upper − lower)")
-    ax_q.set_title("Joint positions within their limits (dashed: the limits); closest: "
-                   f"{closest[1]}, {closest[0]:.1%} of its range from a limit", pad=14)
+    ax_q.set_title("Joint positions within their limits (dashed: the limits)" + (
+        f"; closest: {closest[1]}, {closest[0]:.1%} of its range from a limit"
+        if closest[1] else ""), pad=14)
     ax_q.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     ax_v.set_ylabel("q̇ / velocity limit")
     ax_v.set_xlabel("time (s)")
-    ax_v.set_title("Joint velocities within their limits (dashed: ±limit); fastest: "
-                   f"{fastest[1]}, {fastest[0]:.1%} of its limit", pad=14)
+    ax_v.set_title("Joint velocities within their limits (dashed: ±limit)" + (
+        f"; fastest: {fastest[1]}, {fastest[0]:.1%} of its limit" if fastest[1] else ""), pad=14)
     ax_v.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
     return fig
 
 
 def plot_reach(plan):
+    """The wrist's distance from the shoulder in the reach shell, and the largest distance to the
+    objective points, per step."""
     reach = plan["robot"]["reach"]
     wrist = numbers(reach["wrist_distances"])
     steps = plan["steps"]
@@ -202,6 +206,7 @@ def plot_reach(plan):
 
 
 def plot_path(path, waypoint_rows):
+    """The end effector's x, y, z over time."""
     t = path[:, 0]
     fig, ax = plt.subplots(figsize=(9, 5))
     for k, axis in enumerate("xyz"):
@@ -252,7 +257,7 @@ def main():
     if not isinstance(plan, dict) or "steps" not in plan:
         raise InputError(f"{outdir / 'plan.json'} is not a plan of `rodshape plan` (no steps)")
     # Every figure is drawn before any is written, so bad input leaves FIGDIR as it was.
-    figures = {}
+    figures, path = {}, np.empty((0, 8))
     if (outdir / "trajectory.csv").exists():
         path = read_csv(outdir / "trajectory.csv")[1]
         waypoint_rows = waypoint_indices(plan, path)
@@ -262,7 +267,7 @@ def main():
         print(f"note: no trajectory.csv (plan {plan.get('status')}); skipped end_effector_path.png")
 
     if (outdir / "joint_trajectory.csv").exists():
-        figures["joint_positions.png"] = plot_joints(outdir, args.urdf, waypoint_rows)
+        figures["joint_positions.png"] = plot_joints(outdir, args.urdf, waypoint_rows, len(path))
     else:
         print("note: no joint_trajectory.csv (no robot, or a pose out of its reach); "
               "skipped joint_positions.png")
