@@ -1,7 +1,10 @@
 // Benchmarks of the robot area on the bundled Panda: a warm inverse kinematics solve (the step of a
 // joint trajectory: the target 1 mm from the seed's pose) and the joint trajectory of the S-curve
 // plan (examples/plan_panda_s_curve.yaml: IK at every sample of its end-effector path, velocities,
-// velocity-limit check). The plan itself is made once, outside the timing.
+// velocity-limit check). The plan itself is made once, outside the timing. Then the arm's reach
+// (shoulder, wrist, range of their distance: 4096 FK samples and refinement) and the whole plan
+// with the arm (reach shell in the workspace, IK of every step's pose, joint trajectory), for the
+// S-curve and for the reach-limit example, where the shell is active in the last step.
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -10,6 +13,8 @@
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_model.hpp"
+#include "rodshape/robot/arm_plan.hpp"
+#include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
 #include "rodshape/robot/joint_trajectory.hpp"
 #include "rodshape/trajectory/shape_plan.hpp"
@@ -52,7 +57,34 @@ void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
   state.counters["slowdown"] = joints.slowdown;
 }
 
+void BM_ArmReachPanda(benchmark::State& state) {
+  const ArmModel arm = ArmModel::from_urdf_file(kSource + "/data/robots/panda.urdf");
+  ArmReach reach;
+  for (auto _ : state) {
+    reach = compute_arm_reach(arm);
+    benchmark::DoNotOptimize(reach.max_distance);
+  }
+  state.counters["r_max"] = reach.max_distance;
+}
+
+void BM_PlanWithArm(benchmark::State& state, const char* example) {
+  const PlanTask task = read_plan_task(kSource + "/examples/" + example);
+  ArmPlan arm;
+  for (auto _ : state) {
+    arm = plan_with_arm(task.request, task.options, task.robot->arm, task.robot->placement,
+                        task.robot->options);
+    benchmark::DoNotOptimize(arm.joints.q.data());
+  }
+  if (!arm.reachable()) state.SkipWithError(arm.message.c_str());
+  state.counters["replans"] = static_cast<double>(arm.replans.size());
+  state.counters["samples"] = static_cast<double>(arm.joints.t.size());
+}
+
 }  // namespace
 
+BENCHMARK(BM_ArmReachPanda)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PlanWithArm, SCurve, "plan_panda_s_curve.yaml")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_PlanWithArm, ReachLimit, "plan_panda_reach_limit.yaml")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IkWarm)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_JointTrajectoryPaperExperiment)->Unit(benchmark::kMillisecond);
