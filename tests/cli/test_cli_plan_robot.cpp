@@ -69,7 +69,7 @@ void PrintTo(const PandaExample& example, std::ostream* out) { *out << example.f
 
 class CliPandaExamples : public CliPlanRobot, public ::testing::WithParamInterface<PandaExample> {};
 
-TEST_P(CliPandaExamples, WriteJointTrajectoriesThatEndOnThePlannedPose) {
+TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
   const fs::path out = directory_ / "out";
   const Outcome outcome = plan(kSource / "examples" / GetParam().file, out);
   ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
@@ -124,6 +124,31 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatEndOnThePlannedPose) {
                                     wxyz.at(2).get<double>(), wxyz.at(3).get<double>());
   const Eigen::Matrix3d reached = flange.rotation * turn;
   EXPECT_LT(Eigen::AngleAxisd(reached * expected.toRotationMatrix().transpose()).angle(), 1e-6);
+
+  // Every sample replays onto the planned end-effector path (trajectory.csv, the same samples):
+  // IK converges to 1e-10 m and rad; the files' 12 significant digits add ~1e-12. So 1e-9.
+  std::istringstream path(read_file(out / "trajectory.csv"));
+  std::string row;
+  std::getline(path, row);  // header
+  double worst_position = 0.0, worst_angle = 0.0;
+  for (const Json& point : points) {
+    ASSERT_TRUE(std::getline(path, row));
+    std::istringstream fields(row);
+    std::vector<double> v;
+    for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 8u) << row;
+    for (int j = 0; j < 7; ++j) q(j) = point.at("positions").at(j).get<double>();
+    const rodshape::Pose f = arm.forward_kinematics(q);
+    const Eigen::Vector3d p = base + f.position + f.rotation * Eigen::Vector3d(0, 0, 0.1034);
+    const Eigen::Quaterniond planned(v[4], v[5], v[6], v[7]);
+    worst_position = std::max(worst_position, (p - Eigen::Vector3d(v[1], v[2], v[3])).norm());
+    worst_angle = std::max(
+        worst_angle,
+        Eigen::AngleAxisd(f.rotation * turn * planned.normalized().toRotationMatrix().transpose())
+            .angle());
+  }
+  EXPECT_LT(worst_position, 1e-9);
+  EXPECT_LT(worst_angle, 1e-9);
 
   // The robot section: the reach shell around the shoulder (0.333 m above the base), the wrist
   // 0.107 + 0.1034 m beyond the tip along the tip's tangent (the hand grasps from above), and the
