@@ -1,5 +1,6 @@
 // test_arm_model.cpp: the Panda URDF against Franka's modified Denavit–Hartenberg table, written
-// out here by hand; the Jacobian against central differences; every kind of bad URDF or chain.
+// out by hand in support/panda_dh.hpp; the Jacobian against central differences; every kind of bad
+// URDF or chain.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -12,44 +13,17 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_model.hpp"
+#include "support/panda_dh.hpp"
 
 namespace {
 
 using rodshape::ArmModel;
 using rodshape::InputError;
 using rodshape::Pose;
-constexpr double pi = std::numbers::pi;
 
-const std::string kPanda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
-
-// Franka's modified DH table (https://frankaemika.github.io/docs/control_parameters.html):
-// per row a_{i-1}, d_i, α_{i-1}; the last row is the flange (θ = 0).
-struct DhRow {
-  double a, d, alpha;
-};
-const std::vector<DhRow> kPandaDh = {
-    {0.0, 0.333, 0.0},         {0.0, 0.0, -pi / 2}, {0.0, 0.316, pi / 2}, {0.0825, 0.0, pi / 2},
-    {-0.0825, 0.384, -pi / 2}, {0.0, 0.0, pi / 2},  {0.088, 0.0, pi / 2}, {0.0, 0.107, 0.0},
-};
-
-/// T_i = RotX(α_{i-1}) TransX(a_{i-1}) RotZ(θ_i) TransZ(d_i), multiplied from the base.
-Eigen::Isometry3d panda_dh(const Eigen::VectorXd& q) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  for (std::size_t i = 0; i < kPandaDh.size(); ++i) {
-    const DhRow& row = kPandaDh[i];
-    const double theta = i < 7 ? q(static_cast<Eigen::Index>(i)) : 0.0;
-    T = T * Eigen::AngleAxisd(row.alpha, Eigen::Vector3d::UnitX()) *
-        Eigen::Translation3d(row.a, 0.0, 0.0) * Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()) *
-        Eigen::Translation3d(0.0, 0.0, row.d);
-  }
-  return T;
-}
-
-Eigen::VectorXd ready_pose() {
-  Eigen::VectorXd q(7);
-  q << 0.0, -pi / 4, 0.0, -3 * pi / 4, 0.0, pi / 2, pi / 4;
-  return q;
-}
+const std::string kPanda = rodshape::testing::kPandaUrdf;
+using rodshape::testing::panda_dh;
+Eigen::VectorXd ready_pose() { return rodshape::testing::panda_ready_pose(); }
 
 void expect_pose_near(const Pose& pose, const Eigen::Isometry3d& expected, double tolerance) {
   EXPECT_LE((pose.position - expected.translation()).norm(), tolerance)

@@ -10,6 +10,7 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_reach.hpp"
+#include "support/panda_dh.hpp"
 
 namespace {
 
@@ -20,35 +21,9 @@ using rodshape::InputError;
 using rodshape::Pose;
 constexpr double pi = std::numbers::pi;
 
-const std::string kPanda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
-
-// Franka's modified DH table: per row a_{i-1}, d_i, α_{i-1} (as in test_arm_model.cpp).
-struct DhRow {
-  double a, d, alpha;
-};
-const DhRow kPandaDh[7] = {{0.0, 0.333, 0.0},     {0.0, 0.0, -pi / 2},       {0.0, 0.316, pi / 2},
-                           {0.0825, 0.0, pi / 2}, {-0.0825, 0.384, -pi / 2}, {0.0, 0.0, pi / 2},
-                           {0.088, 0.0, pi / 2}};
-
-/// The DH frames 1..7 at q: frame i's z axis is joint i's axis, through its origin.
-std::vector<Eigen::Isometry3d> panda_dh_frames(const Eigen::VectorXd& q) {
-  std::vector<Eigen::Isometry3d> frames;
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  for (int i = 0; i < 7; ++i) {
-    const DhRow& row = kPandaDh[i];
-    T = T * Eigen::AngleAxisd(row.alpha, Eigen::Vector3d::UnitX()) *
-        Eigen::Translation3d(row.a, 0.0, 0.0) * Eigen::AngleAxisd(q(i), Eigen::Vector3d::UnitZ()) *
-        Eigen::Translation3d(0.0, 0.0, row.d);
-    frames.push_back(T);
-  }
-  return frames;
-}
-
-Eigen::VectorXd ready_pose() {
-  Eigen::VectorXd q(7);
-  q << 0.0, -pi / 4, 0.0, -3 * pi / 4, 0.0, pi / 2, pi / 4;
-  return q;
-}
+const std::string kPanda = rodshape::testing::kPandaUrdf;
+using rodshape::testing::panda_dh_frames;
+Eigen::VectorXd ready_pose() { return rodshape::testing::panda_ready_pose(); }
 
 TEST(ArmReach, PandaJointAxesAreTheDhFramesZAxes) {
   const ArmModel arm = ArmModel::from_urdf_file(kPanda);

@@ -14,11 +14,11 @@
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "support/panda_dh.hpp"
 
 namespace {
 
 using namespace rodshape;
-constexpr double pi = std::numbers::pi;
 
 const ArmModel& panda() {
   static const ArmModel arm =
@@ -26,11 +26,7 @@ const ArmModel& panda() {
   return arm;
 }
 
-Eigen::VectorXd ready_pose() {
-  Eigen::VectorXd q(7);
-  q << 0.0, -pi / 4, 0.0, -3 * pi / 4, 0.0, pi / 2, pi / 4;
-  return q;
-}
+Eigen::VectorXd ready_pose() { return rodshape::testing::panda_ready_pose(); }
 
 Eigen::VectorXd random_within_limits(std::mt19937& rng) {
   Eigen::VectorXd q(7);
