@@ -29,6 +29,17 @@ std::string json_numbers(const Eigen::VectorXd& values) {
   return text + "]";
 }
 
+void ArmArguments::add_to(CLI::App& command) {
+  command.add_option("urdf", urdf_path, "The arm's URDF file, e.g. data/robots/panda.urdf")
+      ->required()
+      ->type_name("URDF");
+  command.add_option("--base", base_link, "Base link of the chain (default: the URDF's root)")
+      ->type_name("LINK");
+  command
+      .add_option("--tip", tip_link, "Tip link of the chain (default: the last link below the base)")
+      ->type_name("LINK");
+}
+
 namespace {
 
 class FkCommand final : public Command {
@@ -39,18 +50,15 @@ class FkCommand final : public Command {
         "Forward kinematics: print the tip link's pose in the base link's frame as JSON "
         "{\"position\": [x, y, z], \"rotation\": [w, x, y, z]} (m; unit quaternion, w >= 0). "
         "The joint positions (rad or m) must lie within the URDF's limits. Docs: docs/robot.md.");
-    command->add_option("urdf", urdf_path_, "The arm's URDF file, e.g. data/robots/panda.urdf")
-        ->required()
-        ->type_name("URDF");
+    arm_.add_to(*command);
     command->add_option("q", q_, "One position per moving joint of the chain, base to tip")
         ->required()
         ->type_name("Q");
-    add_chain_options(*command);
     return command;
   }
 
   int run() override {
-    const ArmModel arm = ArmModel::from_urdf_file(urdf_path_, base_link_, tip_link_);
+    const ArmModel arm = arm_.load();
     const Eigen::VectorXd q =
         Eigen::Map<const Eigen::VectorXd>(q_.data(), static_cast<Eigen::Index>(q_.size()));
     arm.check_joint_positions(q, "q");
@@ -62,19 +70,8 @@ class FkCommand final : public Command {
   }
 
  private:
-  void add_chain_options(CLI::App& command) {
-    command.add_option("--base", base_link_, "Base link of the chain (default: the URDF's root)")
-        ->type_name("LINK");
-    command
-        .add_option("--tip", tip_link_,
-                    "Tip link of the chain (default: the last link below the base)")
-        ->type_name("LINK");
-  }
-
-  std::string urdf_path_;
+  ArmArguments arm_;
   std::vector<double> q_;
-  std::string base_link_;
-  std::string tip_link_;
 };
 
 }  // namespace

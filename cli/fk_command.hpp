@@ -1,5 +1,5 @@
-// fk_command.hpp: `rodshape fk URDF q1 … qn [--base LINK] [--tip LINK]`, and the small JSON
-// helpers that fk and ik share.
+// fk_command.hpp: `rodshape fk URDF q1 … qn [--base LINK] [--tip LINK]`, and what fk and ik share:
+// the arm's arguments and small JSON helpers.
 #pragma once
 
 #include <Eigen/Core>
@@ -7,10 +7,23 @@
 #include <string>
 
 #include "command.hpp"
+#include "rodshape/robot/arm_model.hpp"
 
 namespace rodshape::cli {
 
 std::unique_ptr<Command> make_fk_command();
+
+/// The arm a command works on: the URDF (a positional argument) and the chain's --base/--tip.
+struct ArmArguments {
+  std::string urdf_path;
+  std::string base_link;
+  std::string tip_link;
+  /// Adds the positional URDF argument (call before the command's other positionals) and the
+  /// --base and --tip options.
+  void add_to(CLI::App& command);
+  /// Reads the chain (InputError naming the URDF when it cannot).
+  ArmModel load() const { return ArmModel::from_urdf_file(urdf_path, base_link, tip_link); }
+};
 
 /// A number as JSON: the shortest text that reads back to the same double; null if not finite.
 std::string json_number(double value);

@@ -6,7 +6,6 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <iostream>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -15,18 +14,11 @@
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/robot/joint_trajectory.hpp"
 
 namespace rodshape::cli {
 
 namespace {
-
-/// The default seed of a 7-joint chain: the Panda's "ready" pose.
-Eigen::VectorXd panda_ready_pose() {
-  constexpr double pi = std::numbers::pi;
-  Eigen::VectorXd q(7);
-  q << 0.0, -pi / 4.0, 0.0, -3.0 * pi / 4.0, 0.0, pi / 2.0, pi / 4.0;
-  return q;
-}
 
 /// A JSON string: quotes, backslashes and control characters escaped.
 std::string json_string(const std::string& text) {
@@ -50,7 +42,8 @@ Eigen::Matrix3d rotation_from_wxyz(const std::vector<double>& wxyz) {
   const Eigen::Quaterniond q(wxyz[0], wxyz[1], wxyz[2], wxyz[3]);
   const double norm = q.norm();
   if (!std::isfinite(norm) || std::abs(norm - 1.0) > 1e-3) {
-    throw InputError("the quaternion [qw, qx, qy, qz] = " + json_numbers(q.coeffs()) +
+    throw InputError("the quaternion [qw, qx, qy, qz] = " +
+                     json_numbers(Eigen::Vector4d(wxyz[0], wxyz[1], wxyz[2], wxyz[3])) +
                      " has norm " + json_number(norm) + "; expected a unit quaternion");
   }
   return q.normalized().toRotationMatrix();
@@ -65,9 +58,7 @@ class IkCommand final : public Command {
         "qw qx qy qz a unit quaternion, in the base link's frame), within the joint limits, as "
         "JSON {\"q\": [...], \"status\": ..., ...}. Exit 3 when the pose is out of reach. Docs: "
         "docs/robot.md.");
-    command->add_option("urdf", urdf_path_, "The arm's URDF file, e.g. data/robots/panda.urdf")
-        ->required()
-        ->type_name("URDF");
+    arm_.add_to(*command);
     command->add_option("pose", pose_, "Target pose: x y z qw qx qy qz")
         ->required()
         ->expected(7)
@@ -79,26 +70,16 @@ class IkCommand final : public Command {
                      "the limits)")
         ->expected(1, -1)
         ->type_name("Q");
-    command->add_option("--base", base_link_, "Base link of the chain (default: the URDF's root)")
-        ->type_name("LINK");
-    command
-        ->add_option("--tip", tip_link_,
-                     "Tip link of the chain (default: the last link below the base)")
-        ->type_name("LINK");
     return command;
   }
 
   int run() override {
-    const ArmModel arm = ArmModel::from_urdf_file(urdf_path_, base_link_, tip_link_);
-    Eigen::VectorXd seed;
-    if (!seed_.empty()) {
-      seed =
-          Eigen::Map<const Eigen::VectorXd>(seed_.data(), static_cast<Eigen::Index>(seed_.size()));
-    } else if (arm.joints() == 7) {
-      seed = panda_ready_pose();
-    } else {
-      seed = arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
-    }
+    const ArmModel arm = arm_.load();
+    const Eigen::VectorXd seed =
+        seed_.empty()
+            ? default_seed(arm)
+            : Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(
+                  seed_.data(), static_cast<Eigen::Index>(seed_.size())));
     arm.check_joint_positions(seed, "--seed");
 
     Pose target;
@@ -117,18 +98,16 @@ class IkCommand final : public Command {
               << ", \"rotation_error\": " << json_number(result.rotation_error) << "}\n"
               << std::flush;
     if (!result.converged()) {
-      std::cerr << "error: " << urdf_path_ << ": ik: " << result.message << "\n";
+      std::cerr << "error: " << arm_.urdf_path << ": ik: " << result.message << "\n";
       return kNotConverged;
     }
     return kSuccess;
   }
 
  private:
-  std::string urdf_path_;
+  ArmArguments arm_;
   std::vector<double> pose_;
   std::vector<double> seed_;
-  std::string base_link_;
-  std::string tip_link_;
 };
 
 }  // namespace
