@@ -70,9 +70,10 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
   set_number("nlp_upper_bound_inf", kIpoptInfinity);
 
   // Derivatives. F and g come with exact first derivatives (the integrator's variational
-  // equations); second derivatives do not exist in the code, so the Hessian of the Lagrangian is
-  // IPOPT's limited-memory BFGS approximation. With 6 unknowns a long history is free, and IPOPT's
-  // default of 6 pairs forgets curvature too fast on this non-convex problem. On the rubber band
+  // equations); the Hessian of the Lagrangian is either forward differences of its exact gradient
+  // (eval_h) or IPOPT's limited-memory BFGS approximation. With 6 unknowns a long L-BFGS history
+  // is free, and IPOPT's default of 6 pairs forgets curvature too fast on this non-convex problem.
+  // On the rubber band
   // with the target of tests/optimisation/test_shape_optimizer.cpp, from a zero guess, history 6
   // failed 2 of 4 cases (grasp m_x = 0: max_iter 500; half-space: Infeasible_Problem_Detected
   // after wandering to |w| ~ 1e3); history 20 solved all 4 in 26–79 iterations.
@@ -250,21 +251,18 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
     return gradient.allFinite();
   };
   const Vector6d w = Eigen::Map<const Vector6d>(x);
-  const RodProperties& props = problem_.rod().properties;
-  const double L = props.length, EI = 0.5 * (props.K_rot.x() + props.K_rot.y());
+  const Vector6d units = problem_.rod().properties.bending_wrench_units();
   Vector6d at_w;
   if (!lagrangian_gradient(w, at_w)) return false;
   Matrix6d H;
   for (int j = 0; j < kUnknowns; ++j) {
-    const double scale = j < 3 ? EI / (L * L) : EI / L;
     const double h =
-        std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(w[j]), scale);
+        std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(w[j]), units[j]);
     Vector6d shifted = w, at_shifted;
     shifted[j] += h;
     if (!lagrangian_gradient(shifted, at_shifted)) return false;
     H.col(j) = (at_shifted - at_w) / h;
   }
-  problem_.evaluate(w);  // leave the problem at x, as every other callback does
   H = 0.5 * (H + H.transpose()).eval();
   Ipopt::Index k = 0;
   for (int i = 0; i < kUnknowns; ++i)

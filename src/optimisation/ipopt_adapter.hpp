@@ -7,8 +7,7 @@
 // with w = (n(0), m(0)) the base wrench, F the shape cost and g the workspace, grasp and strain
 // rows of ShapeProblem. First derivatives are exact (one integration with all-node derivatives);
 // the Hessian of the Lagrangian is forward differences of its exact gradient (eval_h), or IPOPT's
-// limited-memory (L-BFGS) approximation when ShapeOptimizerOptions::hessian says so, as
-// off.
+// limited-memory (L-BFGS) approximation when ShapeOptimizerOptions::hessian says so.
 #pragma once
 
 #include <IpIpoptApplication.hpp>

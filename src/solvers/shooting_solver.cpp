@@ -64,8 +64,8 @@ void validate_tip(const TipCondition& tip) {
 /// positions / L, angles as they are, forces · L²/EI, moments · L/EI.
 Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
   const double L = rod.properties.length;
-  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
-  const double force = L * L / EI, moment = L / EI;
+  const Vector6d units = rod.properties.bending_wrench_units();
+  const double force = 1.0 / units(0), moment = 1.0 / units(3);
   Vector6d scale;
   std::visit(Overloaded{
                  [&](const FreeTip&) { scale << force, force, force, moment, moment, moment; },
@@ -229,11 +229,8 @@ DirectResult solve_direct(const ClampedRod& rod,
   // and starts at one such unit. Column-norm scaling (MINPACK's default) lets the first step from a
   // straight rod jump to an axial force of order EA/L, because shortening by bending is of second
   // order; the physical scale keeps it to the bending forces that actually move the tip.
-  const double L = rod.properties.length;
-  const double EI = 0.5 * (rod.properties.K_rot.x() + rod.properties.K_rot.y());
   lm.setExternalScaling(true);
-  lm.diag().resize(6);
-  lm.diag() << L * L / EI, L * L / EI, L * L / EI, L / EI, L / EI, L / EI;
+  lm.diag() = rod.properties.bending_wrench_units().cwiseInverse();
   lm.setFactor(1.0);
 
   // Below this scaled residual (positions 1% of L, angles 0.01 rad) the chord endgame takes over.

@@ -33,6 +33,15 @@ struct RodProperties {
 
   /// Throws InputError naming the field ("rod.length", "rod.stiffness.EIx", ...).
   void validate() const;
+
+  /// The bending units of a base wrench, (EI/L² ×3, EI/L ×3) with EI the mean of EIx and EIy: the
+  /// forces and moments that bend the rod by about 1 rad. The solvers measure the unknown in them.
+  Eigen::Matrix<double, 6, 1> bending_wrench_units() const {
+    const double EI = 0.5 * (K_rot.x() + K_rot.y());
+    Eigen::Matrix<double, 6, 1> units;
+    units << Eigen::Vector3d::Constant(EI / (length * length)), Eigen::Vector3d::Constant(EI / length);
+    return units;
+  }
 };
 
 /// Stiffness given directly; each one given replaces the value the section and material imply.
