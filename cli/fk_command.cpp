@@ -36,7 +36,8 @@ void ArmArguments::add_to(CLI::App& command) {
   command.add_option("--base", base_link, "Base link of the chain (default: the URDF's root)")
       ->type_name("LINK");
   command
-      .add_option("--tip", tip_link, "Tip link of the chain (default: the last link below the base)")
+      .add_option("--tip", tip_link,
+                  "Tip link of the chain (default: the last link below the base)")
       ->type_name("LINK");
 }
 

@@ -75,11 +75,10 @@ class IkCommand final : public Command {
 
   int run() override {
     const ArmModel arm = arm_.load();
-    const Eigen::VectorXd seed =
-        seed_.empty()
-            ? default_seed(arm)
-            : Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(
-                  seed_.data(), static_cast<Eigen::Index>(seed_.size())));
+    const Eigen::VectorXd seed = seed_.empty()
+                                     ? default_seed(arm)
+                                     : Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(
+                                           seed_.data(), static_cast<Eigen::Index>(seed_.size())));
     arm.check_joint_positions(seed, "--seed");
 
     Pose target;

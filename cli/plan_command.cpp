@@ -93,7 +93,6 @@ class PlanCommand final : public Command {
     }
     const ShapePlan& plan = arm ? arm->plan : shape_plan;
     const JointTrajectory* joints = arm ? &arm->joints : nullptr;
-    if (arm && arm->status == ArmPlanStatus::NotChecked) arm->joints.message = arm->message;
 
     make_directory(output_directory_);
     const fs::path directory(output_directory_);

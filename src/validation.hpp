@@ -7,6 +7,8 @@
 #include <sstream>
 #include <string>
 
+#include "rodshape/core/pose.hpp"
+#include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
 
 namespace rodshape::detail {
@@ -39,6 +41,15 @@ void require_finite(const std::string& field, const Eigen::MatrixBase<Derived>& 
     if (!std::isfinite(value(i)))
       throw InputError(field + "[" + std::to_string(i) + "] = " + format_value(value(i)) +
                        " must be finite");
+}
+
+/// A finite position and a rotation (RᵀR = I, det R = 1, within 1e-6); `field` names the pose,
+/// e.g. "base" or "tip".
+inline void require_pose(const std::string& field, const Pose& pose) {
+  require_finite(field + ".position", pose.position);
+  if (!pose.rotation.allFinite()) throw InputError(field + ".rotation must be finite");
+  if (!is_rotation(pose.rotation, 1e-6))
+    throw InputError(field + ".rotation is not a rotation (RᵀR = I and det R = 1 within 1e-6)");
 }
 
 }  // namespace rodshape::detail

@@ -187,9 +187,7 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
     reach["margin"] = json_number(options.reach_margin);
     // |w - c| where the rod starts and at each step: how close the plan came to the shell.
     Json distances = Json::array();
-    const auto distance = [&](const Pose& tip) {
-      return json_number((arm.shell->point(tip) - arm.shell->center).norm());
-    };
+    const auto distance = [&](const Pose& tip) { return json_number(arm.shell->distance(tip)); };
     distances.push_back(distance(arm.plan.initial_configuration.tip()));
     for (const PlanStep& step : arm.plan.steps)
       distances.push_back(distance(step.solution.configuration.tip()));

@@ -6,24 +6,16 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
-#include <sstream>
 #include <string>
 
-#include "io/did_you_mean.hpp"
 #include "rodshape/core/so3.hpp"
+#include "validation.hpp"
 
 namespace rodshape::io_detail {
 
 namespace {
 
 constexpr double kRotationTolerance = 1e-6;
-
-std::string format_number(double value) {
-  std::ostringstream out;
-  out.precision(6);
-  out << value;
-  return out.str();
-}
 
 /// Keys that users put directly under `rod` but that belong elsewhere.
 const std::vector<KeyHint>& rod_key_hints() {
@@ -190,8 +182,8 @@ Eigen::Matrix3d read_rotation(const YamlField& rotation) {
                                elements[3].number());
     const double norm = wxyz.norm();
     if (!(std::abs(norm - 1.0) <= kRotationTolerance)) {
-      rotation.fail(rotation.path() + ": quaternion [w, x, y, z] has norm " + format_number(norm) +
-                    "; it must be 1 within 1e-6");
+      rotation.fail(rotation.path() + ": quaternion [w, x, y, z] has norm " +
+                    detail::format_value(norm) + "; it must be 1 within 1e-6");
     }
     return Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().toRotationMatrix();
   }
@@ -205,14 +197,14 @@ Eigen::Matrix3d read_rotation(const YamlField& rotation) {
   if (!is_rotation(R, kRotationTolerance)) {
     const double determinant = R.determinant();
     if (determinant < 0.0) {
-      rotation.fail(rotation.path() + ": the matrix has determinant " + format_number(determinant) +
-                    "; a rotation has determinant +1");
+      rotation.fail(rotation.path() + ": the matrix has determinant " +
+                    detail::format_value(determinant) + "; a rotation has determinant +1");
     }
     const double orthogonality =
         (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
     rotation.fail(rotation.path() + ": the matrix is not a rotation: max |R^T R - I| = " +
-                  format_number(orthogonality) + ", det = " + format_number(determinant) +
-                  " (tolerance 1e-6)");
+                  detail::format_value(orthogonality) +
+                  ", det = " + detail::format_value(determinant) + " (tolerance 1e-6)");
   }
   // Within 1e-6 of SO(3): project so that the pose is orthonormal to round-off, unless it already
   // is (an exact matrix such as [[0, 0, 1], [0, 1, 0], [-1, 0, 0]] stays exact).

@@ -249,12 +249,6 @@ double YamlField::positive_number() const {
   return value;
 }
 
-double YamlField::non_negative_number() const {
-  const double value = number();
-  if (!(value >= 0.0)) fail_value("must be >= 0");
-  return value;
-}
-
 int YamlField::integer() const {
   const double value = number();
   if (value != std::floor(value)) fail_value("must be a whole number");

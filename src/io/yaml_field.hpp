@@ -75,8 +75,6 @@ class YamlField {
   double number() const;
   /// A finite number > 0.
   double positive_number() const;
-  /// A finite number ≥ 0.
-  double non_negative_number() const;
   /// A whole number representable as int.
   int integer() const;
   /// true/false (also yes/no, on/off as yaml-cpp reads them).

@@ -106,13 +106,9 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
 
 // ---- the NLP ------------------------------------------------------------------------------------
 
-ShapeNlp::ShapeNlp(ShapeProblem& problem,
-                   const Vector6d& start,
-                   double infinity,
-                   bool finite_difference_hessian)
+ShapeNlp::ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian)
     : problem_(problem),
       start_(start),
-      infinity_(infinity),
       rows_(problem.constraint_count()),
       finite_difference_hessian_(finite_difference_hessian) {
   outcome_.w = start;
@@ -141,17 +137,17 @@ bool ShapeNlp::get_bounds_info(Ipopt::Index n,
                                Ipopt::Number* g_u) {
   assert(n == kUnknowns && m == rows_);
   (void)n;
-  // ±inf → ±infinity_, which IPOPT reads as "no bound".
+  // ±inf → ±kIpoptInfinity, which IPOPT reads as "no bound".
   const WrenchBounds& bounds = problem_.wrench_bounds();
   for (int j = 0; j < kUnknowns; ++j) {
-    x_l[j] = std::clamp(bounds.lower(j), -infinity_, infinity_);
-    x_u[j] = std::clamp(bounds.upper(j), -infinity_, infinity_);
+    x_l[j] = std::clamp(bounds.lower(j), -kIpoptInfinity, kIpoptInfinity);
+    x_u[j] = std::clamp(bounds.upper(j), -kIpoptInfinity, kIpoptInfinity);
   }
   const Eigen::VectorXd& lower = problem_.constraint_lower();
   const Eigen::VectorXd& upper = problem_.constraint_upper();
   for (Ipopt::Index i = 0; i < m; ++i) {
-    g_l[i] = std::clamp(lower(i), -infinity_, infinity_);
-    g_u[i] = std::clamp(upper(i), -infinity_, infinity_);
+    g_l[i] = std::clamp(lower(i), -kIpoptInfinity, kIpoptInfinity);
+    g_u[i] = std::clamp(upper(i), -kIpoptInfinity, kIpoptInfinity);
   }
   return true;
 }
@@ -451,7 +447,7 @@ DerivativeTestReport run_derivative_test(ShapeProblem& problem,
   }
   Ipopt::SmartPtr<StringJournal> journal = new StringJournal(Ipopt::J_WARNING);
   app->Jnlst()->AddJournal(Ipopt::GetRawPtr(journal));
-  Ipopt::SmartPtr<Ipopt::TNLP> nlp = new ShapeNlp(problem, w, kIpoptInfinity, differenced);
+  Ipopt::SmartPtr<Ipopt::TNLP> nlp = new ShapeNlp(problem, w, differenced);
   app->OptimizeTNLP(nlp);
 
   report.log = journal->text();

@@ -52,12 +52,9 @@ struct NlpOutcome {
 
 class ShapeNlp final : public Ipopt::TNLP {
  public:
-  /// `infinity` must equal IPOPT's nlp_lower/upper_bound_inf: infinite bounds are mapped to
-  /// ±infinity.
-  ShapeNlp(ShapeProblem& problem,
-           const Vector6d& start,
-           double infinity,
-           bool finite_difference_hessian);
+  /// Infinite bounds are given to IPOPT as ±kIpoptInfinity (apply_options sets its
+  /// nlp_lower/upper_bound_inf to that).
+  ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian);
 
   const NlpOutcome& outcome() const { return outcome_; }
 
@@ -149,7 +146,6 @@ class ShapeNlp final : public Ipopt::TNLP {
 
   ShapeProblem& problem_;
   Vector6d start_;
-  double infinity_;
   int rows_;  // m, fixed at construction
   bool finite_difference_hessian_;
   NlpOutcome outcome_;

@@ -1,5 +1,5 @@
-// shape_constraints.cpp: validation of the strain limits (the grasp and the wrench bounds are
-// checked by ShapeProblem, which knows the model).
+// shape_constraints.cpp: validation of the strain limits (the grasp offset and the wrench bounds
+// are checked where the ShapeProblem is built).
 #include "rodshape/optimisation/shape_constraints.hpp"
 
 #include "validation.hpp"

@@ -51,7 +51,8 @@ namespace {
 ///                                                  → Diverged  (the solve broke down; the
 ///                                                    message names IPOPT's status)
 /// A Converged run whose final w violates a constraint or a wrench bound by more than
-/// optimizer.constraint_tolerance (our measure, max_constraint_violation) becomes Singular.
+/// optimizer.constraint_tolerance (our measure, ShapeProblem::constraint_violation) becomes
+/// Singular.
 SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
   switch (status) {
     case Ipopt::Solve_Succeeded:
@@ -81,25 +82,8 @@ SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
   return SolveStatus::Diverged;
 }
 
-/// max(0, g - g_upper, g_lower - g, w - w_upper, w_lower - w) over every row, from the problem's
-/// last evaluate() at w: computed by us, not taken from IPOPT (which measures it on the scaled,
-/// relaxed problem).
-double max_constraint_violation(const ShapeProblem& problem, const Vector6d& w) {
-  double violation = 0.0;
-  const Eigen::VectorXd& g = problem.constraints();
-  for (Eigen::Index i = 0; i < g.size(); ++i) {
-    if (!std::isfinite(g(i))) return std::numeric_limits<double>::infinity();
-    violation = std::max(
-        {violation, g(i) - problem.constraint_upper()(i), problem.constraint_lower()(i) - g(i)});
-  }
-  const WrenchBounds& bounds = problem.wrench_bounds();
-  for (int j = 0; j < 6; ++j)
-    violation = std::max({violation, w(j) - bounds.upper(j), bounds.lower(j) - w(j)});
-  return violation;
-}
-
-/// The extra starts, deterministic. Bending moments are the components of m(0) across the clamp's
-/// tangent, i.e. along the clamp frame's x and y axes R0 e_x, R0 e_y. In order:
+/// The guess, then `count` extra starts, deterministic. Bending moments are the components of m(0)
+/// across the clamp's tangent, i.e. along the clamp frame's x and y axes R0 e_x, R0 e_y. In order:
 ///   1. the guess with both bending moments flipped (the mirror shape),
 ///   2. the guess × 0.5,  3. the guess × 2,
 ///   4. the guess with m_x flipped,  5. with m_y flipped,
@@ -107,9 +91,11 @@ double max_constraint_violation(const ShapeProblem& problem, const Vector6d& w) 
 ///      k × the golden angle in the clamp's x–y plane, m_c = max(EIx, EIy) (π/2) / L being the end
 ///      moment that bends the unloaded rod through a quarter turn.
 /// A start equal to one already listed (e.g. 1–5 from a zero guess) is skipped.
-std::vector<Vector6d> extra_starts(const Vector6d& guess, const ClampedRod& rod, int count) {
+std::vector<Vector6d> starts_from(const Vector6d& guess, const ClampedRod& rod, int count) {
   std::vector<Vector6d> starts{guess};
+  const std::size_t wanted = static_cast<std::size_t>(count) + 1;
   const auto add = [&](const Vector6d& w) {
+    if (starts.size() >= wanted) return;
     for (const Vector6d& s : starts)
       if ((s - w).lpNorm<Eigen::Infinity>() <= 1e-12 * (1.0 + w.lpNorm<Eigen::Infinity>())) return;
     starts.push_back(w);
@@ -121,26 +107,21 @@ std::vector<Vector6d> extra_starts(const Vector6d& guess, const ClampedRod& rod,
     w.tail<3>() = R0 * m;
     return w;
   };
-  const int wanted = count + 1;
-  if (static_cast<int>(starts.size()) < wanted)
-    add(with_local_moment({-m_local.x(), -m_local.y(), m_local.z()}));
-  if (static_cast<int>(starts.size()) < wanted) add(0.5 * guess);
-  if (static_cast<int>(starts.size()) < wanted) add(2.0 * guess);
-  if (static_cast<int>(starts.size()) < wanted)
-    add(with_local_moment({-m_local.x(), m_local.y(), m_local.z()}));
-  if (static_cast<int>(starts.size()) < wanted)
-    add(with_local_moment({m_local.x(), -m_local.y(), m_local.z()}));
+  add(with_local_moment({-m_local.x(), -m_local.y(), m_local.z()}));
+  add(0.5 * guess);
+  add(2.0 * guess);
+  add(with_local_moment({-m_local.x(), m_local.y(), m_local.z()}));
+  add(with_local_moment({m_local.x(), -m_local.y(), m_local.z()}));
   const RodProperties& props = rod.properties;
   const double m_c =
       std::max(props.K_rot.x(), props.K_rot.y()) * (std::numbers::pi / 2.0) / props.length;
   const double golden_angle = std::numbers::pi * (3.0 - std::sqrt(5.0));
   constexpr double kScales[] = {1.0, 0.5, 2.0};
-  for (int k = 0; static_cast<int>(starts.size()) < wanted; ++k) {
+  for (int k = 0; starts.size() < wanted; ++k) {
     const double phi = k * golden_angle;
     const double size = m_c * kScales[k % 3];
     add(with_local_moment(m_local + size * Eigen::Vector3d(std::cos(phi), std::sin(phi), 0.0)));
   }
-  starts.erase(starts.begin());  // the guess itself is not an extra start
   return starts;
 }
 
@@ -161,7 +142,7 @@ StartResult run_start(Ipopt::IpoptApplication& app,
                       const Vector6d& start,
                       const ShapeOptimizerOptions& options) {
   StartResult result;
-  auto* nlp = new detail::ShapeNlp(problem, start, detail::kIpoptInfinity,
+  auto* nlp = new detail::ShapeNlp(problem, start,
                                    detail::uses_finite_difference_hessian(options, problem));
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
   result.application_status = app.OptimizeTNLP(owner);
@@ -173,7 +154,7 @@ StartResult run_start(Ipopt::IpoptApplication& app,
   // Judge the final iterate ourselves, on the problem as posed.
   const Vector6d& w = result.outcome.w;
   problem.evaluate(w);
-  result.violation = max_constraint_violation(problem, w);
+  result.violation = problem.constraint_violation();  // ours, not IPOPT's (scaled, relaxed)
   result.cost = problem.cost();
   result.energy = problem.breakdown().energy;
   result.status = map_status(result.application_status);
@@ -244,9 +225,7 @@ ShapeSolution optimise_shape(ShapeProblem& problem,
     return solution;
   }
 
-  std::vector<Vector6d> starts{w0};
-  for (const Vector6d& w : extra_starts(w0, problem.rod(), options.multi_starts))
-    starts.push_back(w);
+  const std::vector<Vector6d> starts = starts_from(w0, problem.rod(), options.multi_starts);
   std::vector<StartResult> results;
   results.reserve(starts.size());
   for (std::size_t k = 0; k < starts.size(); ++k) {

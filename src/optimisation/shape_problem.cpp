@@ -71,9 +71,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   workspace_.validate();
   limits_.validate();
   validate_wrench_bounds(wrench_bounds_);
-  if (!grasp_.tip_to_end_effector.position.allFinite() ||
-      !is_rotation(grasp_.tip_to_end_effector.rotation))
-    throw InputError("grasp.tip_to_end_effector must be a finite position and a rotation");
+  detail::require_pose("grasp.tip_to_end_effector", grasp_.tip_to_end_effector);
 
   const int nodes = rod_.nodes();
   rows_.workspace = workspace_.constraint_count();
@@ -108,7 +106,6 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   breakdown_.distances.assign(points, 0.0);
   g_ = Eigen::VectorXd::Zero(constraint_count_);
   dg_dw_ = Eigen::MatrixXd::Zero(constraint_count_, 6);
-  workspace_g_ = Eigen::VectorXd::Zero(rows_.workspace);
   workspace_dg_dp_ = Eigen::MatrixXd::Zero(rows_.workspace, 3);
   workspace_dg_dtheta_ = Eigen::MatrixXd::Zero(rows_.workspace, 3);
 }
@@ -120,6 +117,18 @@ void ShapeProblem::evaluate(const Vector6d& w) {
   evaluate_constraints();
   w_ = w;
   evaluated_ = true;
+}
+
+double ShapeProblem::constraint_violation() const {
+  double violation = 0.0;
+  for (Eigen::Index i = 0; i < g_.size(); ++i) {
+    if (!std::isfinite(g_(i))) return std::numeric_limits<double>::infinity();
+    violation = std::max({violation, g_(i) - g_upper_(i), g_lower_(i) - g_(i)});
+  }
+  for (int j = 0; j < 6; ++j)
+    violation =
+        std::max({violation, w_(j) - wrench_bounds_.upper(j), wrench_bounds_.lower(j) - w_(j)});
+  return violation;
 }
 
 void ShapeProblem::evaluate_cost() {
@@ -163,8 +172,8 @@ void ShapeProblem::evaluate_constraints() {
   int row = 0;
   // 1. workspace
   if (rows_.workspace > 0) {
-    workspace_.evaluate(Pose{c.p[N], c.R[N]}, workspace_g_, workspace_dg_dp_, workspace_dg_dtheta_);
-    g_.head(rows_.workspace) = workspace_g_;
+    workspace_.evaluate(Pose{c.p[N], c.R[N]}, g_.head(rows_.workspace), workspace_dg_dp_,
+                        workspace_dg_dtheta_);
     dg_dw_.topRows(rows_.workspace) = workspace_dg_dp_.lazyProduct(c.tip_dp_dw);  // no GEMM buffers
     if (workspace_.reach)
       dg_dw_.topRows(rows_.workspace) += workspace_dg_dtheta_.lazyProduct(c.tip_dtheta_dw);

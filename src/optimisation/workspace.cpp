@@ -1,7 +1,8 @@
 // workspace.cpp: the rows of g for the tip pose (p, R) ∈ Ws, in the order box (x, y, z), inside
-// balls, outside balls, half-spaces, reach shell (outer, inner). The balls are written squared,
-// |p - c|² ≤ r² (≥ r² outside), so that g is a polynomial in p (smooth everywhere, also at the
-// centre, where |p - c| is not). The reach shell's point q = p + R t moves with the tip's rotation:
+// balls, outside balls, half-spaces, reach shell (one two-sided row). The balls are written
+// squared, |p - c|² ≤ r² (≥ r² outside), so that g is a polynomial in p (smooth everywhere, also at
+// the centre, where |p - c| is not). The reach shell's point q = p + R t moves with the tip's
+// rotation:
 //   δq = δp + R θ̂ t = δp - R t̂ θ,   so  d|q - c|²/dp = 2 (q - c)ᵀ,  d|q - c|²/dθ = -2 (q - c)ᵀ R t̂.
 #include "rodshape/optimisation/workspace.hpp"
 
@@ -25,9 +26,8 @@ std::string indexed(const char* name, std::size_t i) {
 }  // namespace
 
 int Workspace::constraint_count() const {
-  const int reach_rows = reach ? (reach->inner_radius > 0.0 ? 2 : 1) : 0;
   return (box ? 3 : 0) + static_cast<int>(inside.size() + outside.size() + half_spaces.size()) +
-         reach_rows;
+         (reach ? 1 : 0);
 }
 
 bool Workspace::contains(const Pose& tip, double tolerance) const {
@@ -43,7 +43,7 @@ bool Workspace::contains(const Pose& tip, double tolerance) const {
   for (const HalfSpace& half : half_spaces)  // distance to the plane, not nᵀp - offset
     if (half.normal.dot(p) - half.offset > tolerance * half.normal.norm()) return false;
   if (reach) {
-    const double r = (reach->point(tip) - reach->center).norm();
+    const double r = reach->distance(tip);
     if (r > reach->outer_radius + tolerance || r < reach->inner_radius - tolerance) return false;
   }
   return true;
@@ -54,37 +54,29 @@ void Workspace::evaluate(const Pose& tip,
                          Eigen::Ref<Eigen::MatrixXd> dg_dp,
                          Eigen::Ref<Eigen::MatrixXd> dg_dtheta) const {
   const Eigen::Vector3d& p = tip.position;
-  const bool with_jacobian = dg_dp.rows() > 0;
-  if (with_jacobian) dg_dtheta.setZero();
+  dg_dtheta.setZero();
   int row = 0;
   if (box) {
     g.segment<3>(row) = p;  // lower ≤ p ≤ upper
-    if (with_jacobian) dg_dp.middleRows<3>(row).setIdentity();
+    dg_dp.middleRows<3>(row).setIdentity();
     row += 3;
   }
   auto ball_row = [&](const Ball& ball) {
     const Eigen::Vector3d d = p - ball.center;
     g(row) = d.squaredNorm();  // |p - c|²
-    if (with_jacobian) dg_dp.row(row) = 2.0 * d.transpose();
-    ++row;
+    dg_dp.row(row++) = 2.0 * d.transpose();
   };
   for (const Ball& ball : inside) ball_row(ball);
   for (const Ball& ball : outside) ball_row(ball);
   for (const HalfSpace& half : half_spaces) {
     g(row) = half.normal.dot(p);  // nᵀp ≤ offset
-    if (with_jacobian) dg_dp.row(row) = half.normal.transpose();
-    ++row;
+    dg_dp.row(row++) = half.normal.transpose();
   }
   if (reach) {
     const Eigen::Vector3d d = reach->point(tip) - reach->center;
-    const int rows = reach->inner_radius > 0.0 ? 2 : 1;  // the same function, two bounds
-    for (int k = 0; k < rows; ++k, ++row) {
-      g(row) = d.squaredNorm();  // |q - c|²
-      if (with_jacobian) {
-        dg_dp.row(row) = 2.0 * d.transpose();
-        dg_dtheta.row(row) = -2.0 * d.transpose() * tip.rotation * hat(reach->tip_point);
-      }
-    }
+    g(row) = d.squaredNorm();  // |q - c|²
+    dg_dp.row(row) = 2.0 * d.transpose();
+    dg_dtheta.row(row) = -2.0 * d.transpose() * tip.rotation * hat(reach->tip_point);
   }
 }
 
@@ -108,12 +100,8 @@ void Workspace::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::Vect
     upper(row++) = half.offset;
   }
   if (reach) {
-    lower(row) = -kInf;
-    upper(row++) = reach->outer_radius * reach->outer_radius;
-    if (reach->inner_radius > 0.0) {
-      lower(row) = reach->inner_radius * reach->inner_radius;
-      upper(row++) = kInf;
-    }
+    lower(row) = reach->inner_radius > 0.0 ? reach->inner_radius * reach->inner_radius : -kInf;
+    upper(row) = reach->outer_radius * reach->outer_radius;
   }
 }
 

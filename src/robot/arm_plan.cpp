@@ -63,31 +63,32 @@ bool tighten(Workspace::ReachShell& shell, double r, double tightening) {
     shell.outer_radius = std::min(shell.outer_radius, r) - tightening;
   else
     shell.inner_radius = std::max(shell.inner_radius, r) + tightening;
-  return shell.outer_radius > shell.inner_radius && shell.outer_radius > 0.0;
+  return shell.outer_radius > shell.inner_radius;  // (inner ≥ 0, so outer > 0 too)
 }
 
-/// The first planned pose (initial, then steps) without an IK solution, or -1; fills waypoint_q.
+/// The first step whose end-effector pose has no IK solution (1 …), or 0; waypoint_q (which holds
+/// the initial pose's joints) gets each step's, each IK seeded from the one before.
 struct WaypointCheck {
-  int failed = -1;  // 0: the initial pose, k: step k
+  int failed_step = 0;
   std::string message;
 };
 
-WaypointCheck check_waypoints(const ArmModel& arm,
-                              const ArmPlacement& placement,
-                              const std::vector<Pose>& poses,
-                              const JointTrajectoryOptions& options,
-                              std::vector<Eigen::VectorXd>& waypoint_q) {
-  waypoint_q.clear();
-  Eigen::VectorXd seed = options.seed.size() > 0 ? options.seed : default_seed(arm);
-  for (std::size_t k = 0; k < poses.size(); ++k) {
-    const IkResult ik = solve_ik(arm, flange_target(placement, poses[k]), seed, options.ik);
+WaypointCheck check_steps(const ArmModel& arm,
+                          const ArmPlacement& placement,
+                          const std::vector<PlanStep>& steps,
+                          const IkOptions& options,
+                          std::vector<Eigen::VectorXd>& waypoint_q) {
+  waypoint_q.resize(1);
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const IkResult ik =
+        solve_ik(arm, flange_target(placement, steps[k].end_effector), waypoint_q.back(), options);
     if (!ik.converged()) {
-      const std::string which = k == 0 ? "the initial end-effector pose"
-                                       : "step " + std::to_string(k) + "'s end-effector pose";
-      return {static_cast<int>(k), which + " has no inverse kinematics solution: " + ik.message};
+      return {static_cast<int>(k) + 1, "step " + std::to_string(k + 1) +
+                                           "'s end-effector pose has no inverse kinematics "
+                                           "solution: " +
+                                           ik.message};
     }
     waypoint_q.push_back(ik.q);
-    seed = ik.q;
   }
   return {};
 }
@@ -110,6 +111,13 @@ ArmPlan plan_with_arm(const PlanRequest& request,
   const Pose initial_tip =
       request.initial_tip ? *request.initial_tip : integrate(request.rod, BaseWrench{}).tip();
   const Pose initial_ee = compose(initial_tip, request.grasp.tip_to_end_effector);
+  // The initial pose does not change from one plan to the next: its IK is solved once, and its
+  // solution seeds the steps' checks and the joint trajectory.
+  const IkResult initial_ik = solve_ik(arm, flange_target(placement, initial_ee),
+                                       arm_options.joints.first_seed(arm), arm_options.joints.ik);
+  JointTrajectoryOptions joint_options = arm_options.joints;
+  joint_options.seed = initial_ik.q;
+  double r_start = 0.0;  // the wrist's distance where the rod starts
   if (arm_options.use_reach) {
     if (request.workspace.reach)
       throw InputError(
@@ -117,9 +125,9 @@ ArmPlan plan_with_arm(const PlanRequest& request,
     result.reach = compute_arm_reach(arm, arm_options.reach);
     result.shell = reach_shell(*result.reach, placement, request.grasp.tip_to_end_effector,
                                arm_options.reach_margin);
-    const double r = wrist_distance(*result.reach, placement, initial_ee);
-    if (r > result.shell->outer_radius || r < result.shell->inner_radius) {
-      throw InputError("robot: where the rod starts, the arm's wrist would be " + metres(r) +
+    r_start = wrist_distance(*result.reach, placement, initial_ee);
+    if (r_start > result.shell->outer_radius || r_start < result.shell->inner_radius) {
+      throw InputError("robot: where the rod starts, the arm's wrist would be " + metres(r_start) +
                        " from its shoulder, outside its reach shell " +
                        describe_shell(*result.shell) + " (robot.reach.margin " +
                        metres(arm_options.reach_margin) +
@@ -135,30 +143,33 @@ ArmPlan plan_with_arm(const PlanRequest& request,
     if (result.plan.status == PlanStatus::Infeasible || result.plan.end_effector_path.empty()) {
       result.status = ArmPlanStatus::NotChecked;
       result.message = "no end-effector path to check";
+      result.joints.message = result.message;
       result.waypoint_q.clear();
       return result;
     }
+    if (!initial_ik.converged()) {  // no plan moves the start: nothing to re-plan
+      result.status = ArmPlanStatus::Unreachable;
+      result.message = "the initial end-effector pose has no inverse kinematics solution: " +
+                       initial_ik.message + " (the arm cannot hold the rod where it starts)";
+      result.joints.message = "not computed: " + result.message;
+      return result;
+    }
 
-    // 1. Every planned pose, seeded from the one before.
-    std::vector<Pose> poses{initial_ee};
-    for (const PlanStep& step : result.plan.steps) poses.push_back(step.end_effector);
+    // 1. Every step's pose, seeded from the one before.
+    result.waypoint_q = {initial_ik.q};
     const WaypointCheck check =
-        check_waypoints(arm, placement, poses, arm_options.joints, result.waypoint_q);
+        check_steps(arm, placement, result.plan.steps, arm_options.joints.ik, result.waypoint_q);
     std::string failure;
     Pose failed_pose;
-    if (check.failed >= 0) {
+    if (check.failed_step > 0) {
       failure = check.message;
       result.joints.message = "not computed: " + failure;
-      failed_pose = poses[static_cast<std::size_t>(check.failed)];
-      if (check.failed == 0) {  // no plan moves the start: nothing to re-plan
-        result.status = ArmPlanStatus::Unreachable;
-        result.message = failure + " (the arm cannot hold the rod where it starts)";
-        return result;
-      }
+      failed_pose = result.plan.steps[static_cast<std::size_t>(check.failed_step - 1)].end_effector;
     } else {
-      // 2. The joint trajectory along the timed path (every sample by IK).
+      // 2. The joint trajectory along the timed path (every sample by IK), from the initial
+      //    pose's joints.
       result.joints =
-          joint_trajectory(arm, result.plan.end_effector_path, placement, arm_options.joints);
+          joint_trajectory(arm, result.plan.end_effector_path, placement, joint_options);
       if (result.joints.complete()) {
         result.status = ArmPlanStatus::Reachable;
         result.message = result.replans.empty()
@@ -196,7 +207,6 @@ ArmPlan plan_with_arm(const PlanRequest& request,
                        " leaves nothing)";
       return result;
     }
-    const double r_start = wrist_distance(*result.reach, placement, initial_ee);
     if (r_start > replan.shell.outer_radius || r_start < replan.shell.inner_radius) {
       result.message = failure + " (a reach shell tightened past its wrist distance " +
                        metres(replan.wrist_distance) + ", " + describe_shell(replan.shell) +

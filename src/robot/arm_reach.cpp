@@ -15,6 +15,7 @@
 #include <random>
 #include <string>
 
+#include "robot/random_joint_positions.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
@@ -22,8 +23,6 @@
 namespace rodshape {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Vector3d nearest_point_on(const JointAxis& a, const JointAxis& b) {
   const Eigen::Vector3d ab = a.origin - b.origin;
@@ -38,14 +37,6 @@ Eigen::Vector3d nearest_point_on(const JointAxis& a, const JointAxis& b) {
 /// The joint positions the axes are read at: zero, clamped into the limits.
 Eigen::VectorXd reference_positions(const ArmModel& arm) {
   return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
-}
-
-/// Sampling range of a joint: its limits, or one turn for a continuous joint.
-double sample_lower(const JointInfo& joint) {
-  return std::isfinite(joint.lower) ? joint.lower : -kPi;
-}
-double sample_upper(const JointInfo& joint) {
-  return std::isfinite(joint.upper) ? joint.upper : kPi;
 }
 
 struct DistanceAt {
@@ -132,15 +123,10 @@ ArmReach compute_arm_reach(const ArmModel& arm, const ArmReachOptions& options) 
       base_T_flange.rotation.transpose() * (wrist_in_base - base_T_flange.position);
 
   std::mt19937 random(options.random_seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const std::vector<JointInfo>& joints = arm.joint_info();
-  Eigen::VectorXd q(n);
   reach.min_distance = std::numeric_limits<double>::infinity();
   reach.max_distance = -1.0;
   for (int k = 0; k < options.samples; ++k) {
-    for (int i = 0; i < n; ++i)
-      q(i) = sample_lower(joints[i]) +
-             unit(random) * (sample_upper(joints[i]) - sample_lower(joints[i]));
+    const Eigen::VectorXd q = detail::random_joint_positions(arm, random);
     const double r = reach.wrist_distance(arm.forward_kinematics(q));
     if (r < reach.min_distance) {
       reach.min_distance = r;

@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 
+#include "robot/random_joint_positions.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
@@ -199,18 +200,6 @@ std::string format_length(double value) {
   return out.str();
 }
 
-/// A random seed within the limits (joints without limits: within [-π, π]).
-Eigen::VectorXd random_seed(const ArmModel& arm, std::mt19937& rng) {
-  Eigen::VectorXd q(arm.joints());
-  for (int i = 0; i < arm.joints(); ++i) {
-    const JointInfo& joint = arm.joint_info()[i];
-    const double lo = std::isfinite(joint.lower) ? joint.lower : -std::numbers::pi;
-    const double hi = std::isfinite(joint.upper) ? joint.upper : std::numbers::pi;
-    q(i) = std::uniform_real_distribution<double>(lo, hi)(rng);
-  }
-  return q;
-}
-
 }  // namespace
 
 IkResult solve_ik(const ArmModel& arm,
@@ -246,7 +235,8 @@ IkResult solve_ik(const ArmModel& arm,
   Attempt best;
   bool all_stalled = true;
   for (int attempt_index = 0; attempt_index <= options.max_restarts; ++attempt_index) {
-    const Eigen::VectorXd start = attempt_index == 0 ? result.q : random_seed(arm, rng);
+    const Eigen::VectorXd start =
+        attempt_index == 0 ? result.q : detail::random_joint_positions(arm, rng);
     Attempt attempt = solver.run(start);
     result.iterations += attempt.iterations;
     result.restarts = attempt_index;

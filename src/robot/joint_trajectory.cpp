@@ -71,12 +71,16 @@ Pose end_effector_pose(const ArmModel& arm,
   return compose(compose(placement.world_T_base, arm.forward_kinematics(q)), placement.flange_T_ee);
 }
 
+Eigen::VectorXd JointTrajectoryOptions::first_seed(const ArmModel& arm) const {
+  return seed.size() > 0 ? seed : default_seed(arm);
+}
+
 JointTrajectory joint_trajectory(const ArmModel& arm,
                                  const std::vector<TimedPose>& path,
                                  const ArmPlacement& placement,
                                  const JointTrajectoryOptions& options) {
   options.ik.validate();
-  Eigen::VectorXd seed = options.seed.size() > 0 ? options.seed : default_seed(arm);
+  Eigen::VectorXd seed = options.first_seed(arm);
   arm.check_joint_positions(seed, "seed");
 
   JointTrajectory result;

@@ -41,21 +41,14 @@ namespace {
 
 using detail::Overloaded;
 
-void validate_pose(const Pose& pose, const std::string& field) {
-  detail::require_finite(field + ".position", pose.position);
-  if (!pose.rotation.allFinite()) throw InputError(field + ".rotation must be finite");
-  if (!is_rotation(pose.rotation, 1e-6))
-    throw InputError(field + ".rotation is not a rotation (RᵀR = I and det R = 1 within 1e-6)");
-}
-
 void validate_tip(const TipCondition& tip) {
   std::visit(Overloaded{
                  [](const FreeTip& t) {
                    detail::require_finite("tip.wrench.force", t.wrench.force);
                    detail::require_finite("tip.wrench.moment", t.wrench.moment);
                  },
-                 [](const ClampedTip& t) { validate_pose(t.pose, "tip"); },
-                 [](const GraspedTip& t) { validate_pose(t.pose, "tip"); },
+                 [](const ClampedTip& t) { detail::require_pose("tip", t.pose); },
+                 [](const GraspedTip& t) { detail::require_pose("tip", t.pose); },
              },
              tip);
 }
@@ -114,7 +107,6 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
     if (!has_cache_ || w != w_cached_) evaluate(w);
     return residual_;
   }
-  const Matrix6d& jacobian() const { return jacobian_; }
   int integrations() const { return integrations_; }
   /// ||diag(row_scale) r||_∞: the residual in the units of the trust region.
   double scaled_norm(const Vector6d& r) const {
@@ -164,15 +156,13 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   int jacobian_evaluations_ = 0;
 };
 
-struct DirectResult {
-  SolveStatus status = SolveStatus::NotRun;
-  std::string message;
-  int iterations = 0;
-  int chord_steps = 0;
-  int integrations = 0;
-  int jacobian_evaluations = 0;
-  double residual_norm = std::numeric_limits<double>::quiet_NaN();
-};
+/// Adds the work counts of `part` (a direct solve) to `total`.
+void add_counts(ShootingSummary& total, const ShootingSummary& part) {
+  total.iterations += part.iterations;
+  total.chord_steps += part.chord_steps;
+  total.integrations += part.integrations;
+  total.jacobian_evaluations += part.jacobian_evaluations;
+}
 
 /// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point,
 /// then quasi-Newton steps whose Jacobian B starts at J(x) and takes Broyden's rank-one update
@@ -184,10 +174,10 @@ struct DirectResult {
 bool chord_endgame(ShootingProblem& problem,
                    const ShootingOptions& options,
                    Eigen::VectorXd& x,
-                   DirectResult& result) {
+                   ShootingSummary& result) {
   constexpr int kMaxChordSteps = 8;
-  Matrix6d B = problem.jacobian();
   const ShootingProblem::Snapshot at_x = problem.snapshot();
+  Matrix6d B = at_x.J;
   Vector6d w = x;
   Vector6d r = at_x.r;
   for (int k = 0; k < kMaxChordSteps; ++k) {
@@ -213,11 +203,11 @@ bool chord_endgame(ShootingProblem& problem,
 }
 
 /// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame.
-DirectResult solve_direct(const ClampedRod& rod,
-                          const TipCondition& tip,
-                          const ShootingOptions& options,
-                          RodConfiguration& work,
-                          Vector6d& w) {
+ShootingSummary solve_direct(const ClampedRod& rod,
+                             const TipCondition& tip,
+                             const ShootingOptions& options,
+                             RodConfiguration& work,
+                             Vector6d& w) {
   ShootingProblem problem(rod, tip, work);
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
   // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
@@ -235,7 +225,7 @@ DirectResult solve_direct(const ClampedRod& rod,
 
   // Below this scaled residual (positions 1% of L, angles 0.01 rad) the chord endgame takes over.
   constexpr double kChordThreshold = 1e-2;
-  DirectResult result;
+  ShootingSummary result;
   Eigen::VectorXd x = w;
   auto lm_status = lm.minimizeInit(x);
   bool tried_chord_here = false;
@@ -360,20 +350,16 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
   work.resize(rod.nodes(), Derivatives::Tip);
 
   Vector6d w = guess.to_vector();
-  DirectResult direct = solve_direct(rod, tip, options, work, w);
-  summary.iterations = direct.iterations;
-  summary.chord_steps = direct.chord_steps;
-  summary.integrations = direct.integrations;
-  summary.jacobian_evaluations = direct.jacobian_evaluations;
+  summary = solve_direct(rod, tip, options, work, w);
 
-  if (direct.status != SolveStatus::Converged && options.continuation) {
+  if (!summary.converged() && options.continuation) {
     // Continuation from the unloaded rod, with adaptive steps in t and a secant predictor.
     Homotopy homotopy{rod, tip, {}};
     homotopy.rest_tip = integrate(homotopy.rod_at(0.0), BaseWrench{}).tip();
     Vector6d w_solved = Vector6d::Zero(), w_previous = Vector6d::Zero();
     double t = 0.0, dt = 0.125, dt_previous = 0.0;
     const double dt_min = 1.0 / options.max_continuation_steps;
-    DirectResult step;
+    ShootingSummary step;
     while (t < 1.0) {
       dt = std::min(dt, 1.0 - t);
       const double t_next = t + dt;
@@ -381,10 +367,7 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
       if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
       const ClampedRod rod_t = homotopy.rod_at(t_next);
       step = solve_direct(rod_t, homotopy.tip_at(t_next), options, work, w_step);
-      summary.iterations += step.iterations;
-      summary.chord_steps += step.chord_steps;
-      summary.integrations += step.integrations;
-      summary.jacobian_evaluations += step.jacobian_evaluations;
+      add_counts(summary, step);
       ++summary.continuation_steps;
       if (step.status == SolveStatus::Converged) {
         w_previous = w_solved;
@@ -398,18 +381,17 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
         break;
       }
     }
-    if (step.status == SolveStatus::Converged && t >= 1.0) {
-      direct = step;
+    if (step.converged() && t >= 1.0) {
+      summary.status = step.status;
+      summary.message = step.message;
+      summary.residual_norm = step.residual_norm;
       w = w_solved;
     } else {
-      direct.message +=
+      summary.message +=
           "; continuation stopped at t = " + detail::format_value(t) + " (" + step.message + ")";
     }
   }
 
-  summary.status = direct.status;
-  summary.message = direct.message;
-  summary.residual_norm = direct.residual_norm;
   solution.base_wrench = Wrench::from_vector(w);
   integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
   return solution;

@@ -1,7 +1,10 @@
 #include "rodshape/solvers/stability.hpp"
 
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "core/rk4_step.hpp"
 #include "rodshape/error.hpp"
@@ -139,8 +142,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   int singular_nodes = 0;
   for (int i = 1; i <= N; ++i) singular_nodes += sigma[i] <= kConjugateTolerance;
   if (2 * singular_nodes > N) {
-    report.degenerate = true;
-    report.stable = false;
+    report.degenerate = true;  // (stable stays false)
     return report;
   }
 
@@ -166,9 +168,8 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     }
     conjugate = 0.5 * (a + b);
   }
-  if (armed_at == 0) {  // det J̃ never positive: the test cannot decide
-    report.degenerate = true;
-    report.stable = false;
+  if (armed_at == 0) {         // det J̃ never positive: the test cannot decide
+    report.degenerate = true;  // (stable stays false)
     return report;
   }
 

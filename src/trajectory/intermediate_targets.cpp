@@ -33,7 +33,7 @@ std::vector<PointSet> intermediate_targets(const PointSet& initial,
   steps.reserve(n_inter);
   for (int i = 1; i <= n_inter; ++i)  // p^i = p_init + i (p_obj - p_init) / n_inter
     steps.push_back(
-        objective_set(initial, objective, i == n_inter ? 1.0 : static_cast<double>(i) / n_inter));
+        objective_set(initial, objective, static_cast<double>(i) / n_inter));  // i = n: 1
   return steps;
 }
 

@@ -81,11 +81,7 @@ ShapeSolution optimise_step(const PlanRequest& request,
     // The inequalities hold at the unconstrained optimum: it is a local optimum of the full
     // problem too, with multipliers 0.
     full.evaluate(solution.base_wrench.to_vector());
-    const Eigen::VectorXd& g = full.constraints();
-    const double tolerance = options.constraint_tolerance;
-    const bool below_upper = ((g - full.constraint_upper()).array() <= tolerance).all();
-    const bool above_lower = ((full.constraint_lower() - g).array() <= tolerance).all();
-    if (below_upper && above_lower) return solution;
+    if (full.constraint_violation() <= options.constraint_tolerance) return solution;
   }
   // Violated: the full problem, from the step's start (the warm start), and failing that from the
   // unconstrained optimum.
@@ -120,12 +116,16 @@ SegmentTracking track_segment(const PlanRequest& request,
   ShootingOptions shooting;
   shooting.continuation = false;  // a failure here is what we want to see, not to repair
   shooting.output_derivatives = Derivatives::None;
+  const Pose ee_T_tip = inverse(request.grasp.tip_to_end_effector);
   SegmentTracking segment;
+  RodConfiguration arrived;
   for (int j = 1; j <= options.tracking_substeps; ++j) {
     const double sigma = static_cast<double>(j) / options.tracking_substeps;
-    const Pose ee = interpolate(from, step.end_effector, sigma);
-    const Pose tip = compose(ee, inverse(request.grasp.tip_to_end_effector));
-    const ShootingSolution tracked =
+    const Pose tip = compose(interpolate(from, step.end_effector, sigma), ee_T_tip);
+    // On arrival the stability test needs every node's derivatives: the solver's last
+    // integration gives them.
+    if (j == options.tracking_substeps) shooting.output_derivatives = Derivatives::AllNodes;
+    ShootingSolution tracked =
         solve_equilibrium(request.rod, held_tip(tip, request.grasp), w, shooting);
     if (!tracked.summary.converged()) {
       segment.jump = true;
@@ -136,19 +136,21 @@ SegmentTracking track_segment(const PlanRequest& request,
       return segment;
     }
     w = tracked.base_wrench;
+    arrived = std::move(tracked.configuration);
   }
   segment.arrived = w;
   // On arrival the tracked rod should be the planned equilibrium; otherwise it jumped to another
   // branch on the way (snap-through).
-  const RodConfiguration arrived = integrate(request.rod, w, Derivatives::AllNodes);
   segment.deviation = node_deviation(arrived, step.solution.configuration);
-  const StabilityReport stability = assess_stability(request.rod, arrived);
   if (segment.deviation > kJumpDeviation) {
     segment.jump = true;
     segment.note = "on arrival at waypoint " + std::to_string(waypoint) + " the tracked rod is " +
                    std::to_string(segment.deviation) +
                    " m from the planned shape: it jumped to another equilibrium";
-  } else if (!stability.stable && !stability.degenerate) {
+    return segment;
+  }
+  const StabilityReport stability = assess_stability(request.rod, arrived);
+  if (!stability.stable && !stability.degenerate) {
     segment.jump = true;
     segment.note =
         "the tracked equilibrium at waypoint " + std::to_string(waypoint) + " is unstable";
@@ -213,7 +215,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
     std::string reason =
         "workspace excludes the initial tip at " + format_point(initial_tip.position);
     if (const auto& reach = request.workspace.reach) {
-      const double r = (reach->point(initial_tip) - reach->center).norm();
+      const double r = reach->distance(initial_tip);
       if (r > reach->outer_radius || r < reach->inner_radius)
         reason += " (its reach point is " + std::to_string(r) +
                   " m from the reach centre, outside [" + std::to_string(reach->inner_radius) +
@@ -221,6 +223,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
     }
     throw InputError(reason);
   }
+  const Pose initial_end_effector = compose(initial_tip, request.grasp.tip_to_end_effector);
 
   // 2. Is the target within reach at all?
   const TargetFeasibility feasibility =
@@ -235,8 +238,6 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   //    f = i / n_inter for the n_inter steps (the last is p_obj itself).
   plan.initial_points =
       project_onto_initial_shape(plan.initial_configuration, request.target.points);
-  const std::vector<PointSet> sets =
-      intermediate_targets(plan.initial_points, request.target.points, options.steps);
   const auto set_at = [&](double f) {
     return objective_set(plan.initial_points, request.target.points, f);
   };
@@ -246,8 +247,10 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
     bool inserted;
   };
   std::vector<Pending> pending;
-  for (int i = 0; i < options.steps; ++i)
-    pending.push_back({static_cast<double>(i + 1) / options.steps, sets[i], false});
+  for (int i = 1; i <= options.steps; ++i) {  // as intermediate_targets() makes them
+    const double f = static_cast<double>(i) / options.steps;
+    pending.push_back({f, set_at(f), false});
+  }
 
   // 4. One optimal shape per set, each warm-started from the last (see optimise_step). From the
   //    third step on, the secant extrapolation of the last two optima is tried as well (the sets
@@ -256,7 +259,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
   //    halfway and the segment planned again.
   BaseWrench w = plan.initial_wrench, w_before = plan.initial_wrench;
   double f_last = 0.0, f_before = 0.0;
-  Pose from = compose(plan.initial_configuration.tip(), request.grasp.tip_to_end_effector);
+  Pose from = initial_end_effector;
   BaseWrench tracked_w = plan.initial_wrench;
   bool tracking = options.track_between_waypoints;
   plan.status = PlanStatus::Complete;
@@ -320,8 +323,7 @@ ShapePlan plan_shape(const PlanRequest& request, const PlanOptions& options) {
                              : "the rod follows the plan";
 
   // 5. The timed end-effector path through the waypoints.
-  std::vector<Pose> waypoints{
-      compose(plan.initial_configuration.tip(), request.grasp.tip_to_end_effector)};
+  std::vector<Pose> waypoints{initial_end_effector};
   for (const PlanStep& step : plan.steps) waypoints.push_back(step.end_effector);
   plan.end_effector_path = time_parameterize(waypoints, options.end_effector);
 

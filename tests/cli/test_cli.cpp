@@ -25,24 +25,17 @@ using Json = nlohmann::json;
 const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples";
 
 using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::expect_unit_quaternion;
+using rodshape::testing::expect_vector3;
+using rodshape::testing::kBandTask;
 using rodshape::testing::quoted;
 using rodshape::testing::read_file;
 
 class Cli : public rodshape::testing::CliTest {};
 
-// Line numbers in the cases below refer to this text.
-const std::string kBand = R"(rod:
-  length: 0.29
-  section: {shape: rectangle, width: 0.02, height: 0.02}
-  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
-  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
-tip:
-  position: [0.12, 0.0, 0.22]
-  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]
-)";
-
+// Line numbers in the cases below refer to testing::kBandTask.
 std::string band_with(const std::string& from, const std::string& to) {
-  return rodshape::testing::replaced_first(kBand, from, to);
+  return rodshape::testing::replaced_first(kBandTask, from, to);
 }
 
 struct BadTask {
@@ -69,9 +62,9 @@ TEST_F(Cli, BadTaskFilesGiveOneLineExitTwoAndNoOutput) {
        ":8:", "tip.rotation"},
       {"nodes", band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 1\n"), ":3:", "rod.nodes"},
       {"tip_form", band_with("  position:", "  place:"), ":7:", "tip.place"},
-      {"released", kBand + "  released: [rx]\n", ":9:", "tip.released[0]"},
+      {"released", kBandTask + "  released: [rx]\n", ":9:", "tip.released[0]"},
       {"malformed", band_with("height: 0.02}", "height: 0.02"), ":", "malformed YAML"},
-      {"no_tip", kBand.substr(0, kBand.find("tip:")), "", "tip is required"},
+      {"no_tip", kBandTask.substr(0, kBandTask.find("tip:")), "", "tip is required"},
   };
   for (const BadTask& bad : cases) {
     SCOPED_TRACE(bad.name);
@@ -132,20 +125,6 @@ TEST_F(Cli, UnwritableOutputIsBadInput) {
       run("equilibrium " + quoted(kExamples + "/rubber_band.yaml") + " -o " + quoted(output));
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err, "error: " + output + ": cannot write: No such file or directory\n");
-}
-
-void expect_unit_quaternion(const Json& q) {
-  ASSERT_EQ(q.size(), 4u);
-  double norm2 = 0.0;
-  for (const Json& c : q) norm2 += c.get<double>() * c.get<double>();
-  EXPECT_NEAR(std::sqrt(norm2), 1.0, 1e-12);
-  EXPECT_GE(q[0].get<double>(), 0.0);
-}
-
-void expect_vector3(const Json& v) {
-  ASSERT_TRUE(v.is_array());
-  ASSERT_EQ(v.size(), 3u);
-  for (const Json& c : v) EXPECT_TRUE(c.is_number());
 }
 
 TEST_F(Cli, RubberBandExampleSolvesAndWritesEveryDocumentedKey) {

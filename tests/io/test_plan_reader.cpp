@@ -2,14 +2,14 @@
 // that the one-line message names the file, the line and the field; the sections a plan adds read
 // into the request and options they describe; the bundled plan examples read.
 #include <gtest/gtest.h>
-#include "support/task_text.hpp"
 
 #include <filesystem>
 #include <string>
 
-#include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
+#include "support/task_text.hpp"
 
 namespace rodshape {
 namespace {
@@ -46,14 +46,10 @@ std::string plan_with(const std::string& from, const std::string& to) {
 
 /// The message of the InputError that reading `text` throws, or "" if it reads.
 std::string error_of(const std::string& text) {
-  try {
-    parse_plan_task(text, "plan.yaml");
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    return message;
-  }
-  return "";
+  const std::string message =
+      testing::input_error_message([&] { parse_plan_task(text, "plan.yaml"); });
+  EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+  return message;
 }
 
 // ---- bad input: one case per field --------------------------------------------------------------
@@ -191,14 +187,9 @@ TEST(PlanReader, EquilibriumTaskRejectsPlanSectionsWithTheReason) {
   const std::string band =
       "rod:\n  length: 0.29\n  stiffness: {EA: 1e3, GA: 1e3, EIx: 0.04, EIy: 0.04, GJ: 0.028}\n"
       "tip:\n  position: [0.12, 0, 0.22]\ntarget:\n  points: [[0, 0, 0.1]]\n";
-  try {
-    parse_equilibrium_task(band, "eq.yaml");
-    FAIL() << "a target section was accepted";
-  } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "eq.yaml:6: target: unknown key; target is a section of plan tasks (rodshape plan), "
-              "not of equilibrium");
-  }
+  EXPECT_EQ(testing::input_error_message([&] { parse_equilibrium_task(band, "eq.yaml"); }),
+            "eq.yaml:6: target: unknown key; target is a section of plan tasks (rodshape plan), "
+            "not of equilibrium");
 }
 
 // ---- good input ---------------------------------------------------------------------------------

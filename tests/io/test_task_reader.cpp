@@ -2,21 +2,22 @@
 // the one-line message names the file, the line and the field; and the good cases: the bundled
 // examples read into the expected rod, and equivalent spellings give equal tasks.
 #include <gtest/gtest.h>
-#include "support/task_text.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <variant>
 
-#include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
+#include "support/task_text.hpp"
 
 namespace rodshape {
 namespace {
 
 using testing::CompareMatrices;
+using testing::kBandTask;
 
 ::testing::AssertionResult StartsWith(const std::string& text, const std::string& prefix) {
   if (text.starts_with(prefix)) return ::testing::AssertionSuccess();
@@ -29,32 +30,18 @@ using testing::CompareMatrices;
   return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
 }
 
-// Line numbers below refer to this text.
-const std::string kBand = R"(rod:
-  length: 0.29
-  section: {shape: rectangle, width: 0.02, height: 0.02}
-  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
-  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
-tip:
-  position: [0.12, 0.0, 0.22]
-  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]
-)";
-
-/// kBand with the first occurrence of `from` replaced by `to`.
+/// testing::kBandTask (line numbers below refer to it) with the first occurrence of `from` replaced
+/// by `to`.
 std::string band_with(const std::string& from, const std::string& to) {
-  return testing::replaced_first(kBand, from, to);
+  return testing::replaced_first(kBandTask, from, to);
 }
 
 /// The message of the InputError that reading `text` throws, or "" if it reads.
 std::string error_of(const std::string& text) {
-  try {
-    parse_equilibrium_task(text, "task.yaml");
-  } catch (const InputError& error) {
-    const std::string message = error.what();
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    return message;
-  }
-  return "";
+  const std::string message =
+      testing::input_error_message([&] { parse_equilibrium_task(text, "task.yaml"); });
+  EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+  return message;
 }
 
 // ---- bad input: one case per field
@@ -77,7 +64,7 @@ TEST(TaskReader, UnknownKeyWithoutCloseMatchListsTheAllowedKeys) {
 }
 
 TEST(TaskReader, MisspelledTopLevelSectionSuggestsIt) {
-  const std::string message = error_of(kBand + "sovler: {tolerance: 1e-9}\n");
+  const std::string message = error_of(kBandTask + "sovler: {tolerance: 1e-9}\n");
   EXPECT_EQ(message, "task.yaml:9: sovler: unknown key; did you mean 'solver'?");
 }
 
@@ -195,7 +182,7 @@ TEST(TaskReader, UnknownTipFormIsRejected) {
             "wrench");
   EXPECT_TRUE(StartsWith(error_of(band_with("tip:\n", "tip:\n  wrench: {force: [0, 0, 1]}\n")),
                          "task.yaml:6: tip: give either a pose"));
-  const std::string scalar_tip = kBand.substr(0, kBand.find("tip:")) + "tip: clamped\n";
+  const std::string scalar_tip = kBandTask.substr(0, kBandTask.find("tip:")) + "tip: clamped\n";
   EXPECT_EQ(error_of(scalar_tip),
             "task.yaml:6: tip: expected a mapping with keys position, rotation, released, wrench, "
             "got 'clamped'");
@@ -203,22 +190,22 @@ TEST(TaskReader, UnknownTipFormIsRejected) {
 
 TEST(TaskReader, TipWithoutPositionOrWrenchIsRejected) {
   const std::string text =
-      kBand.substr(0, kBand.find("  position:")) + "  rotation: [1, 0, 0, 0]\n";
+      kBandTask.substr(0, kBandTask.find("  position:")) + "  rotation: [1, 0, 0, 0]\n";
   EXPECT_EQ(error_of(text), "task.yaml:6: tip.position is required");
 }
 
 TEST(TaskReader, UnknownReleasedAxisSuggestsOne) {
-  const std::string message = error_of(kBand + "  released: [mq]\n");
+  const std::string message = error_of(kBandTask + "  released: [mq]\n");
   EXPECT_EQ(message, "task.yaml:9: tip.released[0] = mq is not allowed; did you mean 'mx'?");
 }
 
 TEST(TaskReader, ReleasedAxisListedTwiceIsRejected) {
-  const std::string message = error_of(kBand + "  released: [mx, fy, mx]\n");
+  const std::string message = error_of(kBandTask + "  released: [mx, fy, mx]\n");
   EXPECT_EQ(message, "task.yaml:9: tip.released[2] = mx is listed twice");
 }
 
 TEST(TaskReader, MissingTipIsNamedWithoutALine) {
-  const std::string text = kBand.substr(0, kBand.find("tip:"));
+  const std::string text = kBandTask.substr(0, kBandTask.find("tip:"));
   EXPECT_EQ(error_of(text), "task.yaml: tip is required");
 }
 
@@ -252,11 +239,11 @@ TEST(TaskReader, GravityWithoutSectionNamesTheSection) {
 }
 
 TEST(TaskReader, BadSolverOptionsAreNamed) {
-  EXPECT_EQ(error_of(kBand + "solver: {max_iterations: 0}\n"),
+  EXPECT_EQ(error_of(kBandTask + "solver: {max_iterations: 0}\n"),
             "task.yaml:9: solver.max_iterations = 0 must be >= 1");
-  EXPECT_EQ(error_of(kBand + "solver: {tolerance: -1e-9}\n"),
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: -1e-9}\n"),
             "task.yaml:9: solver.tolerance = -1e-9 must be > 0");
-  EXPECT_EQ(error_of(kBand + "solver: {continuation: maybe}\n"),
+  EXPECT_EQ(error_of(kBandTask + "solver: {continuation: maybe}\n"),
             "task.yaml:9: solver.continuation = maybe must be true or false");
 }
 
@@ -272,13 +259,9 @@ TEST(TaskReader, EmptyFileIsRejected) {
 }
 
 TEST(TaskReader, UnreadableFileNamesThePath) {
-  try {
-    read_equilibrium_task("/nonexistent/dir/task.yaml");
-    FAIL() << "no error";
-  } catch (const InputError& error) {
-    EXPECT_EQ(std::string(error.what()),
-              "/nonexistent/dir/task.yaml: cannot read: No such file or directory");
-  }
+  EXPECT_EQ(
+      testing::input_error_message([] { read_equilibrium_task("/nonexistent/dir/task.yaml"); }),
+      "/nonexistent/dir/task.yaml: cannot read: No such file or directory");
 }
 
 // ---- good input
@@ -329,7 +312,7 @@ TEST(TaskReader, GraspedExampleReleasesMomentX) {
 }
 
 TEST(TaskReader, QuaternionAndMatrixGiveTheSamePose) {
-  const EquilibriumTask by_quaternion = parse_equilibrium_task(kBand, "q.yaml");
+  const EquilibriumTask by_quaternion = parse_equilibrium_task(kBandTask, "q.yaml");
   const EquilibriumTask by_matrix =
       parse_equilibrium_task(band_with("rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]",
                                        "rotation: [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]"),
@@ -348,7 +331,7 @@ TEST(TaskReader, NearlyUnitQuaternionIsNormalised) {
 }
 
 TEST(TaskReader, DefaultsApplyWhenLeftOut) {
-  const EquilibriumTask task = parse_equilibrium_task(kBand, "task.yaml");
+  const EquilibriumTask task = parse_equilibrium_task(kBandTask, "task.yaml");
   const ShootingOptions defaults;
   EXPECT_EQ(task.source, "task.yaml");
   EXPECT_EQ(task.rod.intervals, 100);

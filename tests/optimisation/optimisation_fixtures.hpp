@@ -1,6 +1,7 @@
-// optimisation_fixtures.hpp: the rubber band of the paper as a ClampedRod, an independent cubic
-// Hermite evaluator (the brute-force oracle must not share curve_distance.cpp's code), and the
-// central finite-difference error model the gradient tests derive their tolerances from.
+// optimisation_fixtures.hpp: an independent cubic Hermite evaluator (the brute-force oracle must
+// not share curve_distance.cpp's code) and the central finite-difference error model the gradient
+// tests derive their tolerances from. The paper's rubber band (rubber_band()) and the wrench scales
+// (wrench_scale()) come from tests/support/solver_fixtures.hpp.
 //
 // FD error model (as tests/core/test_integrator_derivatives.cpp). In the scaled variable
 // ξ_j = w_j / S_j (S = EI/L² for forces, EI/L for moments, so that ξ ~ 1 bends the rod by ~1 rad),
@@ -18,31 +19,10 @@
 #include <limits>
 #include <string>
 
-#include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "support/solver_fixtures.hpp"
 
 namespace rodshape::testing {
-
-/// L = 0.29 m, EIx = EIy = 0.04, GJ = 0.028 N·m², GA = 426.67, EA = 1280 N.
-inline ClampedRod rubber_band(ConstitutiveModel model = ConstitutiveModel::Cosserat,
-                              int intervals = 20) {
-  ClampedRod rod;
-  rod.properties.length = 0.29;
-  rod.properties.model = model;
-  rod.properties.K_rot = Eigen::Vector3d(0.04, 0.04, 0.028);
-  rod.properties.K_tra = Eigen::Vector3d(426.67, 426.67, 1280.0);
-  rod.intervals = intervals;
-  rod.validate();
-  return rod;
-}
-
-/// Scales of the base-wrench components: EI/L² for forces, EI/L for moments.
-inline Eigen::Matrix<double, 6, 1> wrench_scales(const ClampedRod& rod) {
-  const double L = rod.properties.length, EI = rod.properties.K_rot.x();
-  Eigen::Matrix<double, 6, 1> S;
-  S << Eigen::Vector3d::Constant(EI / (L * L)), Eigen::Vector3d::Constant(EI / L);
-  return S;
-}
 
 struct FdModel {
   double eta = 0.0;    // step in ξ

@@ -173,11 +173,12 @@ GradientCase make_gradient_case(ConstitutiveModel model) {
   GradientCase g;
   g.rod = testing::rubber_band(model, 20);
   g.rod.properties.u_rest = Eigen::Vector3d(0.5, -0.3, 1.0);
-  g.rod.load = DistributedLoad::gravity(0.5568, Eigen::Vector3d(0.0, -9.81, 0.0));
+  g.rod.load =
+      DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
   g.rod.clamp.position = Eigen::Vector3d(0.1, 0.2, 0.3);
   g.rod.clamp.rotation = exp_so3(Eigen::Vector3d(0.2, -0.5, 0.3));
   g.rod.validate();
-  g.S = testing::wrench_scales(g.rod);
+  g.S = testing::wrench_scale(g.rod);
   Vector6d xi;
   xi << 0.6, -0.4, 0.3, 0.7, -0.5, 0.4;
   g.w = Wrench::from_vector(xi.cwiseProduct(g.S));

@@ -17,6 +17,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/optimisation/shape_optimizer.hpp"
+#include "support/input_error.hpp"
 
 namespace rodshape {
 namespace {
@@ -183,7 +184,6 @@ TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
 
   const double g = normal.dot(solution.configuration.p.back());
   EXPECT_LE(g, offset + options.constraint_tolerance);
-  EXPECT_LE(solution.max_constraint_violation, options.constraint_tolerance);
   // Active (the optimum lies on the plane) ...
   EXPECT_NEAR(g, offset, 1e-6);
   // ... and the multiplier says the plane holds the tip back: IPOPT's Lagrangian is F + λ g, so an
@@ -271,7 +271,9 @@ TEST_F(ShapeOptimizerTest, UnreachableWorkspaceIsNeverConverged) {
 TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
   // A box of ±2 cm around the generating tip and a curvature limit the generating shape nearly
   // meets: feasible, so some runs converge; cut short, others do not. Whatever the outcome,
-  // "converged" must mean "feasible to constraint_tolerance" by our own measure.
+  // "converged" must mean "feasible to constraint_tolerance", checked here on the returned
+  // configuration (optimise_shape's own measure, max_constraint_violation, is what it maps
+  // converged runs with, so it cannot disagree with the status).
   Workspace workspace;
   const Eigen::Vector3d tip = generated.p.back();
   workspace.box =
@@ -286,7 +288,15 @@ TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
     const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
     if (!solution.converged()) continue;
     ++converged;
-    EXPECT_LE(solution.max_constraint_violation, options.constraint_tolerance) << solution.message;
+    const RodConfiguration& c = solution.configuration;
+    EXPECT_TRUE(workspace.contains(c.tip(), options.constraint_tolerance))
+        << solution.message << "; tip " << c.p.back().transpose();
+    const double kappa2 = *limits.max_curvature * *limits.max_curvature;
+    for (int i = 0; i < c.nodes(); ++i) {
+      EXPECT_LE((c.u[i] - rod.properties.u_rest).squaredNorm(),
+                kappa2 + options.constraint_tolerance)
+          << solution.message << "; node " << i;
+    }
   }
   EXPECT_GE(converged, 1);
 }
@@ -299,17 +309,11 @@ TEST_F(ShapeOptimizerTest, PrintsNothingAtPrintLevelZero) {
   std::fflush(stdout);
   const std::string printed = ::testing::internal::GetCapturedStdout();
   EXPECT_EQ(printed, "");
-  EXPECT_TRUE(ipopt_available());
 }
 
 TEST(ShapeOptimizerOptions, BadOptionsNameTheField) {
-  const auto message_of = [](const ShapeOptimizerOptions& options) -> std::string {
-    try {
-      options.validate();
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
+  const auto message_of = [](const ShapeOptimizerOptions& options) {
+    return testing::input_error_message([&] { options.validate(); });
   };
   ShapeOptimizerOptions options;
   EXPECT_EQ(message_of(options), "");

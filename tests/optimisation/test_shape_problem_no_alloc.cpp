@@ -16,6 +16,7 @@
 #include "rodshape/core/so3.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
 #include "support/allocation_counter.hpp"
+#include "support/solver_fixtures.hpp"
 
 namespace rodshape {
 namespace {
@@ -27,7 +28,8 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   rod.properties.K_rot = Eigen::Vector3d(0.04, 0.04, 0.028);
   rod.properties.K_tra = Eigen::Vector3d(426.67, 426.67, 1280.0);
   rod.properties.u_rest = Eigen::Vector3d(0.5, -0.3, 1.0);
-  rod.load = DistributedLoad::gravity(0.5568, Eigen::Vector3d(0.0, 0.0, -9.81));
+  rod.load =
+      DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, 0.0, -9.81));
   rod.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, 0.3));
   rod.intervals = 32;
   rod.validate();

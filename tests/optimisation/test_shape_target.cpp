@@ -15,30 +15,21 @@
 
 #include "optimisation/optimisation_fixtures.hpp"
 #include "rodshape/core/rod_integrator.hpp"
-#include "rodshape/error.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
 
 namespace rodshape {
 namespace {
 
 using testing::CompareScalars;
+using testing::input_error_message;
 
 /// A message that mentions `needle`.
 ::testing::AssertionResult Mentions(const std::string& message, const std::string& needle) {
   if (message.find(needle) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
          << "\"" << message << "\" does not mention \"" << needle << "\"";
-}
-
-template <typename Call>
-std::string input_error_message(Call&& call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "(no InputError)";
 }
 
 TEST(ShapeTarget, ValidateNamesTheField) {
@@ -74,7 +65,7 @@ TEST(ShapeTarget, PointsSampledFromARealConfigurationAreFeasible) {
 }
 
 TEST(ShapeTarget, APointBeyondReachIsInfeasibleAndNamed) {
-  const ClampedRod rod = testing::rubber_band();
+  const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   ShapeTarget target;
   target.points = {{0.0, 0.05, 0.1}, {0.0, 0.1, 0.2}, {0.0, 0.3, 0.28}, {0.0, 0.1, 0.25}};
   const TargetFeasibility feasibility = check_feasibility(target, rod);
@@ -85,7 +76,7 @@ TEST(ShapeTarget, APointBeyondReachIsInfeasibleAndNamed) {
 }
 
 TEST(ShapeTarget, AZigZagLongerThanTheRodIsInfeasibleWithItsLength) {
-  const ClampedRod rod = testing::rubber_band();
+  const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   ShapeTarget target;
   // Every point within 0.22 m of the clamp, but the polyline alone is 0.61 m long.
   target.points = {{0.0, 0.08, 0.08}, {0.0, -0.08, 0.12}, {0.0, 0.08, 0.16}, {0.0, -0.08, 0.2}};
@@ -102,12 +93,12 @@ TEST(ShapeTarget, AZigZagLongerThanTheRodIsInfeasibleWithItsLength) {
 TEST(ShapeTarget, ReachIsTheLengthForKirchhoffAndStretchesForCosserat) {
   ShapeTarget target;
   target.points = {{0.0, 0.0, 0.3}};  // 0.30 m straight ahead: beyond L = 0.29, within 1.1 L
-  const ClampedRod kirchhoff = testing::rubber_band(ConstitutiveModel::Kirchhoff);
+  const ClampedRod kirchhoff = testing::rubber_band(ConstitutiveModel::Kirchhoff, 20);
   const TargetFeasibility k = check_feasibility(target, kirchhoff, 0.1);
   EXPECT_EQ(k.reach, kirchhoff.properties.length);  // the model cannot stretch
   EXPECT_FALSE(k.feasible);
   EXPECT_EQ(k.offending_point, 0);
-  const ClampedRod cosserat = testing::rubber_band(ConstitutiveModel::Cosserat);
+  const ClampedRod cosserat = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   const TargetFeasibility c = check_feasibility(target, cosserat, 0.1);
   EXPECT_TRUE(CompareScalars(c.reach, 1.1 * cosserat.properties.length, 1e-15));
   EXPECT_TRUE(c.feasible) << c.reason;
@@ -115,7 +106,7 @@ TEST(ShapeTarget, ReachIsTheLengthForKirchhoffAndStretchesForCosserat) {
 }
 
 TEST(ShapeTarget, SplineLengthOfCollinearPointsIsTheStraightDistance) {
-  ClampedRod rod = testing::rubber_band();
+  ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   rod.clamp.position = Eigen::Vector3d(0.3, -0.1, 0.2);
   const Eigen::Vector3d direction = Eigen::Vector3d(1.0, 2.0, -0.5).normalized();
   // Uneven spacing; 1, 2 and 5 points (spline degree 1, 2 and 3).
@@ -136,7 +127,7 @@ TEST(ShapeTarget, SplineLengthOfPointsOnAnArcApproachesTheArcLength) {
   // 12 points on a quarter circle of radius 0.15 (arc 0.2356 m): the chord-length cubic spline's
   // length agrees with the arc to its interpolation error, O(h⁴) with h the point spacing
   // (h/ρ = 0.13: (h/ρ)⁴ ≈ 3e-4 relative; allow 1e-3).
-  const ClampedRod rod = testing::rubber_band();
+  const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   const double rho = 0.15, quarter = 0.5 * std::numbers::pi;
   ShapeTarget target;
   for (int k = 1; k <= 12; ++k) {

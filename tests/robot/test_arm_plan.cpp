@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <functional>
 #include <string>
 
-#include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_plan.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
 
 namespace {
 
@@ -22,6 +22,8 @@ using rodshape::ArmPlanOptions;
 using rodshape::ArmPlanStatus;
 using rodshape::PlanTask;
 using rodshape::Pose;
+using rodshape::testing::input_error_message;
+using rodshape::testing::rotation_angle;
 
 const std::string kExample = std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml";
 
@@ -39,10 +41,6 @@ ArmPlan plan(const PlanTask& task, const ArmPlanOptions& options) {
 
 double wrist_distance(const ArmPlan& arm, const Pose& tip) {
   return (arm.shell->point(tip) - arm.shell->center).norm();
-}
-
-double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
-  return Eigen::AngleAxisd(a * b.transpose()).angle();
 }
 
 TEST(ArmPlan, EveryPlannedPoseHasJointsThatPutTheHandThere) {
@@ -117,30 +115,21 @@ TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
       << reported.joints.message;
 }
 
-std::string input_error(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const rodshape::InputError& error) {
-    return error.what();
-  }
-  return "no InputError";
-}
-
 TEST(ArmPlan, AStartOutsideTheShellAndTwoReachShellsAreBadInput) {
   const PlanTask far = panda_task(-3.0);
-  const std::string start = input_error([&] { plan(far, far.robot->options); });
+  const std::string start = input_error_message([&] { plan(far, far.robot->options); });
   EXPECT_NE(start.find("the arm's wrist would be"), std::string::npos) << start;
   EXPECT_NE(start.find("outside its reach shell"), std::string::npos) << start;
 
   PlanTask twice = panda_task();
   twice.request.workspace.reach =
       rodshape::Workspace::ReachShell{Eigen::Vector3d::Zero(), 0.0, 1.0, Eigen::Vector3d::Zero()};
-  const std::string doubled = input_error([&] { plan(twice, twice.robot->options); });
+  const std::string doubled = input_error_message([&] { plan(twice, twice.robot->options); });
   EXPECT_NE(doubled.find("workspace.reach"), std::string::npos) << doubled;
 
   ArmPlanOptions options = far.robot->options;
   options.replan_tightening = 0.0;
-  const std::string tightening = input_error([&] { plan(far, options); });
+  const std::string tightening = input_error_message([&] { plan(far, options); });
   EXPECT_NE(tightening.find("robot.reach.tightening"), std::string::npos) << tightening;
 }
 

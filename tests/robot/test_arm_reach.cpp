@@ -4,12 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <string>
 
-#include "rodshape/error.hpp"
 #include "rodshape/robot/arm_reach.hpp"
+#include "support/input_error.hpp"
 #include "support/panda_dh.hpp"
 
 namespace {
@@ -17,11 +16,11 @@ namespace {
 using rodshape::ArmModel;
 using rodshape::ArmPlacement;
 using rodshape::ArmReach;
-using rodshape::InputError;
 using rodshape::Pose;
 constexpr double pi = std::numbers::pi;
 
 const std::string kPanda = rodshape::testing::kPandaUrdf;
+using rodshape::testing::input_error_message;
 using rodshape::testing::panda_dh_frames;
 Eigen::VectorXd ready_pose() { return rodshape::testing::panda_ready_pose(); }
 
@@ -147,23 +146,18 @@ TEST(ArmReach, ShellPointIsTheWristSeenFromTheRodTip) {
 TEST(ArmReach, BadMarginsAndOptionsThrowInputErrorsThatSayWhy) {
   const ArmModel arm = ArmModel::from_urdf_file(kPanda);
   const ArmReach reach = rodshape::compute_arm_reach(arm);
-  const auto message = [](const std::function<void()>& action) {
-    try {
-      action();
-    } catch (const InputError& error) {
-      return std::string(error.what());
-    }
-    return std::string("no InputError");
-  };
-  const std::string negative = message([&] { rodshape::reach_shell(reach, {}, {}, -0.01); });
+  const std::string negative =
+      input_error_message([&] { rodshape::reach_shell(reach, {}, {}, -0.01); });
   EXPECT_NE(negative.find("reach.margin"), std::string::npos) << negative;
-  const std::string wide = message([&] { rodshape::reach_shell(reach, {}, {}, 0.4); });
+  const std::string wide = input_error_message([&] { rodshape::reach_shell(reach, {}, {}, 0.4); });
   EXPECT_NE(wide.find("leaves no shell"), std::string::npos) << wide;
-  const std::string nan = message([&] { rodshape::reach_shell(reach, {}, {}, std::nan("")); });
+  const std::string nan =
+      input_error_message([&] { rodshape::reach_shell(reach, {}, {}, std::nan("")); });
   EXPECT_NE(nan.find("reach.margin"), std::string::npos) << nan;
   rodshape::ArmReachOptions options;
   options.samples = 0;
-  const std::string samples = message([&] { rodshape::compute_arm_reach(arm, options); });
+  const std::string samples =
+      input_error_message([&] { rodshape::compute_arm_reach(arm, options); });
   EXPECT_NE(samples.find("reach.samples"), std::string::npos) << samples;
 }
 

@@ -15,13 +15,16 @@
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
+#include "support/eigen_compare.hpp"
+#include "support/panda_dh.hpp"
 
 namespace rodshape {
 namespace {
 
+using testing::rotation_angle;
+
 const ArmModel& panda() {
-  static const ArmModel arm =
-      ArmModel::from_urdf_file(std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf");
+  static const ArmModel arm = ArmModel::from_urdf_file(testing::kPandaUrdf);
   return arm;
 }
 
@@ -47,18 +50,15 @@ std::vector<Pose> band_waypoints() {
   return {pose({0.0, 0.0, 0.29}, 0.0), pose({0.06, 0.0, 0.27}, 0.3), pose({0.15, 0.0, 0.24}, 0.05)};
 }
 
-double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
-  return Eigen::AngleAxisd(a * b.transpose()).angle();
-}
-
 void expect_replays(const JointTrajectory& trajectory,
                     const std::vector<TimedPose>& path,
                     const ArmPlacement& placement) {
   ASSERT_EQ(trajectory.q.size(), path.size());
+  // IK converges to 1e-10 m and rad (IkOptions); the placement's pose chain adds round-off only.
   for (std::size_t i = 0; i < path.size(); ++i) {
     const Pose reached = end_effector_pose(panda(), placement, trajectory.q[i]);
-    EXPECT_LT((reached.position - path[i].pose.position).norm(), 1e-6) << "sample " << i;
-    EXPECT_LT(rotation_angle(reached.rotation, path[i].pose.rotation), 1e-6) << "sample " << i;
+    EXPECT_LE((reached.position - path[i].pose.position).norm(), 1e-9) << "sample " << i;
+    EXPECT_LE(rotation_angle(reached.rotation, path[i].pose.rotation), 1e-9) << "sample " << i;
   }
 }
 
@@ -112,7 +112,6 @@ TEST(JointTrajectory, SlowsAPathThatIsTooFastForTheJoints) {
   EXPECT_TRUE(trajectory.slowed);
   EXPECT_GT(trajectory.slowdown, 1.0);
   EXPECT_GT(trajectory.duration(), path.back().t - path.front().t);
-  EXPECT_NEAR(trajectory.duration(), trajectory.slowdown * trajectory.path_duration, 1e-12);
   expect_replays(trajectory, path, band_placement());
   expect_within_velocity_limits(trajectory);
   // Re-timed, not clipped: some joint runs at its limit on some segment.
@@ -152,10 +151,8 @@ TEST(JointTrajectory, RejectsABadSeed) {
 }
 
 TEST(JointTrajectory, DefaultSeedIsTheReadyPoseOfASevenJointArm) {
-  const Eigen::VectorXd seed = default_seed(panda());
-  ASSERT_EQ(seed.size(), 7);
-  EXPECT_DOUBLE_EQ(seed(3), -3.0 * std::numbers::pi / 4.0);
-  EXPECT_DOUBLE_EQ(seed(6), std::numbers::pi / 4.0);
+  // The ready pose is within the Panda's limits, so default_seed() returns it unclamped.
+  EXPECT_TRUE(testing::CompareMatrices(default_seed(panda()), testing::panda_ready_pose(), 0.0));
 }
 
 }  // namespace

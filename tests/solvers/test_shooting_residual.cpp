@@ -183,8 +183,6 @@ TEST(ShootingResidual, FreeTipIsTheTipWrenchMinusTheLoad) {
   Vector6d expected;
   expected << c.n.back() - load.force, c.m.back() - load.moment;
   EXPECT_TRUE(CompareMatrices(shooting_residual(FreeTip{load}, c), expected, 0.0));
-  EXPECT_TRUE(
-      CompareMatrices(shooting_residual(FreeTip{c.tip_wrench()}, c), Vector6d::Zero(), 0.0));
 }
 
 // The rotation rows are log(R_dᵀ R(L)) in the grasp frame: a target rotated by a known angle about

@@ -25,17 +25,18 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
-#include "rodshape/error.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "support/analytic_rods.hpp"
 #include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
 namespace {
 
 using testing::CompareMatrices;
+using testing::input_error_message;
 using testing::kEps;
 
 constexpr double kTau = ShootingOptions{}.residual_tolerance;  // 1e-10
@@ -499,21 +500,6 @@ INSTANTIATE_TEST_SUITE_P(BothModels,
 
 // ---- bad input
 // ------------------------------------------------------------------------------------
-
-/// Runs `call`, expects InputError, and returns its message ("" if none was thrown).
-template <class Call>
-std::string input_error_message(Call call) {
-  try {
-    call();
-  } catch (const InputError& error) {
-    return error.what();
-  } catch (const std::exception& error) {
-    ADD_FAILURE() << "threw something else than InputError: " << error.what();
-    return "";
-  }
-  ADD_FAILURE() << "did not throw";
-  return "";
-}
 
 TEST(ShootingSolverInput, NanInTipPoseIsAnInputErrorNamingTheField) {
   const ClampedRod rod = testing::rubber_band();

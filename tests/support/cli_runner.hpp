@@ -1,11 +1,14 @@
 // cli_runner.hpp: runs the rodshape tool as a user does, for the tests under tests/cli/: a
 // temporary directory per test, `rodshape <arguments>` through the shell with stdout and stderr
-// captured, and the exit code.
+// captured, and the exit code; checks of the shapes of the values in the JSON it writes.
 #pragma once
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -66,5 +69,23 @@ class CliTest : public ::testing::Test {
   const std::string cli_ = RODSHAPE_CLI_PATH;
   std::filesystem::path directory_;
 };
+
+/// An array of three numbers.
+inline void expect_vector3(const nlohmann::json& v) {
+  ASSERT_TRUE(v.is_array());
+  ASSERT_EQ(v.size(), 3u);
+  for (const nlohmann::json& c : v) EXPECT_TRUE(c.is_number());
+}
+
+/// A unit quaternion [w, x, y, z] with w ≥ 0, as the JSON writers give every rotation
+/// (src/io/json_format.hpp, json_quaternion).
+inline void expect_unit_quaternion(const nlohmann::json& q) {
+  ASSERT_TRUE(q.is_array());
+  ASSERT_EQ(q.size(), 4u);
+  double norm2 = 0.0;
+  for (const nlohmann::json& c : q) norm2 += c.get<double>() * c.get<double>();
+  EXPECT_NEAR(std::sqrt(norm2), 1.0, 1e-12);
+  EXPECT_GE(q[0].get<double>(), 0.0);
+}
 
 }  // namespace rodshape::testing

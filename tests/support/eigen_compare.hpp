@@ -1,8 +1,9 @@
 // eigen_compare.hpp: a gtest comparator for Eigen matrices that prints both operands, their
-// difference and the worst entry when it fails (after Drake's CompareMatrices).
+// difference and the worst entry when it fails (after Drake's CompareMatrices), and the angle
+// between two rotations.
 //
-//   EXPECT_TRUE(CompareMatrices(actual, expected, 1e-12));                        // max |a - b| ≤
-//   tol EXPECT_TRUE(CompareMatrices(actual, expected, 1e-9, MatrixCompareType::relative));
+//   EXPECT_TRUE(CompareMatrices(actual, expected, 1e-12));  // max |a - b| ≤ tol
+//   EXPECT_TRUE(CompareMatrices(actual, expected, 1e-9, MatrixCompareType::relative));
 //
 // `relative` means max |a - b| ≤ tol · max(max |a|, max |b|): relative to the larger operand's
 // size, not entry by entry (an entry that should be 0 would otherwise need an exact 0). A
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -81,6 +83,11 @@ inline ::testing::AssertionResult CompareScalars(double actual, double expected,
   if (tolerance > 0.0)
     out << " (error / tolerance = " << std::abs(actual - expected) / tolerance << ")";
   return ::testing::AssertionFailure() << out.str();
+}
+
+/// The angle (rad, in [0, π]) of the rotation a bᵀ that takes rotation b to rotation a.
+inline double rotation_angle(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+  return Eigen::AngleAxisd(a * b.transpose()).angle();
 }
 
 }  // namespace rodshape::testing

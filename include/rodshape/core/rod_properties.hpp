@@ -39,7 +39,8 @@ struct RodProperties {
   Eigen::Matrix<double, 6, 1> bending_wrench_units() const {
     const double EI = 0.5 * (K_rot.x() + K_rot.y());
     Eigen::Matrix<double, 6, 1> units;
-    units << Eigen::Vector3d::Constant(EI / (length * length)), Eigen::Vector3d::Constant(EI / length);
+    units << Eigen::Vector3d::Constant(EI / (length * length)),
+        Eigen::Vector3d::Constant(EI / length);
     return units;
   }
 };

@@ -69,6 +69,9 @@ class ShapeProblem {
   const Eigen::VectorXd& constraints() const { return g_; }
   const Eigen::MatrixXd& constraint_jacobian() const { return dg_dw_; }  // count × 6
   const ShapeCostBreakdown& breakdown() const { return breakdown_; }
+  /// max(0, g - g_upper, g_lower - g, w - w_upper, w_lower - w) over every row and bound (+inf
+  /// when g is not finite).
+  double constraint_violation() const;
   const RodConfiguration& configuration() const { return configuration_; }
   const std::vector<CurveProjection>& projections() const { return projections_; }
 
@@ -95,7 +98,6 @@ class ShapeProblem {
   void evaluate_constraints();
 
   // scratch for the workspace rows
-  Eigen::VectorXd workspace_g_;
   Eigen::MatrixXd workspace_dg_dp_;
   Eigen::MatrixXd workspace_dg_dtheta_;
 };

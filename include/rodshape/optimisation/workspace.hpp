@@ -30,33 +30,34 @@ struct Workspace {
   /// around `center` (the arm's shoulder): inner_radius ≤ |q - c| ≤ outer_radius.
   struct ReachShell {
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
-    double inner_radius = 0.0;  // 0: no inner row
+    double inner_radius = 0.0;  // 0: no lower bound
     double outer_radius = 0.0;
     Eigen::Vector3d tip_point = Eigen::Vector3d::Zero();  // t, in the tip frame
     /// q for a tip pose.
     Eigen::Vector3d point(const Pose& tip) const { return tip.position + tip.rotation * tip_point; }
+    /// |q - c| for a tip pose.
+    double distance(const Pose& tip) const { return (point(tip) - center).norm(); }
   };
 
   std::optional<Box> box;
   // Rows of g, in this order: box (3: p itself), inside balls, outside balls, half-spaces, reach
-  // (outer, then inner when inner_radius > 0).
+  // (one row, two-sided).
   std::vector<Ball> inside;   // |p - c|² ≤ r²
   std::vector<Ball> outside;  // |p - c|² ≥ r²
   std::vector<HalfSpace> half_spaces;
-  std::optional<ReachShell> reach;  // |q - c|² ≤ r_out², |q - c|² ≥ r_in²
+  std::optional<ReachShell> reach;  // r_in² ≤ |q - c|² ≤ r_out² (no lower bound when r_in = 0)
 
   bool unbounded() const {
     return !box && inside.empty() && outside.empty() && half_spaces.empty() && !reach;
   }
-  /// Number of rows of g: 3 for the box (two-sided), one per ball and half-space, one or two for
-  /// the reach shell.
+  /// Number of rows of g: 3 for the box (two-sided), one per ball and half-space, one for the
+  /// reach shell (two-sided).
   int constraint_count() const;
   /// The tip pose is within `tolerance` (a distance, m) of every set.
   bool contains(const Pose& tip, double tolerance = 0.0) const;
   /// g at the tip pose into `g` (size constraint_count()), dg/dp into `dg_dp` and dg/dθ into
   /// `dg_dtheta` (count × 3 each), θ being the tip's rotation increment in its own frame
-  /// (δR = R θ̂; only the reach rows depend on it). Pass empty matrices (0 rows) to skip the
-  /// Jacobians. Allocates nothing.
+  /// (δR = R θ̂; only the reach row depends on it). Allocates nothing.
   void evaluate(const Pose& tip,
                 Eigen::Ref<Eigen::VectorXd> g,
                 Eigen::Ref<Eigen::MatrixXd> dg_dp,

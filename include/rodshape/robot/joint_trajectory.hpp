@@ -34,6 +34,8 @@ struct ArmPlacement {
 struct JointTrajectoryOptions {
   /// The joint positions the first sample's IK starts from; empty: default_seed(arm).
   Eigen::VectorXd seed;
+  /// `seed`, or default_seed(arm) when it is empty.
+  Eigen::VectorXd first_seed(const ArmModel& arm) const;
   IkOptions ik;
 };
 

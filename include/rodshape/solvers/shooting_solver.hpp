@@ -1,8 +1,8 @@
 // shooting_solver.hpp: solve the clamped rod's boundary-value problem for the unknown base wrench
 // w = (n(0), m(0)) with Levenberg–Marquardt on the exact Jacobian (Eigen's MINPACK port, trust
 // region in bending units), ending with Newton and chord steps near the root, warm-started from a
-// guess, and with continuation of the boundary condition from a solved state when the direct solve
-// fails.
+// guess, and with continuation of the boundary condition from the unloaded rod when the direct
+// solve fails.
 #pragma once
 
 #include <limits>
@@ -20,9 +20,9 @@ struct ShootingOptions {
                              // the endgame adds at most 8 chord steps per attempt
   double residual_tolerance =
       1e-10;  // converged when ||r(w)||_∞ ≤ residual_tolerance (m, rad, N, N·m)
-  /// When the direct solve fails, step the boundary condition from the rest (or a solved) state:
-  /// clamped and grasped tips move from where the guess puts them (position linear, rotation
-  /// slerp), a free tip's loads are scaled from 0. Steps are halved on failure down to
+  /// When the direct solve fails, step the boundary condition from the unloaded rod: clamped and
+  /// grasped tips move from the rest tip along the screw motion to the target, a free tip's loads
+  /// are scaled from 0 (the guess is not used). Steps are halved on failure down to
   /// 1/max_continuation_steps.
   bool continuation = true;
   int max_continuation_steps = 256;
