@@ -165,7 +165,8 @@ TEST_F(ShapeOptimizerTest, MultiStartKeepsTheBestConvergedStart) {
   EXPECT_EQ(best.starts_tried, 4);
   ASSERT_TRUE(best.converged()) << best.message;
   // The guess's own run is among the starts (IPOPT is deterministic), so the best is no worse.
-  EXPECT_LE(best.cost.cost, one.cost.cost + 1e-12);
+  // ... up to pick_best's tie band, 1e-9 max(1, |F|), within which the lower energy wins.
+  EXPECT_LE(best.cost.cost, one.cost.cost + 1e-9 * std::max(1.0, std::abs(one.cost.cost)));
 }
 
 // ---- (c) an active workspace constraint ---------------------------------------------------------
@@ -194,8 +195,16 @@ TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
   problem.evaluate(solution.base_wrench.to_vector());
   const Vector6d stationarity =
       problem.cost_gradient() + lambda * problem.constraint_jacobian().row(0).transpose();
-  EXPECT_LT(stationarity.norm(), 1e-4 * problem.cost_gradient().norm() + 1e-7)
-      << stationarity.transpose();
+  // IPOPT stopped (Solve_Succeeded) with its scaled dual infeasibility ≤ tol·s_d, in the ∞-norm.
+  // Its gradient-based scaling leaves F and g unscaled when their gradients at the start are
+  // below nlp_scaling_max_gradient = 100, and s_d = max(100, (|λ| + |z|)/(m + n))/100 = 1 for
+  // |λ| < 700: so ||∇F + λ ∇g||_∞ ≤ tol here, up to the round-off of recomputing it.
+  ASSERT_EQ(solution.ipopt.application_status_name, "Solve_Succeeded");
+  ASSERT_LT(lambda, 700.0);
+  EXPECT_LE(stationarity.lpNorm<Eigen::Infinity>(), options.tolerance) << stationarity.transpose();
+  problem.evaluate(Vector6d::Zero());  // the start: no scaling
+  ASSERT_LT(problem.cost_gradient().lpNorm<Eigen::Infinity>(), 100.0);
+  ASSERT_LT(problem.constraint_jacobian().row(0).lpNorm<Eigen::Infinity>(), 100.0);
   // The constraint costs something: the fit is worse than without it.
   EXPECT_GT(solution.cost.max_distance, 1e-3);
 }
