@@ -38,8 +38,8 @@ Json target_object(const ShapeTarget& target) {
 }
 
 Json feasibility_object(const PlanTask& task) {
-  const PlanRequest& request = task.request;
-  const TargetFeasibility feasibility =
+  const PlanProblem& request = task.problem;
+  const FeasibilityResult feasibility =
       check_feasibility(request.target, request.rod, request.limits.max_axial_strain.value_or(0.0));
   const int offending = feasibility.offending_point;
   const bool has_offending =
@@ -56,7 +56,7 @@ Json feasibility_object(const PlanTask& task) {
   };
 }
 
-Json solver_object(const ShapeSolution& solution) {
+Json solver_object(const ShapeResult& solution) {
   return {
       {"status", to_string(solution.status)},
       {"message", solution.message},
@@ -69,7 +69,7 @@ Json solver_object(const ShapeSolution& solution) {
 }
 
 Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
-  const ShapeSolution& solution = step.solution;
+  const ShapeResult& solution = step.solution;
   const ShapeCostBreakdown& cost = solution.cost;
   Json result;
   result["step"] = number;
@@ -92,9 +92,9 @@ Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
   return result;
 }
 
-Json final_object(const ShapePlan& plan) {
+Json final_object(const PlanResult& plan) {
   if (plan.steps.empty()) return nullptr;
-  const ShapeSolution& last = plan.steps.back().solution;
+  const ShapeResult& last = plan.steps.back().solution;
   int iterations = 0;
   for (const PlanStep& step : plan.steps) iterations += step.solution.ipopt.iterations;
   double mean = 0.0;
@@ -110,7 +110,7 @@ Json final_object(const ShapePlan& plan) {
   };
 }
 
-Json path_object(const ShapePlan& plan) {
+Json path_object(const PlanResult& plan) {
   const std::vector<TimedPose>& path = plan.end_effector_path;
   Json waypoints = Json::array();
   for (const PlanStep& step : plan.steps) waypoints.push_back(json_pose(step.end_effector));
@@ -123,7 +123,7 @@ Json path_object(const ShapePlan& plan) {
   };
 }
 
-Json tracking_object(const TrackingReport& tracking) {
+Json tracking_object(const TrackingResult& tracking) {
   return {
       {"performed", tracking.performed},
       {"arrival_deviation", numbers(tracking.arrival_deviation)},
@@ -135,7 +135,7 @@ Json tracking_object(const TrackingReport& tracking) {
   };
 }
 
-Json joint_trajectory_object(const JointTrajectory& joints) {
+Json joint_trajectory_object(const JointTrajectoryResult& joints) {
   const bool complete = joints.complete();
   return {
       {"status", to_string(joints.status)},
@@ -178,7 +178,8 @@ Json shell_object(const Workspace::ReachShell& shell) {
           {"tip_point", json_vector(shell.tip_point)}};
 }
 
-Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
+Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
+  const ArmPlanResult& arm = *plan.arm;
   Json reach = nullptr;
   if (arm.reach && arm.shell) {
     reach = shell_object(*arm.shell);
@@ -188,8 +189,8 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
     // |w - c| where the rod starts and at each step: how close the plan came to the shell.
     Json distances = Json::array();
     const auto distance = [&](const Pose& tip) { return json_number(arm.shell->distance(tip)); };
-    distances.push_back(distance(arm.plan.initial_configuration.tip()));
-    for (const PlanStep& step : arm.plan.steps)
+    distances.push_back(distance(plan.initial_configuration.tip()));
+    for (const PlanStep& step : plan.steps)
       distances.push_back(distance(step.solution.configuration.tip()));
     reach["wrist_distances"] = std::move(distances);
   }
@@ -211,8 +212,8 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
 
 }  // namespace
 
-std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const ArmPlan* arm) {
-  const PlanRequest& request = task.request;
+std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
+  const PlanProblem& request = task.problem;
   const ConstitutiveModel model = request.rod.properties.model;
   const bool complete = plan.status == PlanStatus::Complete;
 
@@ -238,12 +239,12 @@ std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const 
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
-  result["robot"] = arm && task.robot ? robot_object(*arm, task.robot->options) : Json(nullptr);
-  result["joint_trajectory"] = arm ? joint_trajectory_object(arm->joints) : Json(nullptr);
+  result["robot"] = plan.arm ? robot_object(plan, task.options.arm) : Json(nullptr);
+  result["joint_trajectory"] = plan.arm ? joint_trajectory_object(plan.arm->joints) : Json(nullptr);
   return io_detail::format_json(result);
 }
 
-std::string joint_trajectory_csv(const JointTrajectory& trajectory) {
+std::string joint_trajectory_csv(const JointTrajectoryResult& trajectory) {
   std::ostringstream out;
   out << "t";
   for (const std::string& name : trajectory.joint_names) out << ',' << name;
@@ -256,7 +257,7 @@ std::string joint_trajectory_csv(const JointTrajectory& trajectory) {
   return out.str();
 }
 
-std::string joint_trajectory_json(const JointTrajectory& trajectory) {
+std::string joint_trajectory_json(const JointTrajectoryResult& trajectory) {
   Json points = Json::array();
   for (std::size_t i = 0; i < trajectory.t.size() && i < trajectory.q.size(); ++i) {
     Json point;

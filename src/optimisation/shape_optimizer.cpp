@@ -15,15 +15,16 @@ namespace rodshape {
 
 void ShapeOptimizerOptions::validate() const {
   if (max_iterations < 0)
-    throw InputError("optimizer.max_iterations = " + std::to_string(max_iterations) +
-                     " must be >= 0");
-  detail::require_positive("optimizer.tolerance", tolerance);
-  detail::require_positive("optimizer.constraint_tolerance", constraint_tolerance);
+    throw InputError("ShapeOptimizerOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be >= 0");
+  detail::require_positive("ShapeOptimizerOptions.tolerance", tolerance);
+  detail::require_positive("ShapeOptimizerOptions.constraint_tolerance", constraint_tolerance);
   if (multi_starts < 0)
-    throw InputError("optimizer.multi_starts = " + std::to_string(multi_starts) + " must be >= 0");
+    throw InputError("ShapeOptimizerOptions.multi_starts",
+                     " = " + std::to_string(multi_starts) + " must be >= 0");
   if (print_level < 0 || print_level > 12)
-    throw InputError("optimizer.print_level = " + std::to_string(print_level) +
-                     " must be in [0, 12]");
+    throw InputError("ShapeOptimizerOptions.print_level",
+                     " = " + std::to_string(print_level) + " must be in [0, 12]");
 }
 
 bool ipopt_available() { return true; }
@@ -204,14 +205,14 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
 
 }  // namespace
 
-ShapeSolution optimise_shape(ShapeProblem& problem,
-                             const BaseWrench& guess,
-                             const ShapeOptimizerOptions& options) {
+ShapeResult optimise_shape(ShapeProblem& problem,
+                           const BaseWrench& guess,
+                           const ShapeOptimizerOptions& options) {
   options.validate();
   const Vector6d w0 = guess.to_vector();
-  detail::require_finite("optimizer.guess", w0);
+  detail::require_finite("guess", w0);
 
-  ShapeSolution solution;
+  ShapeResult solution;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   detail::apply_options(*app->Options(), options,
                         detail::uses_finite_difference_hessian(options, problem));

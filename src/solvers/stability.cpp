@@ -119,7 +119,7 @@ class JacobianBetweenNodes {
 
 }  // namespace
 
-StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
   if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
     throw InputError(
         "assess_stability needs a configuration integrated with Derivatives::AllNodes");
@@ -136,7 +136,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     det[i] = J.determinant();
   }
 
-  StabilityReport report;
+  StabilityResult report;
   report.tip_singular_value = sigma[N];
   report.min_singular_value = *std::min_element(sigma.begin() + 1, sigma.end());
   int singular_nodes = 0;

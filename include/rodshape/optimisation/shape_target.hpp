@@ -28,7 +28,7 @@ struct ShapeTarget {
 
 /// Whether a rod clamped at `rod.clamp` can pass through the target's points, judged on the
 /// chord-length cubic B-spline (Eigen's Splines module) from p(0) through the points.
-struct TargetFeasibility {
+struct FeasibilityResult {
   bool feasible = true;
   std::string reason;         // empty when feasible
   int offending_point = -1;   // index into ShapeTarget::points, or -1
@@ -47,7 +47,7 @@ inline constexpr double kSplineLengthSlack = 0.01;
 /// The length is computed by Gauss–Legendre quadrature of |C'| (see shape_target.cpp for its
 /// error). `max_axial_strain` bounds the stretch of the Cosserat model (reach = L (1 +
 /// max_axial_strain)); the Kirchhoff model cannot stretch.
-TargetFeasibility check_feasibility(const ShapeTarget& target,
+FeasibilityResult check_feasibility(const ShapeTarget& target,
                                     const ClampedRod& rod,
                                     double max_axial_strain = 0.0);
 

@@ -55,4 +55,8 @@ IkResult solve_ik(const ArmModel& arm,
                   const Eigen::VectorXd& seed,
                   const IkOptions& options = {});
 
+/// The default seed: the Panda "ready" pose (0, -π/4, 0, -3π/4, 0, π/2, π/4) for a 7-joint arm,
+/// else zeros; clamped into the joint limits.
+Eigen::VectorXd default_seed(const ArmModel& arm);
+
 }  // namespace rodshape

@@ -11,7 +11,7 @@
 
 namespace rodshape {
 
-struct StabilityReport {
+struct StabilityResult {
   bool stable = false;
   /// Where the first conjugate point lies (J(s) singular), if any.
   std::optional<double> conjugate_point_s;
@@ -31,6 +31,6 @@ struct StabilityReport {
 /// `configuration` must come from integrate(rod, ..., Derivatives::AllNodes). A sign change of
 /// det J̃ between nodes is a conjugate point; so is a local minimum of σ_min that a finer search
 /// inside its two intervals drives below 1e-6 (a double root, as in a round rod, keeps the sign).
-StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& configuration);
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& configuration);
 
 }  // namespace rodshape
