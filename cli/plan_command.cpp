@@ -10,6 +10,7 @@
 
 #include "exit_code.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -24,15 +25,18 @@ int report_status(const std::string& task_path, const PlanResult& result) {
   switch (result.status) {
     case PlanStatus::Complete:
       if (result.arm && !result.arm->reachable()) {
-        std::cerr << "error: " << task_path << ": robot: " << result.arm->message << "\n";
+        std::cerr << "error: " << task_path
+                  << ": robot: " << fields_in_task_names(result.arm->message) << "\n";
         return kNotConverged;
       }
       return kSuccess;
     case PlanStatus::Infeasible:
-      std::cerr << "error: " << task_path << ": infeasible target: " << result.message << "\n";
+      std::cerr << "error: " << task_path
+                << ": infeasible target: " << fields_in_task_names(result.message) << "\n";
       return kBadInput;
     case PlanStatus::Partial:
-      std::cerr << "error: " << task_path << ": partial plan: " << result.message << "; wrote the "
+      std::cerr << "error: " << task_path
+                << ": partial plan: " << fields_in_task_names(result.message) << "; wrote the "
                 << completed << " step" << (completed == 1 ? "" : "s") << " that succeeded\n";
       return kPartialPlan;
   }
@@ -74,7 +78,8 @@ class PlanCommand final : public Command {
     }
     const std::vector<std::string> written = write_plan(output_directory_, result, task);
     if (!quiet_) {
-      std::cout << task_path_ << ": " << result.brief(task.options.steps) << "; wrote";
+      std::cout << task_path_ << ": " << fields_in_task_names(result.brief(task.options.steps))
+                << "; wrote";
       for (const std::string& name : written)
         std::cout << " " << (std::filesystem::path(output_directory_) / name).string();
       std::cout << "\n" << std::flush;

@@ -43,6 +43,26 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"WrenchBounds", "wrench_bounds"},
       {"Grasp.tip_to_end_effector", "grasp.tip_to_end_effector"},
       {"Grasp.released", "grasp.zero_wrench"},
+      // core
+      {"RodDescription.length", "rod.length"},
+      {"RodDescription.model", "rod.model"},
+      {"RodDescription.section", "rod.section"},
+      {"RodDescription.material", "rod.material"},
+      {"RodDescription.stiffness", "rod.stiffness"},
+      {"RodDescription.rest_curvature", "rod.rest_curvature"},
+      {"RodProperties.length", "rod.length"},
+      {"RodProperties.K_tra[0]", "rod.stiffness.GA"},
+      {"RodProperties.K_tra[1]", "rod.stiffness.GA"},
+      {"RodProperties.K_tra[2]", "rod.stiffness.EA"},
+      {"RodProperties.K_rot[0]", "rod.stiffness.EIx"},
+      {"RodProperties.K_rot[1]", "rod.stiffness.EIy"},
+      {"RodProperties.K_rot[2]", "rod.stiffness.GJ"},
+      {"RodProperties.u_rest", "rod.rest_curvature"},
+      {"ClampedRod.load", "distributed_load"},
+      {"ClampedRod.clamp", "base"},
+      {"FreeTip.wrench", "tip.wrench"},
+      {"ClampedTip.pose", "tip"},
+      {"GraspedTip.pose", "tip"},
       // solvers
       {"ShootingOptions.max_iterations", "solver.max_iterations"},
       {"ShootingOptions.residual_tolerance", "solver.tolerance"},
@@ -67,7 +87,7 @@ std::string task_field_name(const std::string& library_field) {
 }
 
 std::string in_task_names(const InputError& error) {
-  if (error.field().empty()) return error.what();
+  if (error.field().empty()) return fields_in_task_names(error.what());
   return task_field_name(error.field()) + fields_in_task_names(error.problem());
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/json_format.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/solvers/solve_status.hpp"
@@ -37,20 +38,16 @@ Json target_object(const ShapeTarget& target) {
   };
 }
 
-Json feasibility_object(const PlanTask& task) {
-  const PlanProblem& request = task.problem;
-  const FeasibilityResult feasibility =
-      check_feasibility(request.target, request.rod, request.limits.max_axial_strain.value_or(0.0));
+Json feasibility_object(const FeasibilityResult& feasibility, const PointSet& target) {
   const int offending = feasibility.offending_point;
-  const bool has_offending =
-      offending >= 0 && offending < static_cast<int>(request.target.points.size());
+  const bool has_offending = offending >= 0 && offending < static_cast<int>(target.size());
   return {
       {"feasible", feasibility.feasible},
-      {"reason", feasibility.feasible ? Json(nullptr) : Json(feasibility.reason)},
+      {"reason",
+       feasibility.feasible ? Json(nullptr) : Json(fields_in_task_names(feasibility.reason))},
       {"offending_point", has_offending ? Json(offending) : Json(nullptr)},
       {"offending_position",
-       has_offending ? json_vector(request.target.points[static_cast<std::size_t>(offending)])
-                     : Json(nullptr)},
+       has_offending ? json_vector(target[static_cast<std::size_t>(offending)]) : Json(nullptr)},
       {"curve_length", json_number(feasibility.curve_length)},
       {"reach", json_number(feasibility.reach)},
   };
@@ -59,7 +56,7 @@ Json feasibility_object(const PlanTask& task) {
 Json solver_object(const ShapeResult& solution) {
   return {
       {"status", to_string(solution.status)},
-      {"message", solution.message},
+      {"message", fields_in_task_names(solution.message)},
       {"iterations", solution.ipopt.iterations},
       {"ipopt_status", solution.ipopt.application_status_name},
       {"objective", json_number(solution.ipopt.objective)},
@@ -139,7 +136,7 @@ Json joint_trajectory_object(const JointTrajectoryResult& joints) {
   const bool complete = joints.complete();
   return {
       {"status", to_string(joints.status)},
-      {"message", joints.message},
+      {"message", fields_in_task_names(joints.message)},
       {"file", complete ? Json("joint_trajectory.csv") : Json(nullptr)},
       {"samples", static_cast<int>(joints.t.size())},
       {"duration", complete ? json_number(joints.duration()) : Json(nullptr)},
@@ -197,14 +194,14 @@ Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
   Json replans = Json::array();
   for (const Replan& replan : arm.replans) {
     Json entry = shell_object(replan.shell);
-    entry["reason"] = replan.reason;
+    entry["reason"] = fields_in_task_names(replan.reason);
     entry["wrist_distance"] = json_number(replan.wrist_distance);
     replans.push_back(std::move(entry));
   }
   Json waypoints = Json::array();
   for (const Eigen::VectorXd& q : arm.waypoint_q) waypoints.push_back(joint_values(q));
   return {{"status", to_string(arm.status)},
-          {"message", arm.message},
+          {"message", fields_in_task_names(arm.message)},
           {"reach", std::move(reach)},
           {"replans", std::move(replans)},
           {"waypoint_joint_positions", std::move(waypoints)}};
@@ -219,14 +216,14 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
 
   Json result;
   result["status"] = to_string(plan.status);
-  result["message"] = plan.message;
-  result["reason"] = complete ? Json(nullptr) : Json(plan.message);
+  result["message"] = fields_in_task_names(plan.message);
+  result["reason"] = complete ? Json(nullptr) : Json(fields_in_task_names(plan.message));
   result["failed_step"] = plan.failed_step >= 0 ? Json(plan.failed_step + 1) : Json(nullptr);
   result["steps_requested"] = task.options.steps;
   result["steps_completed"] = static_cast<int>(plan.steps.size());
   result["source"] = task.source;
   result["target"] = target_object(request.target);
-  result["feasibility"] = feasibility_object(task);
+  result["feasibility"] = feasibility_object(plan.feasibility, task.problem.target.points);
   result["final"] = final_object(plan);
   result["initial"] = plan.initial_configuration.nodes() > 0
                           ? io_detail::configuration_json(plan.initial_configuration,

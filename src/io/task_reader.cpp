@@ -96,17 +96,6 @@ std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-/// ShootingOptions::validate() names its own fields ("residual_tolerance = ..."); say them as the
-/// task file does.
-std::string solver_field_message(std::string message) {
-  const std::string_view residual_tolerance = "residual_tolerance";
-  if (message.rfind(residual_tolerance, 0) == 0) {
-    return "solver.tolerance" + message.substr(residual_tolerance.size());
-  }
-  if (message.rfind("solver.", 0) == 0) return message;
-  return "solver." + message;
-}
-
 /// Lower bounds above upper ones, in the section's own names.
 void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field) {
   static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
@@ -133,11 +122,7 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
   }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
-  try {
-    task.options.validate();
-  } catch (const InputError& error) {
-    root.fail_located(solver_field_message(error.what()));
-  }
+  root.located([&] { task.options.validate(); });
   return task;
 }
 

@@ -37,9 +37,9 @@ namespace {
 ///   Maximum_Iterations_Exceeded, _CpuTime_Exceeded → IterationLimit
 ///   Diverging_Iterates                             → Diverged  (|w| grew without bound)
 ///   Invalid_Number_Detected                        → Diverged  (F, g or a derivative non-finite)
-///   Infeasible_Problem_Detected                    → Singular  (a stationary point of the
+///   Infeasible_Problem_Detected                    → Infeasible (a stationary point of the
 ///                                                    constraint violation: no step reduces it)
-///   Restoration_Failed                             → Singular  (the feasibility restoration
+///   Restoration_Failed                             → Infeasible (the feasibility restoration
 ///                                                    found no step that reduces the violation)
 ///   Error_In_Step_Computation                      → Singular  (the KKT matrix stayed singular
 ///                                                    despite IPOPT's regularisation)
@@ -52,8 +52,8 @@ namespace {
 ///                                                  → Diverged  (the solve broke down; the
 ///                                                    message names IPOPT's status)
 /// A Converged run whose final w violates a constraint or a wrench bound by more than
-/// optimizer.constraint_tolerance (our measure, ShapeProblem::constraint_violation) becomes
-/// Singular.
+/// ShapeOptimizerOptions::constraint_tolerance (our measure, ShapeProblem::constraint_violation)
+/// becomes ConstraintViolated.
 SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
   switch (status) {
     case Ipopt::Solve_Succeeded:
@@ -65,6 +65,7 @@ SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
       return SolveStatus::IterationLimit;
     case Ipopt::Infeasible_Problem_Detected:
     case Ipopt::Restoration_Failed:
+      return SolveStatus::Infeasible;
     case Ipopt::Error_In_Step_Computation:
     case Ipopt::Search_Direction_Becomes_Too_Small:
     case Ipopt::Not_Enough_Degrees_Of_Freedom:
@@ -163,7 +164,7 @@ StartResult run_start(Ipopt::IpoptApplication& app,
   // acceptable point could in principle slip through, so our measure has the last word.
   if (result.status == SolveStatus::Converged &&
       !(result.violation <= options.constraint_tolerance && std::isfinite(result.cost)))
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::ConstraintViolated;
   return result;
 }
 
@@ -197,9 +198,8 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
       << r.iterations << " iterations";
   if (starts > 1) out << " (start " << r.start_index + 1 << " of " << starts << ")";
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
-  if (r.status == SolveStatus::Singular &&
-      map_status(r.application_status) == SolveStatus::Converged)
-    out << " exceeds optimizer.constraint_tolerance = " << options.constraint_tolerance;
+  if (r.status == SolveStatus::ConstraintViolated)
+    out << " exceeds ShapeOptimizerOptions.constraint_tolerance = " << options.constraint_tolerance;
   return out.str();
 }
 
@@ -253,6 +253,14 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   solution.ipopt.upper_bound_multipliers = best.outcome.upper_bound_multipliers;
   solution.starts_tried = static_cast<int>(starts.size());
   return solution;
+}
+
+std::string ShapeResult::brief() const {
+  std::ostringstream out;
+  out.precision(3);
+  out << to_string(status) << ": max distance " << 1e3 * cost.max_distance << " mm, energy "
+      << cost.energy << " J; " << message;
+  return out.str();
 }
 
 }  // namespace rodshape

@@ -29,7 +29,7 @@ namespace rodshape {
 
 namespace {
 
-std::string point_field(std::size_t i) { return "target.points[" + std::to_string(i) + "]"; }
+std::string point_field(std::size_t i) { return "ShapeTarget.points[" + std::to_string(i) + "]"; }
 
 std::string metres(double value) {
   std::ostringstream out;
@@ -151,6 +151,14 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
                     point_field(static_cast<std::size_t>(first_beyond)) + " beyond that length";
   }
   return result;
+}
+
+std::string FeasibilityResult::brief() const {
+  if (!feasible) return "infeasible: " + reason;
+  std::ostringstream out;
+  out.precision(3);
+  out << "feasible (spline " << curve_length << " m of a reach of " << reach << " m)";
+  return out.str();
 }
 
 }  // namespace rodshape

@@ -223,7 +223,7 @@ IkResult solve_ik(const ArmModel& arm,
   if (distance > arm.reach()) {
     const Pose pose = arm.forward_kinematics(result.q);
     const Vector6 e = pose_error(unit_target, pose);
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::OutOfReach;
     result.position_error = e.head<3>().norm();
     result.rotation_error = e.tail<3>().norm();
     result.message = "out of reach: the target is " + format_length(distance) + " m from " +
@@ -253,7 +253,7 @@ IkResult solve_ik(const ArmModel& arm,
   if (best.converged) {
     result.status = SolveStatus::Converged;
   } else if (all_stalled) {
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::OutOfReach;
     result.message = "out of reach: no joint positions within the limits reach the target from " +
                      std::to_string(result.restarts + 1) + " starts; the closest pose found is " +
                      format_length(result.position_error) + " m and " +
@@ -276,6 +276,15 @@ Eigen::VectorXd default_seed(const ArmModel& arm) {
     return arm.clamp_to_limits(q);
   }
   return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
+}
+
+std::string IkResult::brief() const {
+  if (!converged()) return to_string(status) + ": " + message;
+  std::ostringstream out;
+  out.precision(3);
+  out << "converged in " << iterations << " iterations (" << restarts
+      << " restarts), |Δp| = " << position_error << " m, angle " << rotation_error << " rad";
+  return out.str();
 }
 
 }  // namespace rodshape

@@ -19,11 +19,12 @@ namespace rodshape {
 
 void ShootingOptions::validate() const {
   if (max_iterations < 1)
-    throw InputError("max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
-  detail::require_positive("residual_tolerance", residual_tolerance);
+    throw InputError("ShootingOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_positive("ShootingOptions.residual_tolerance", residual_tolerance);
   if (max_continuation_steps < 1)
-    throw InputError("max_continuation_steps = " + std::to_string(max_continuation_steps) +
-                     " must be >= 1");
+    throw InputError("ShootingOptions.max_continuation_steps",
+                     " = " + std::to_string(max_continuation_steps) + " must be >= 1");
 }
 
 std::string ShootingSummary::brief() const {
@@ -45,11 +46,11 @@ using detail::Overloaded;
 void validate_tip(const TipCondition& tip) {
   std::visit(Overloaded{
                  [](const FreeTip& t) {
-                   detail::require_finite("tip.wrench.force", t.wrench.force);
-                   detail::require_finite("tip.wrench.moment", t.wrench.moment);
+                   detail::require_finite("FreeTip.wrench.force", t.wrench.force);
+                   detail::require_finite("FreeTip.wrench.moment", t.wrench.moment);
                  },
-                 [](const ClampedTip& t) { detail::require_pose("tip", t.pose); },
-                 [](const GraspedTip& t) { detail::require_pose("tip", t.pose); },
+                 [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
+                 [](const GraspedTip& t) { detail::require_pose("GraspedTip.pose", t.pose); },
              },
              tip);
 }
@@ -361,8 +362,8 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
   rod.validate();
   validate_tip(tip);
   options.validate();
-  detail::require_finite("initial_wrench.force", guess.force);
-  detail::require_finite("initial_wrench.moment", guess.moment);
+  detail::require_finite("guess.force", guess.force);
+  detail::require_finite("guess.moment", guess.moment);
 
   ShootingResult solution;
   ShootingSummary& summary = solution.summary;

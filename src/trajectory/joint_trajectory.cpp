@@ -117,4 +117,13 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
   return result;
 }
 
+std::string JointTrajectoryResult::brief() const {
+  if (!complete()) return to_string(status) + ": " + message;
+  std::ostringstream out;
+  out.precision(3);
+  out << "complete: " << t.size() << " samples over " << duration() << " s";
+  if (slowed) out << " (slowed ×" << slowdown << ")";
+  return out.str();
+}
+
 }  // namespace rodshape

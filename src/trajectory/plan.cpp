@@ -159,11 +159,11 @@ PlanResult plan_rod(const PlanProblem& problem,
   const Pose initial_end_effector =
       compose(initial.configuration.tip(), problem.grasp.tip_to_end_effector);
   // 2. Is the target within reach at all?
-  const FeasibilityResult feasibility =
+  result.feasibility =
       check_feasibility(problem.target, problem.rod, problem.limits.max_axial_strain.value_or(0.0));
-  if (!feasibility.feasible) {
+  if (!result.feasibility.feasible) {
     result.status = PlanStatus::Infeasible;
-    result.message = feasibility.reason;
+    result.message = result.feasibility.reason;
     return result;
   }
   // 3. p_init on the initial shape, and the sets.

@@ -337,7 +337,7 @@ TEST(ShapeProblem, BadInputThrowsInputErrorNamingTheField) {
   ClampedRod bad_rod = rod;
   bad_rod.properties.length = -1.0;
   const std::string length = input_error_message([&] { ShapeProblem problem(bad_rod, good); });
-  EXPECT_NE(length.find("rod.length"), std::string::npos) << length;
+  EXPECT_NE(length.find("RodProperties.length"), std::string::npos) << length;
   WrenchBounds bounds;
   bounds.lower(4) = 1.0;
   bounds.upper(4) = -1.0;

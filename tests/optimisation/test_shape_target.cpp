@@ -73,7 +73,7 @@ TEST(ShapeTarget, APointBeyondReachIsInfeasibleAndNamed) {
   const FeasibilityResult feasibility = check_feasibility(target, rod);
   EXPECT_FALSE(feasibility.feasible);
   EXPECT_EQ(feasibility.offending_point, 2);
-  EXPECT_TRUE(Mentions(feasibility.reason, "target.points[2] is 0.41 m from the clamp"));
+  EXPECT_TRUE(Mentions(feasibility.reason, "ShapeTarget.points[2] is 0.41 m from the clamp"));
   EXPECT_TRUE(Mentions(feasibility.reason, "(0.29 m)"));
 }
 

@@ -78,7 +78,7 @@ TEST(PlanResult, PointOutOfReachIsInfeasibleNamingIt) {
   const PlanResult plan = rodshape::plan(request);
   EXPECT_EQ(plan.status, PlanStatus::Infeasible);
   EXPECT_TRUE(plan.steps.empty());
-  EXPECT_NE(plan.message.find("target.points[7]"), std::string::npos) << plan.message;
+  EXPECT_NE(plan.message.find("ShapeTarget.points[7]"), std::string::npos) << plan.message;
 }
 
 TEST(PlanResult, WorkspaceThatExcludesTheInitialTipIsBadInput) {

@@ -59,6 +59,8 @@ struct ShapeResult {
   IpoptDetails ipopt;
   int starts_tried = 1;
   bool converged() const { return status == SolveStatus::Converged; }
+  /// "converged: max distance 0.37 mm, energy 0.0025 J; <message>".
+  std::string brief() const;
 };
 
 /// Optimises from `guess` (and the extra starts of the options). Throws InputError for bad options;

@@ -53,6 +53,7 @@ struct ShootingResult {
   ShootingSummary summary;
   BaseWrench base_wrench;          // the last iterate (the solution when converged)
   RodConfiguration configuration;  // integrated at base_wrench, with options.output_derivatives
+  std::string brief() const { return summary.brief(); }
 };
 
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.

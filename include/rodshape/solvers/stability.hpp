@@ -26,6 +26,9 @@ struct StabilityResult {
   /// planar buckled shape of a rod with EIx = EIy, which turns about the line of its clamps at no
   /// cost). `stable` is then false and means "not shown stable".
   bool degenerate = false;
+  /// One line: "stable (min σ̃ = 0.43, at the tip 0.61)", "unstable: conjugate point at s = 0.12 m"
+  /// or "not shown stable: degenerate (…)".
+  std::string brief() const;
 };
 
 /// `configuration` must come from integrate(rod, ..., Derivatives::AllNodes). A sign change of

@@ -59,6 +59,8 @@ struct JointTrajectoryResult {
   double max_rotation_error = 0.0;    // over the samples, rad
   bool complete() const { return status == JointTrajectoryStatus::Complete; }
   double duration() const { return t.empty() ? 0.0 : t.back() - t.front(); }
+  /// "complete: 812 samples over 8.1 s (slowed ×1.3)" or "<status>: <message>".
+  std::string brief() const;
 };
 
 /// The joint trajectory that follows `path` (world_T_ee over time, e.g. PlanResult's

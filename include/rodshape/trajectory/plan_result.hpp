@@ -78,7 +78,8 @@ struct ArmPlanResult {
 struct PlanResult {
   PlanStatus status = PlanStatus::Infeasible;
   std::string message;
-  int failed_step = -1;  // the step whose optimisation failed (Partial), else -1
+  int failed_step = -1;           // the step whose optimisation failed (Partial), else -1
+  FeasibilityResult feasibility;  // of the target, for this rod (Infeasible: why not)
   BaseWrench initial_wrench;
   RodConfiguration initial_configuration;
   PointSet initial_points;      // p_init: the objective points projected on the initial shape
