@@ -1,33 +1,16 @@
 // fk_command.cpp: the tip link's pose at given joint positions, for users who check an arm model.
-//   URDF -> ArmModel (robot) -> forward_kinematics -> {"position": [x, y, z], "rotation": [w, x, y,
-//   z]}
+//   URDF -> ArmModel (robot) -> forward_kinematics -> pose_json (io)
 #include "fk_command.hpp"
 
-#include <charconv>
-#include <cmath>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "exit_code.hpp"
+#include "rodshape/io/kinematics_json.hpp"
 #include "rodshape/robot/arm_model.hpp"
 
 namespace rodshape::cli {
-
-std::string json_number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[32];
-  const auto [end, error] = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  if (error != std::errc()) return "null";
-  return std::string(buffer, end);
-}
-
-std::string json_numbers(const Eigen::VectorXd& values) {
-  std::string text = "[";
-  for (Eigen::Index i = 0; i < values.size(); ++i)
-    text += (i > 0 ? ", " : "") + json_number(values(i));
-  return text + "]";
-}
 
 void ArmArguments::add_to(CLI::App& command) {
   command.add_option("urdf", urdf_path, "The arm's URDF file, e.g. data/robots/panda.urdf")
@@ -64,9 +47,7 @@ class FkCommand final : public Command {
         Eigen::Map<const Eigen::VectorXd>(q_.data(), static_cast<Eigen::Index>(q_.size()));
     arm.check_joint_positions(q, "q");
     const Pose base_T_tip = arm.forward_kinematics(q);
-    std::cout << "{\"position\": " << json_numbers(base_T_tip.position)
-              << ", \"rotation\": " << json_numbers(base_T_tip.quaternion_wxyz()) << "}\n"
-              << std::flush;
+    std::cout << pose_json(base_T_tip) << std::flush;
     return kSuccess;
   }
 

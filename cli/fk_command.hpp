@@ -1,8 +1,7 @@
 // fk_command.hpp: `rodshape fk URDF q1 … qn [--base LINK] [--tip LINK]`, and what fk and ik share:
-// the arm's arguments and small JSON helpers.
+// the arm's arguments.
 #pragma once
 
-#include <Eigen/Core>
 #include <memory>
 #include <string>
 
@@ -24,10 +23,5 @@ struct ArmArguments {
   /// Reads the chain (InputError naming the URDF when it cannot).
   ArmModel load() const { return ArmModel::from_urdf_file(urdf_path, base_link, tip_link); }
 };
-
-/// A number as JSON: the shortest text that reads back to the same double; null if not finite.
-std::string json_number(double value);
-/// [a, b, …] of json_number.
-std::string json_numbers(const Eigen::VectorXd& values);
 
 }  // namespace rodshape::cli

@@ -16,10 +16,7 @@
 #include "ik_command.hpp"
 #include "plan_command.hpp"
 #include "rodshape/error.hpp"
-
-#ifndef RODSHAPE_VERSION
-#define RODSHAPE_VERSION "0.1.0"
-#endif
+#include "rodshape/version.hpp"
 
 namespace {
 
@@ -40,7 +37,7 @@ int main(int argc, char** argv) {
       "rodshape: static Cosserat rods, solved by shooting, and optimal shape control.\n"
       "Units are SI; quaternions are [w, x, y, z]. Task file format: docs/task-file.md."};
   app.name("rodshape");
-  app.set_version_flag("--version", std::string("rodshape ") + RODSHAPE_VERSION);
+  app.set_version_flag("--version", "rodshape " + rodshape::version());
   app.require_subcommand(1);
   app.footer(
       "Exit codes: 0 success, 2 bad input (task file, command line, output path; for plan also "

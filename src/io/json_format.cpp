@@ -80,7 +80,37 @@ void format(const Json& value, int indent, std::string& out) {
   }
 }
 
+void format_line(const Json& value, std::string& out) {
+  if (value.is_object()) {
+    out += "{";
+    bool first = true;
+    for (const auto& [key, element] : value.items()) {
+      out += (first ? "" : ", ") + Json(key).dump() + ": ";
+      first = false;
+      format_line(element, out);
+    }
+    out += "}";
+  } else if (value.is_array()) {
+    out += "[";
+    bool first = true;
+    for (const Json& element : value) {
+      out += first ? "" : ", ";
+      first = false;
+      format_line(element, out);
+    }
+    out += "]";
+  } else {
+    out += value.dump();
+  }
+}
+
 }  // namespace
+
+std::string format_json_line(const Json& value) {
+  std::string out;
+  format_line(value, out);
+  return out + "\n";
+}
 
 Json json_number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 

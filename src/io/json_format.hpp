@@ -46,4 +46,8 @@ Json configuration_json(const RodConfiguration& configuration,
 /// each node's position is one line of the file), ending with a newline.
 std::string format_json(const Json& value);
 
+/// On one line, with ", " and ": " between items, ending with a newline (for the CLI's short
+/// answers: fk, ik).
+std::string format_json_line(const Json& value);
+
 }  // namespace rodshape::io_detail

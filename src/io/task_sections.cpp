@@ -15,7 +15,7 @@ namespace rodshape::io_detail {
 
 namespace {
 
-constexpr double kRotationTolerance = 1e-6;
+constexpr double kRotationTolerance = kRotationInputTolerance;
 
 /// Keys that users put directly under `rod` but that belong elsewhere.
 const std::vector<KeyHint>& rod_key_hints() {
@@ -180,12 +180,7 @@ Eigen::Matrix3d read_rotation(const YamlField& rotation) {
   if (elements.size() == 4) {
     const Eigen::Vector4d wxyz(elements[0].number(), elements[1].number(), elements[2].number(),
                                elements[3].number());
-    const double norm = wxyz.norm();
-    if (!(std::abs(norm - 1.0) <= kRotationTolerance)) {
-      rotation.fail(rotation.path() + ": quaternion [w, x, y, z] has norm " +
-                    detail::format_value(norm) + "; it must be 1 within 1e-6");
-    }
-    return Eigen::Quaterniond(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().toRotationMatrix();
+    return rotation.located([&] { return rotation_from_wxyz(wxyz, rotation.path()); });
   }
   if (elements.size() != 3) rotation.fail(expected);
   Eigen::Matrix3d R;

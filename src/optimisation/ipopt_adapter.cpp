@@ -1,464 +1,109 @@
+// ipopt_adapter.cpp: IpoptSession, and IPOPT's return status in rodshape's vocabulary.
 #include "optimisation/ipopt_adapter.hpp"
-#include "optimisation/ipopt_derivative_test.hpp"
 
-#include <IpJournalist.hpp>
-#include <algorithm>
-#include <cassert>
-#include <cmath>
-#include <cstdarg>
-#include <cstdio>
-#include <sstream>
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+
+#include "optimisation/ipopt_nlp.hpp"
 
 namespace rodshape::detail {
 
 namespace {
 
-constexpr int kUnknowns = 6;  // w = (n(0), m(0))
-
-}  // namespace
-
-// ---- options
-// --------------------------------------------------------------------------------------
-
-bool uses_finite_difference_hessian(const ShapeOptimizerOptions& options,
-                                    const ShapeProblem& problem) {
-  using Hessian = ShapeOptimizerOptions::Hessian;
-  return options.hessian == Hessian::FiniteDifference ||
-         (options.hessian == Hessian::Automatic && problem.constraint_count() == 0);
-}
-
-void apply_options(Ipopt::OptionsList& ipopt_options,
-                   const ShapeOptimizerOptions& options,
-                   bool finite_difference_hessian) {
-  bool ok = true;
-  const auto set_string = [&](const char* name, const char* value) {
-    ok = ipopt_options.SetStringValue(name, value) && ok;
-  };
-  const auto set_number = [&](const char* name, double value) {
-    ok = ipopt_options.SetNumericValue(name, value) && ok;
-  };
-  const auto set_integer = [&](const char* name, int value) {
-    ok = ipopt_options.SetIntegerValue(name, value) && ok;
-  };
-
-  // Output. print_level 0 prints nothing; "sb" (suppress banner) = yes also silences the
-  // "This program contains Ipopt ... Eclipse Public License" banner IPOPT prints once per process.
-  set_integer("print_level", options.print_level);
-  set_string("sb", "yes");
-
-  // Termination. tol bounds IPOPT's scaled NLP error (max of dual infeasibility, complementarity
-  // and constraint violation, the first two divided by a measure of the multipliers' size);
-  // constr_viol_tol bounds the unscaled constraint violation, in the units of g (m for workspace
-  // rows, N or N·m for grasp rows, 1/m for strain rows); max_iter caps the iterations per start.
-  set_number("tol", options.tolerance);
-  set_number("constr_viol_tol", options.constraint_tolerance);
-  set_integer("max_iter", options.max_iterations);
-  // IPOPT may also stop at an "acceptable" point (15 iterations within acceptable_tol = 1e-6,
-  // its default). Its feasibility test is made as strict as the main one (default 1e-2), so an
-  // acceptable point never violates a constraint by more than constraint_tolerance.
-  set_number("acceptable_constr_viol_tol", options.constraint_tolerance);
-  // IPOPT relaxes every bound by bound_relax_factor·max(1, |bound|) (default 1e-8) to keep the
-  // interior non-empty. Relax by a tenth of the constraint tolerance at most, so that a point that
-  // satisfies the relaxed bound satisfies ours to constraint_tolerance (bounds are of order 1 in
-  // SI).
-  set_number("bound_relax_factor", std::min(1e-8, 0.1 * options.constraint_tolerance));
-  // The final w is projected back inside the original (unrelaxed) bounds w_lower ≤ w ≤ w_upper.
-  set_string("honor_original_bounds", "yes");
-  // No bound is infinite to IPOPT; ShapeNlp maps ±inf to ±kIpoptInfinity (IPOPT's default value,
-  // stated here because the adapter depends on it).
-  set_number("nlp_lower_bound_inf", -kIpoptInfinity);
-  set_number("nlp_upper_bound_inf", kIpoptInfinity);
-
-  // Derivatives. F and g come with exact first derivatives (the integrator's variational
-  // equations); the Hessian of the Lagrangian is either forward differences of its exact gradient
-  // (eval_h) or IPOPT's limited-memory BFGS approximation. With 6 unknowns a long L-BFGS history
-  // is free, and IPOPT's default of 6 pairs forgets curvature too fast on this non-convex problem.
-  // On the rubber band
-  // with the target of tests/optimisation/test_shape_optimizer.cpp, from a zero guess, history 6
-  // failed 2 of 4 cases (grasp m_x = 0: max_iter 500; half-space: Infeasible_Problem_Detected
-  // after wandering to |w| ~ 1e3); history 20 solved all 4 in 26–79 iterations.
-  set_string("hessian_approximation", finite_difference_hessian ? "exact" : "limited-memory");
-  set_integer("limited_memory_max_history", 20);
-  // With the limited-memory Hessian, the "extended" augmented system puts the low-rank update into
-  // one KKT factorisation, instead of Sherman–Morrison with 2 × history back-solves per direction:
-  // each MUMPS call carries a fixed cost (its save/restore bookkeeping), so on the paper's
-  // experiment this is 47 → 19 ms for the same 22 iterations of one step.
-  set_string("limited_memory_aug_solver", "extended");
-
-  // Barrier parameter: the monotone Fiacco–McCormick strategy (IPOPT's default, stated). The
-  // adaptive strategy was tried on the same 4 cases from 4 or 5 starts each: it needed more
-  // iterations in most and, in one, converged to a coiled rod of 300 times the energy; with
-  // limited_memory_initialization scalar2 as well it failed one case. Monotone solved all 20 to the
-  // low-energy optimum.
-  set_string("mu_strategy", "monotone");
-
-  // Scaling: IPOPT's gradient-based scaling (its default, stated): F and each row of g are scaled
-  // down when their gradient at the start exceeds 100 in the max-norm. Rows mix m, N and 1/m.
-  set_string("nlp_scaling_method", "gradient-based");
-
-  // Linear solver for the KKT systems: MUMPS, which Debian's coinor-libipopt is built with
-  // (IPOPT 3.11's preferred ma27 needs the HSL library at run time).
-  set_string("linear_solver", "mumps");
-
-  assert(ok && "an IPOPT option was rejected: check its name and range");
-  (void)ok;
-}
-
-// ---- the NLP ------------------------------------------------------------------------------------
-
-ShapeNlp::ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian)
-    : problem_(problem),
-      start_(start),
-      rows_(problem.constraint_count()),
-      finite_difference_hessian_(finite_difference_hessian) {
-  outcome_.w = start;
-  outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
-}
-
-bool ShapeNlp::get_nlp_info(Ipopt::Index& n,
-                            Ipopt::Index& m,
-                            Ipopt::Index& nnz_jac_g,
-                            Ipopt::Index& nnz_h_lag,
-                            IndexStyleEnum& index_style) {
-  n = kUnknowns;
-  m = rows_;
-  nnz_jac_g = kUnknowns * rows_;  // dg/dw is dense: every row depends on every component of w
-  // The lower triangle of the dense 6 × 6 Hessian, or nothing for the limited-memory one.
-  nnz_h_lag = finite_difference_hessian_ ? kUnknowns * (kUnknowns + 1) / 2 : 0;
-  index_style = C_STYLE;
-  return true;
-}
-
-bool ShapeNlp::get_bounds_info(Ipopt::Index n,
-                               Ipopt::Number* x_l,
-                               Ipopt::Number* x_u,
-                               Ipopt::Index m,
-                               Ipopt::Number* g_l,
-                               Ipopt::Number* g_u) {
-  assert(n == kUnknowns && m == rows_);
-  (void)n;
-  // ±inf → ±kIpoptInfinity, which IPOPT reads as "no bound".
-  const WrenchBounds& bounds = problem_.wrench_bounds();
-  for (int j = 0; j < kUnknowns; ++j) {
-    x_l[j] = std::clamp(bounds.lower(j), -kIpoptInfinity, kIpoptInfinity);
-    x_u[j] = std::clamp(bounds.upper(j), -kIpoptInfinity, kIpoptInfinity);
-  }
-  const Eigen::VectorXd& lower = problem_.constraint_lower();
-  const Eigen::VectorXd& upper = problem_.constraint_upper();
-  for (Ipopt::Index i = 0; i < m; ++i) {
-    g_l[i] = std::clamp(lower(i), -kIpoptInfinity, kIpoptInfinity);
-    g_u[i] = std::clamp(upper(i), -kIpoptInfinity, kIpoptInfinity);
-  }
-  return true;
-}
-
-bool ShapeNlp::get_starting_point(Ipopt::Index n,
-                                  bool init_x,
-                                  Ipopt::Number* x,
-                                  bool init_z,
-                                  Ipopt::Number* /*z_L*/,
-                                  Ipopt::Number* /*z_U*/,
-                                  Ipopt::Index /*m*/,
-                                  bool init_lambda,
-                                  Ipopt::Number* /*lambda*/) {
-  assert(n == kUnknowns);
-  (void)n;
-  // Only a primal start is given (warm_start_init_point stays "no"); IPOPT then initialises the
-  // multipliers itself and never asks for them.
-  if (!init_x || init_z || init_lambda) return false;
-  for (int j = 0; j < kUnknowns; ++j) x[j] = start_(j);
-  return true;
-}
-
-bool ShapeNlp::evaluate_at(const Ipopt::Number* x) {
-  // IPOPT's new_x says whether x changed since the last call; ShapeProblem::evaluate() is a no-op
-  // at the last w anyway, so it is called every time: one 6-vector comparison buys independence
-  // from the hint (the derivative checker, for one, moves x between calls).
-  const Vector6d w = Eigen::Map<const Vector6d>(x);
-  problem_.evaluate(w);
-  return std::isfinite(problem_.cost()) && problem_.cost_gradient().allFinite() &&
-         problem_.constraints().allFinite() && problem_.constraint_jacobian().allFinite();
-}
-
-bool ShapeNlp::eval_f(Ipopt::Index n,
-                      const Ipopt::Number* x,
-                      bool /*new_x*/,
-                      Ipopt::Number& obj_value) {
-  assert(n == kUnknowns);
-  (void)n;
-  if (!evaluate_at(x)) return false;
-  obj_value = problem_.cost();
-  return true;
-}
-
-bool ShapeNlp::eval_grad_f(Ipopt::Index n,
-                           const Ipopt::Number* x,
-                           bool /*new_x*/,
-                           Ipopt::Number* grad_f) {
-  assert(n == kUnknowns);
-  (void)n;
-  if (!evaluate_at(x)) return false;
-  Eigen::Map<Vector6d> gradient(grad_f);
-  gradient = problem_.cost_gradient();
-  return true;
-}
-
-bool ShapeNlp::eval_g(
-    Ipopt::Index n, const Ipopt::Number* x, bool /*new_x*/, Ipopt::Index m, Ipopt::Number* g) {
-  assert(n == kUnknowns && m == rows_);
-  (void)n;
-  if (m == 0) return true;
-  if (!evaluate_at(x)) return false;
-  Eigen::Map<Eigen::VectorXd>(g, m) = problem_.constraints();
-  return true;
-}
-
-bool ShapeNlp::eval_h(Ipopt::Index n,
-                      const Ipopt::Number* x,
-                      bool /*new_x*/,
-                      Ipopt::Number obj_factor,
-                      Ipopt::Index m,
-                      const Ipopt::Number* lambda,
-                      bool /*new_lambda*/,
-                      Ipopt::Index nele_hess,
-                      Ipopt::Index* iRow,
-                      Ipopt::Index* jCol,
-                      Ipopt::Number* values) {
-  assert(n == kUnknowns && m == rows_ && nele_hess == kUnknowns * (kUnknowns + 1) / 2);
-  (void)n;
-  (void)nele_hess;
-  if (values == nullptr) {
-    Ipopt::Index k = 0;  // the lower triangle, row by row
-    for (Ipopt::Index i = 0; i < kUnknowns; ++i) {
-      for (Ipopt::Index j = 0; j <= i; ++j, ++k) {
-        iRow[k] = i;
-        jCol[k] = j;
-      }
-    }
-    assert(k == nele_hess && "the Hessian structure does not match nnz_h_lag");
-    return true;
-  }
-  const Eigen::Map<const Eigen::VectorXd> multipliers(lambda, m);
-  // ∇L at w, or false when the problem is not finite there.
-  const auto lagrangian_gradient = [&](const Vector6d& w, Vector6d& gradient) {
-    problem_.evaluate(w);
-    gradient = obj_factor * problem_.cost_gradient();
-    if (m > 0) gradient.noalias() += problem_.constraint_jacobian().transpose() * multipliers;
-    return gradient.allFinite();
-  };
-  const Vector6d w = Eigen::Map<const Vector6d>(x);
-  const Vector6d units = problem_.rod().properties.bending_wrench_units();
-  Vector6d at_w;
-  if (!lagrangian_gradient(w, at_w)) return false;
-  Matrix6d H;
-  for (int j = 0; j < kUnknowns; ++j) {
-    const double h =
-        std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(w[j]), units[j]);
-    Vector6d shifted = w, at_shifted;
-    shifted[j] += h;
-    if (!lagrangian_gradient(shifted, at_shifted)) return false;
-    H.col(j) = (at_shifted - at_w) / h;
-  }
-  H = 0.5 * (H + H.transpose()).eval();
-  Ipopt::Index k = 0;
-  for (int i = 0; i < kUnknowns; ++i)
-    for (int j = 0; j <= i; ++j) values[k++] = H(i, j);
-  return true;
-}
-
-bool ShapeNlp::eval_jac_g(Ipopt::Index n,
-                          const Ipopt::Number* x,
-                          bool /*new_x*/,
-                          Ipopt::Index m,
-                          Ipopt::Index nele_jac,
-                          Ipopt::Index* iRow,
-                          Ipopt::Index* jCol,
-                          Ipopt::Number* values) {
-  assert(n == kUnknowns && m == rows_ && nele_jac == kUnknowns * rows_);
-  (void)n;
-  (void)nele_jac;
-  if (values == nullptr) {
-    // The structure, declared once: the dense m × 6 Jacobian in row-major order, entry k = 6 i + j.
-    Ipopt::Index k = 0;
-    for (Ipopt::Index i = 0; i < m; ++i) {
-      for (Ipopt::Index j = 0; j < kUnknowns; ++j, ++k) {
-        iRow[k] = i;
-        jCol[k] = j;
-      }
-    }
-    assert(k == nele_jac && "the Jacobian structure does not match nnz_jac_g");
-    return true;
-  }
-  if (m == 0) return true;
-  if (!evaluate_at(x)) return false;
-  // Same row-major order as the structure; dg/dw is stored column-major in Eigen.
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, kUnknowns, Eigen::RowMajor>>(
-      values, m, kUnknowns) = problem_.constraint_jacobian();
-  return true;
-}
-
-bool ShapeNlp::intermediate_callback(Ipopt::AlgorithmMode /*mode*/,
-                                     Ipopt::Index iter,
-                                     Ipopt::Number /*obj_value*/,
-                                     Ipopt::Number /*inf_pr*/,
-                                     Ipopt::Number /*inf_du*/,
-                                     Ipopt::Number /*mu*/,
-                                     Ipopt::Number /*d_norm*/,
-                                     Ipopt::Number /*regularization_size*/,
-                                     Ipopt::Number /*alpha_du*/,
-                                     Ipopt::Number /*alpha_pr*/,
-                                     Ipopt::Index /*ls_trials*/,
-                                     const Ipopt::IpoptData* /*ip_data*/,
-                                     Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) {
-  outcome_.iterations = iter;
-  return true;  // never ask IPOPT to stop
-}
-
-void ShapeNlp::finalize_solution(Ipopt::SolverReturn status,
-                                 Ipopt::Index n,
-                                 const Ipopt::Number* x,
-                                 const Ipopt::Number* z_L,
-                                 const Ipopt::Number* z_U,
-                                 Ipopt::Index m,
-                                 const Ipopt::Number* /*g*/,
-                                 const Ipopt::Number* lambda,
-                                 Ipopt::Number obj_value,
-                                 const Ipopt::IpoptData* /*ip_data*/,
-                                 Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) {
-  assert(n == kUnknowns && m == rows_);
-  (void)n;
-  outcome_.finalized = true;
-  outcome_.solver_return = status;
-  outcome_.objective = obj_value;
-  if (x != nullptr) outcome_.w = Eigen::Map<const Vector6d>(x);
-  if (z_L != nullptr) outcome_.lower_bound_multipliers = Eigen::Map<const Vector6d>(z_L);
-  if (z_U != nullptr) outcome_.upper_bound_multipliers = Eigen::Map<const Vector6d>(z_U);
-  if (lambda != nullptr) outcome_.constraint_multipliers.assign(lambda, lambda + m);
-}
-
-// ---- status names -------------------------------------------------------------------------------
-
-std::string application_status_name(Ipopt::ApplicationReturnStatus status) {
+/// IPOPT's ApplicationReturnStatus → SolveStatus. The raw status is kept in IpoptDetails.
+///   Solve_Succeeded, Solved_To_Acceptable_Level    → Converged (then checked against our own
+///   Feasible_Point_Found (square problems only)       constraint violation by optimise_shape)
+///   Maximum_Iterations_Exceeded, _CpuTime_Exceeded → IterationLimit
+///   Diverging_Iterates                             → Diverged  (|w| grew without bound)
+///   Invalid_Number_Detected                        → Diverged  (F, g or a derivative non-finite)
+///   Infeasible_Problem_Detected                    → Infeasible (a stationary point of the
+///                                                    constraint violation: no step reduces it)
+///   Restoration_Failed                             → Infeasible (the feasibility restoration
+///                                                    found no step that reduces the violation)
+///   Error_In_Step_Computation                      → Singular  (the KKT matrix stayed singular
+///                                                    despite IPOPT's regularisation)
+///   Search_Direction_Becomes_Too_Small             → Singular  (no step changes w any more
+///                                                    although the tolerances are not met)
+///   Not_Enough_Degrees_Of_Freedom                  → Singular  (more equality rows than the 6
+///                                                    unknowns: dg/dw cannot have full row rank)
+///   User_Requested_Stop, Invalid_Problem_Definition, Invalid_Option, Unrecoverable_Exception,
+///   NonIpopt_Exception_Thrown, Insufficient_Memory, Internal_Error
+///                                                  → Diverged  (the solve broke down; the
+///                                                    message names IPOPT's status)
+SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
   switch (status) {
     case Ipopt::Solve_Succeeded:
-      return "Solve_Succeeded";
     case Ipopt::Solved_To_Acceptable_Level:
-      return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected:
-      return "Infeasible_Problem_Detected";
-    case Ipopt::Search_Direction_Becomes_Too_Small:
-      return "Search_Direction_Becomes_Too_Small";
-    case Ipopt::Diverging_Iterates:
-      return "Diverging_Iterates";
-    case Ipopt::User_Requested_Stop:
-      return "User_Requested_Stop";
     case Ipopt::Feasible_Point_Found:
-      return "Feasible_Point_Found";
+      return SolveStatus::Converged;
     case Ipopt::Maximum_Iterations_Exceeded:
-      return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed:
-      return "Restoration_Failed";
-    case Ipopt::Error_In_Step_Computation:
-      return "Error_In_Step_Computation";
     case Ipopt::Maximum_CpuTime_Exceeded:
-      return "Maximum_CpuTime_Exceeded";
+      return SolveStatus::IterationLimit;
+    case Ipopt::Infeasible_Problem_Detected:
+    case Ipopt::Restoration_Failed:
+      return SolveStatus::Infeasible;
+    case Ipopt::Error_In_Step_Computation:
+    case Ipopt::Search_Direction_Becomes_Too_Small:
     case Ipopt::Not_Enough_Degrees_Of_Freedom:
-      return "Not_Enough_Degrees_Of_Freedom";
-    case Ipopt::Invalid_Problem_Definition:
-      return "Invalid_Problem_Definition";
-    case Ipopt::Invalid_Option:
-      return "Invalid_Option";
+      return SolveStatus::Singular;
+    case Ipopt::Diverging_Iterates:
     case Ipopt::Invalid_Number_Detected:
-      return "Invalid_Number_Detected";
+    case Ipopt::User_Requested_Stop:
+    case Ipopt::Invalid_Problem_Definition:
+    case Ipopt::Invalid_Option:
     case Ipopt::Unrecoverable_Exception:
-      return "Unrecoverable_Exception";
     case Ipopt::NonIpopt_Exception_Thrown:
-      return "NonIpopt_Exception_Thrown";
     case Ipopt::Insufficient_Memory:
-      return "Insufficient_Memory";
     case Ipopt::Internal_Error:
-      return "Internal_Error";
+      return SolveStatus::Diverged;
   }
-  return "Unknown_Status_" + std::to_string(static_cast<int>(status));
+  return SolveStatus::Diverged;
 }
 
-// ---- derivative test ----------------------------------------------------------------------------
-
-namespace {
-
-/// A journal that keeps what IPOPT prints in a string.
-class StringJournal final : public Ipopt::Journal {
- public:
-  explicit StringJournal(Ipopt::EJournalLevel level) : Ipopt::Journal("rodshape_capture", level) {}
-  const std::string& text() const { return text_; }
-
- protected:
-  void PrintImpl(Ipopt::EJournalCategory /*category*/,
-                 Ipopt::EJournalLevel /*level*/,
-                 const char* str) override {
-    text_ += str;
-  }
-  void PrintfImpl(Ipopt::EJournalCategory /*category*/,
-                  Ipopt::EJournalLevel /*level*/,
-                  const char* format,
-                  va_list args) override {
-    va_list copy;
-    va_copy(copy, args);
-    const int size = std::vsnprintf(nullptr, 0, format, copy);
-    va_end(copy);
-    if (size <= 0) return;
-    std::string buffer(static_cast<std::size_t>(size) + 1, '\0');
-    std::vsnprintf(buffer.data(), buffer.size(), format, args);
-    buffer.resize(static_cast<std::size_t>(size));
-    text_ += buffer;
-  }
-  void FlushBufferImpl() override {}
-
- private:
-  std::string text_;
-};
+IpoptRun with_status(Ipopt::ApplicationReturnStatus status) {
+  IpoptRun run;
+  run.status = map_status(status);
+  run.details.application_status = static_cast<int>(status);
+  run.details.application_status_name = application_status_name(status);
+  return run;
+}
 
 }  // namespace
 
-DerivativeTestReport run_derivative_test(ShapeProblem& problem,
-                                         const Vector6d& w,
-                                         double tolerance,
-                                         double perturbation) {
+struct IpoptSession::Application {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  ShapeOptimizerOptions options;
-  options.max_iterations = 0;  // check at the start, do not optimise
-  const bool differenced = uses_finite_difference_hessian(options, problem);
-  apply_options(*app->Options(), options, differenced);
-  bool ok = app->Options()->SetStringValue("derivative_test", "first-order");
-  ok = app->Options()->SetNumericValue("derivative_test_tol", tolerance) && ok;
-  ok = app->Options()->SetNumericValue("derivative_test_perturbation", perturbation) && ok;
-  ok = app->Options()->SetStringValue("derivative_test_print_all", "yes") && ok;
-  // IPOPT moves the test point randomly by up to point_perturbation_radius (default 10) before
-  // checking; for a wrench in N and N·m that is a different, wildly coiled rod. Check at w itself.
-  ok = app->Options()->SetNumericValue("point_perturbation_radius", 0.0) && ok;
-  assert(ok);
-  (void)ok;
+};
 
-  DerivativeTestReport report;
-  if (app->Initialize("") != Ipopt::Solve_Succeeded) {
-    report.error_count = -1;
-    report.log = "IpoptApplication::Initialize failed";
-    return report;
+IpoptSession::IpoptSession(const ShapeOptimizerOptions& options, bool finite_difference_hessian)
+    : application_(std::make_unique<Application>()),
+      finite_difference_hessian_(finite_difference_hessian) {
+  Ipopt::IpoptApplication& app = *application_->app;
+  apply_options(*app.Options(), options, finite_difference_hessian);
+  // "" skips IPOPT's options file: an ipopt.opt in the working directory must not change results.
+  const Ipopt::ApplicationReturnStatus init = app.Initialize("");
+  if (init != Ipopt::Solve_Succeeded) {
+    failure_ = with_status(init);
+    failure_->status = SolveStatus::Diverged;
   }
-  Ipopt::SmartPtr<StringJournal> journal = new StringJournal(Ipopt::J_WARNING);
-  app->Jnlst()->AddJournal(Ipopt::GetRawPtr(journal));
-  Ipopt::SmartPtr<Ipopt::TNLP> nlp = new ShapeNlp(problem, w, differenced);
-  app->OptimizeTNLP(nlp);
+}
 
-  report.log = journal->text();
-  std::istringstream lines(report.log);
-  for (std::string line; std::getline(lines, line);) {
-    const auto first = line.find_first_not_of(' ');
-    if (first != std::string::npos && line[first] == '*') ++report.error_count;
-    if (line.find("No errors detected by derivative checker") != std::string::npos)
-      report.no_errors_line = true;
-  }
-  return report;
+IpoptSession::~IpoptSession() = default;
+
+IpoptRun IpoptSession::run(ShapeProblem& problem, const Vector6d& start) {
+  Ipopt::IpoptApplication& app = *application_->app;
+  auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_);
+  const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
+  IpoptRun run = with_status(app.OptimizeTNLP(owner));
+  const NlpOutcome& outcome = nlp->outcome();
+  const Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app.Statistics();
+  run.w = outcome.w;
+  run.details.iterations =
+      Ipopt::IsValid(statistics) ? statistics->IterationCount() : outcome.iterations;
+  run.details.objective = outcome.objective;
+  run.details.constraint_multipliers = outcome.constraint_multipliers;
+  run.details.lower_bound_multipliers = outcome.lower_bound_multipliers;
+  run.details.upper_bound_multipliers = outcome.upper_bound_multipliers;
+  return run;
 }
 
 }  // namespace rodshape::detail

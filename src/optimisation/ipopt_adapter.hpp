@@ -1,157 +1,51 @@
-// ipopt_adapter.hpp (private): the ShapeProblem seen by IPOPT. This header and its .cpp are the
-// only places that include IPOPT; rodshape links IPOPT PRIVATE and include/ never names an IPOPT
-// type.
-//
-// The NLP (paper, "Model-based optimization under constraints"):
-//   min_{w ∈ R^6} F(w)   s.t.   g_L ≤ g(w) ≤ g_U,   w_L ≤ w ≤ w_U,
-// with w = (n(0), m(0)) the base wrench, F the shape cost and g the workspace, grasp and strain
-// rows of ShapeProblem. First derivatives are exact (one integration with all-node derivatives);
-// the Hessian of the Lagrangian is forward differences of its exact gradient (eval_h), or IPOPT's
-// limited-memory (L-BFGS) approximation when ShapeOptimizerOptions::hessian says so.
+// ipopt_adapter.hpp (private): IPOPT as shape optimisation sees it, with no IPOPT type in sight.
+// An IpoptSession is one configured IpoptApplication; run() optimises the base wrench from one
+// start and says how it ended, IPOPT's return status mapped to SolveStatus (the raw one kept in
+// IpoptDetails). The TNLP itself is in ipopt_nlp.hpp.
 #pragma once
 
-#include <IpIpoptApplication.hpp>
-#include <IpTNLP.hpp>
+#include <memory>
+#include <optional>
 #include <string>
-#include <vector>
 
 #include "rodshape/core/wrench.hpp"
 #include "rodshape/optimisation/shape_optimizer.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
+#include "rodshape/solvers/solve_status.hpp"
 
 namespace rodshape::detail {
-
-/// IPOPT's "infinity": a bound at or beyond ±kIpoptInfinity is no bound
-/// (nlp_lower/upper_bound_inf).
-inline constexpr double kIpoptInfinity = 1e19;
-
-/// Every IPOPT option rodshape sets, in one place, each with its reason (see the .cpp). Call before
-/// IpoptApplication::Initialize(""), which applies print_level to the console journal.
-void apply_options(Ipopt::OptionsList& ipopt_options,
-                   const ShapeOptimizerOptions& options,
-                   bool finite_difference_hessian);
 
 /// Whether the Hessian is differenced (eval_h) for this problem, per
 /// ShapeOptimizerOptions::hessian.
 bool uses_finite_difference_hessian(const ShapeOptimizerOptions& options,
                                     const ShapeProblem& problem);
 
-/// What IPOPT left in finalize_solution() and intermediate_callback().
-struct NlpOutcome {
-  bool finalized = false;  // finalize_solution() was called
-  Ipopt::SolverReturn solver_return = Ipopt::UNASSIGNED;
-  Vector6d w = Vector6d::Zero();  // the final iterate
-  double objective = 0.0;
-  /// λ, one per row of g. IPOPT's sign convention (Lagrangian F + gᵀλ): λ ≥ 0 where g presses on
-  /// its upper bound, λ ≤ 0 where it presses on its lower bound, 0 where inactive.
-  std::vector<double> constraint_multipliers;
-  Vector6d lower_bound_multipliers = Vector6d::Zero();  // z_L ≥ 0
-  Vector6d upper_bound_multipliers = Vector6d::Zero();  // z_U ≥ 0
-  int iterations = 0;  // last iteration number reported by intermediate_callback()
+/// One IPOPT run from one start.
+struct IpoptRun {
+  SolveStatus status = SolveStatus::NotRun;  // IPOPT's return status, mapped (see the .cpp)
+  IpoptDetails details;                      // the raw status, iterations, multipliers
+  Vector6d w = Vector6d::Zero();             // the final iterate
 };
 
-class ShapeNlp final : public Ipopt::TNLP {
+class IpoptSession {
  public:
-  /// Infinite bounds are given to IPOPT as ±kIpoptInfinity (apply_options sets its
-  /// nlp_lower/upper_bound_inf to that).
-  ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian);
+  /// Configures IPOPT with `options` (every option rodshape sets, apply_options).
+  IpoptSession(const ShapeOptimizerOptions& options, bool finite_difference_hessian);
+  ~IpoptSession();
+  IpoptSession(const IpoptSession&) = delete;
+  IpoptSession& operator=(const IpoptSession&) = delete;
 
-  const NlpOutcome& outcome() const { return outcome_; }
+  /// Set when IPOPT could not be initialised (run() must not be called then): its status.
+  const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 
-  bool get_nlp_info(Ipopt::Index& n,
-                    Ipopt::Index& m,
-                    Ipopt::Index& nnz_jac_g,
-                    Ipopt::Index& nnz_h_lag,
-                    IndexStyleEnum& index_style) override;
-  bool get_bounds_info(Ipopt::Index n,
-                       Ipopt::Number* x_l,
-                       Ipopt::Number* x_u,
-                       Ipopt::Index m,
-                       Ipopt::Number* g_l,
-                       Ipopt::Number* g_u) override;
-  bool get_starting_point(Ipopt::Index n,
-                          bool init_x,
-                          Ipopt::Number* x,
-                          bool init_z,
-                          Ipopt::Number* z_L,
-                          Ipopt::Number* z_U,
-                          Ipopt::Index m,
-                          bool init_lambda,
-                          Ipopt::Number* lambda) override;
-  bool eval_f(Ipopt::Index n,
-              const Ipopt::Number* x,
-              bool new_x,
-              Ipopt::Number& obj_value) override;
-  bool eval_grad_f(Ipopt::Index n,
-                   const Ipopt::Number* x,
-                   bool new_x,
-                   Ipopt::Number* grad_f) override;
-  bool eval_g(Ipopt::Index n,
-              const Ipopt::Number* x,
-              bool new_x,
-              Ipopt::Index m,
-              Ipopt::Number* g) override;
-  bool eval_jac_g(Ipopt::Index n,
-                  const Ipopt::Number* x,
-                  bool new_x,
-                  Ipopt::Index m,
-                  Ipopt::Index nele_jac,
-                  Ipopt::Index* iRow,
-                  Ipopt::Index* jCol,
-                  Ipopt::Number* values) override;
-  /// ∇²L = obj_factor ∇²F + Σ λ_i ∇²g_i by forward differences of ∇L = obj_factor ∇F + Jᵀλ:
-  /// column j = (∇L(w + h_j e_j) - ∇L(w)) / h_j with h_j = √ε max(|w_j|, s_j), s_j the bending
-  /// scale of w_j (EI/L² for forces, EI/L for moments); error ≈ h_j |∇³L| / 2 + ε |∇L| / h_j, the
-  /// optimum of the forward-difference model. Symmetrised; the lower triangle is given.
-  bool eval_h(Ipopt::Index n,
-              const Ipopt::Number* x,
-              bool new_x,
-              Ipopt::Number obj_factor,
-              Ipopt::Index m,
-              const Ipopt::Number* lambda,
-              bool new_lambda,
-              Ipopt::Index nele_hess,
-              Ipopt::Index* iRow,
-              Ipopt::Index* jCol,
-              Ipopt::Number* values) override;
-  bool intermediate_callback(Ipopt::AlgorithmMode mode,
-                             Ipopt::Index iter,
-                             Ipopt::Number obj_value,
-                             Ipopt::Number inf_pr,
-                             Ipopt::Number inf_du,
-                             Ipopt::Number mu,
-                             Ipopt::Number d_norm,
-                             Ipopt::Number regularization_size,
-                             Ipopt::Number alpha_du,
-                             Ipopt::Number alpha_pr,
-                             Ipopt::Index ls_trials,
-                             const Ipopt::IpoptData* ip_data,
-                             Ipopt::IpoptCalculatedQuantities* ip_cq) override;
-  void finalize_solution(Ipopt::SolverReturn status,
-                         Ipopt::Index n,
-                         const Ipopt::Number* x,
-                         const Ipopt::Number* z_L,
-                         const Ipopt::Number* z_U,
-                         Ipopt::Index m,
-                         const Ipopt::Number* g,
-                         const Ipopt::Number* lambda,
-                         Ipopt::Number obj_value,
-                         const Ipopt::IpoptData* ip_data,
-                         Ipopt::IpoptCalculatedQuantities* ip_cq) override;
+  /// Optimises `problem` from `start`; the problem is left evaluated at some iterate.
+  IpoptRun run(ShapeProblem& problem, const Vector6d& start);
 
  private:
-  /// Evaluates the problem at x; false when F, ∇F, g or dg/dw is not finite (IPOPT then cuts the
-  /// step back instead of using the numbers).
-  bool evaluate_at(const Ipopt::Number* x);
-
-  ShapeProblem& problem_;
-  Vector6d start_;
-  int rows_;  // m, fixed at construction
+  struct Application;
+  std::unique_ptr<Application> application_;
   bool finite_difference_hessian_;
-  NlpOutcome outcome_;
+  std::optional<IpoptRun> failure_;
 };
-
-/// The name of an ApplicationReturnStatus, e.g. "Solve_Succeeded".
-std::string application_status_name(Ipopt::ApplicationReturnStatus status);
 
 }  // namespace rodshape::detail

@@ -1,7 +1,5 @@
 #include "rodshape/optimisation/shape_optimizer.hpp"
 
-#include <IpIpoptApplication.hpp>
-#include <IpSolveStatistics.hpp>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -31,58 +29,13 @@ bool ipopt_available() { return true; }
 
 namespace {
 
-/// IPOPT's ApplicationReturnStatus → SolveStatus. The raw status is kept in IpoptDetails.
-///   Solve_Succeeded, Solved_To_Acceptable_Level    → Converged (then checked against our own
-///   Feasible_Point_Found (square problems only)       constraint violation, see below)
-///   Maximum_Iterations_Exceeded, _CpuTime_Exceeded → IterationLimit
-///   Diverging_Iterates                             → Diverged  (|w| grew without bound)
-///   Invalid_Number_Detected                        → Diverged  (F, g or a derivative non-finite)
-///   Infeasible_Problem_Detected                    → Infeasible (a stationary point of the
-///                                                    constraint violation: no step reduces it)
-///   Restoration_Failed                             → Infeasible (the feasibility restoration
-///                                                    found no step that reduces the violation)
-///   Error_In_Step_Computation                      → Singular  (the KKT matrix stayed singular
-///                                                    despite IPOPT's regularisation)
-///   Search_Direction_Becomes_Too_Small             → Singular  (no step changes w any more
-///                                                    although the tolerances are not met)
-///   Not_Enough_Degrees_Of_Freedom                  → Singular  (more equality rows than the 6
-///                                                    unknowns: dg/dw cannot have full row rank)
-///   User_Requested_Stop, Invalid_Problem_Definition, Invalid_Option, Unrecoverable_Exception,
-///   NonIpopt_Exception_Thrown, Insufficient_Memory, Internal_Error
-///                                                  → Diverged  (the solve broke down; the
-///                                                    message names IPOPT's status)
-/// A Converged run whose final w violates a constraint or a wrench bound by more than
-/// ShapeOptimizerOptions::constraint_tolerance (our measure, ShapeProblem::constraint_violation)
-/// becomes ConstraintViolated.
-SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
-  switch (status) {
-    case Ipopt::Solve_Succeeded:
-    case Ipopt::Solved_To_Acceptable_Level:
-    case Ipopt::Feasible_Point_Found:
-      return SolveStatus::Converged;
-    case Ipopt::Maximum_Iterations_Exceeded:
-    case Ipopt::Maximum_CpuTime_Exceeded:
-      return SolveStatus::IterationLimit;
-    case Ipopt::Infeasible_Problem_Detected:
-    case Ipopt::Restoration_Failed:
-      return SolveStatus::Infeasible;
-    case Ipopt::Error_In_Step_Computation:
-    case Ipopt::Search_Direction_Becomes_Too_Small:
-    case Ipopt::Not_Enough_Degrees_Of_Freedom:
-      return SolveStatus::Singular;
-    case Ipopt::Diverging_Iterates:
-    case Ipopt::Invalid_Number_Detected:
-    case Ipopt::User_Requested_Stop:
-    case Ipopt::Invalid_Problem_Definition:
-    case Ipopt::Invalid_Option:
-    case Ipopt::Unrecoverable_Exception:
-    case Ipopt::NonIpopt_Exception_Thrown:
-    case Ipopt::Insufficient_Memory:
-    case Ipopt::Internal_Error:
-      return SolveStatus::Diverged;
-  }
-  return SolveStatus::Diverged;
-}
+using detail::IpoptRun;
+using detail::IpoptSession;
+using detail::uses_finite_difference_hessian;
+
+using detail::IpoptRun;
+using detail::IpoptSession;
+using detail::uses_finite_difference_hessian;
 
 /// The guess, then `count` extra starts, deterministic. Bending moments are the components of m(0)
 /// across the clamp's tangent, i.e. along the clamp frame's x and y axes R0 e_x, R0 e_y. In order:
@@ -129,37 +82,26 @@ std::vector<Vector6d> starts_from(const Vector6d& guess, const ClampedRod& rod, 
 
 /// One IPOPT run and what we make of it.
 struct StartResult {
-  Ipopt::ApplicationReturnStatus application_status = Ipopt::Internal_Error;
-  detail::NlpOutcome outcome;
-  SolveStatus status = SolveStatus::NotRun;
-  int iterations = 0;
+  IpoptRun run;
+  SolveStatus status = SolveStatus::NotRun;  // run.status, judged on the problem as posed
   double violation = 0.0;
   double cost = 0.0;
   double energy = 0.0;
   int start_index = 0;
 };
 
-StartResult run_start(Ipopt::IpoptApplication& app,
+StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
                       const ShapeOptimizerOptions& options) {
   StartResult result;
-  auto* nlp = new detail::ShapeNlp(problem, start,
-                                   detail::uses_finite_difference_hessian(options, problem));
-  const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
-  result.application_status = app.OptimizeTNLP(owner);
-  result.outcome = nlp->outcome();
-  const Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app.Statistics();
-  result.iterations =
-      Ipopt::IsValid(statistics) ? statistics->IterationCount() : result.outcome.iterations;
-
+  result.run = session.run(problem, start);
   // Judge the final iterate ourselves, on the problem as posed.
-  const Vector6d& w = result.outcome.w;
-  problem.evaluate(w);
+  problem.evaluate(result.run.w);
   result.violation = problem.constraint_violation();  // ours, not IPOPT's (scaled, relaxed)
   result.cost = problem.cost();
   result.energy = problem.breakdown().energy;
-  result.status = map_status(result.application_status);
+  result.status = result.run.status;
   // "Converged" promises a feasible point: IPOPT's own test runs on the relaxed bounds, and an
   // acceptable point could in principle slip through, so our measure has the last word.
   if (result.status == SolveStatus::Converged &&
@@ -194,8 +136,8 @@ std::size_t pick_best(const std::vector<StartResult>& results) {
 std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptions& options) {
   std::ostringstream out;
   out.precision(3);
-  out << "IPOPT " << detail::application_status_name(r.application_status) << " after "
-      << r.iterations << " iterations";
+  out << "IPOPT " << r.run.details.application_status_name << " after " << r.run.details.iterations
+      << " iterations";
   if (starts > 1) out << " (start " << r.start_index + 1 << " of " << starts << ")";
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
   if (r.status == SolveStatus::ConstraintViolated)
@@ -213,16 +155,11 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   detail::require_finite("guess", w0);
 
   ShapeResult solution;
-  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  detail::apply_options(*app->Options(), options,
-                        detail::uses_finite_difference_hessian(options, problem));
-  // "" skips IPOPT's options file: an ipopt.opt in the working directory must not change results.
-  const Ipopt::ApplicationReturnStatus init = app->Initialize("");
-  if (init != Ipopt::Solve_Succeeded) {
-    solution.status = SolveStatus::Diverged;
-    solution.message = "IPOPT initialisation failed: " + detail::application_status_name(init);
-    solution.ipopt.application_status = static_cast<int>(init);
-    solution.ipopt.application_status_name = detail::application_status_name(init);
+  IpoptSession session(options, uses_finite_difference_hessian(options, problem));
+  if (const auto& failure = session.initialisation_failure()) {
+    solution.status = failure->status;
+    solution.message = "IPOPT initialisation failed: " + failure->details.application_status_name;
+    solution.ipopt = failure->details;
     return solution;
   }
 
@@ -230,27 +167,21 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   std::vector<StartResult> results;
   results.reserve(starts.size());
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    results.push_back(run_start(*app, problem, starts[k], options));
+    results.push_back(run_start(session, problem, starts[k], options));
     results.back().start_index = static_cast<int>(k);
   }
   const StartResult& best = results[pick_best(results)];
 
-  problem.evaluate(best.outcome.w);
+  problem.evaluate(best.run.w);
   solution.status = best.status;
   solution.message = describe(best, static_cast<int>(starts.size()), options);
-  solution.base_wrench = Wrench::from_vector(best.outcome.w);
+  solution.base_wrench = Wrench::from_vector(best.run.w);
   solution.configuration = problem.configuration();
   solution.cost = problem.breakdown();
   solution.max_constraint_violation = best.violation;
   if (options.assess_stability && std::isfinite(best.cost))
     solution.stability = assess_stability(problem.rod(), solution.configuration);
-  solution.ipopt.application_status = static_cast<int>(best.application_status);
-  solution.ipopt.application_status_name = detail::application_status_name(best.application_status);
-  solution.ipopt.iterations = best.iterations;
-  solution.ipopt.objective = best.outcome.objective;
-  solution.ipopt.constraint_multipliers = best.outcome.constraint_multipliers;
-  solution.ipopt.lower_bound_multipliers = best.outcome.lower_bound_multipliers;
-  solution.ipopt.upper_bound_multipliers = best.outcome.upper_bound_multipliers;
+  solution.ipopt = best.run.details;
   solution.starts_tried = static_cast<int>(starts.size());
   return solution;
 }

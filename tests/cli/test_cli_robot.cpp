@@ -133,7 +133,8 @@ TEST_F(CliRobot, BadInputGivesOneLineAndExitTwo) {
       {"seed size", "ik " + panda + " 0.3 0 0.5 0 1 0 0 --seed 0 0", "--seed has 2 values"},
       {"seed beyond a limit", "ik " + panda + " 0.3 0 0.5 0 1 0 0 --seed 3 0 0 -1 0 1 0",
        "--seed[0] = 3 is outside the limits of joint 'panda_joint1'"},
-      {"not a unit quaternion", "ik " + panda + " 0.3 0 0.5 0 2 0 0", "expected a unit quaternion"},
+      {"not a unit quaternion", "ik " + panda + " 0.3 0 0.5 0 2 0 0",
+       "has norm 2; it must be 1 within 1e-6"},
       {"short pose", "ik " + panda + " 0.3 0 0.5", "pose"},
   };
   for (const BadRun& bad : cases) {

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <string>
 
 namespace rodshape {
 
@@ -70,5 +71,13 @@ inline bool is_rotation(const Eigen::Matrix3d& R, double tolerance = 1e-6) {
       (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   return orthogonality <= tolerance && std::abs(R.determinant() - 1.0) <= tolerance;
 }
+
+/// The tolerance of a rotation given as input, a matrix (is_rotation) or a quaternion (its norm).
+inline constexpr double kRotationInputTolerance = 1e-6;
+
+/// The rotation of the unit quaternion [w, x, y, z]. Throws InputError naming `field` when it is
+/// not finite or its norm differs from 1 by more than kRotationInputTolerance (a mistyped
+/// quaternion); a smaller error is normalised away.
+Eigen::Matrix3d rotation_from_wxyz(const Eigen::Vector4d& wxyz, const std::string& field);
 
 }  // namespace rodshape
