@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
 
@@ -93,6 +94,16 @@ void add_counts(ShootingSummary& total, const ShootingSummary& part) {
   total.residual_norm = part.residual_norm;
 }
 
+/// The rod at σ: with ramp_loads its distributed load scaled by σ.
+ClampedRod rod_at(const ClampedRod& rod, const EquilibriumPath& path, double sigma) {
+  ClampedRod scaled = rod;
+  if (path.ramp_loads) {
+    scaled.load.force *= sigma;
+    scaled.load.moment *= sigma;
+  }
+  return scaled;
+}
+
 /// One substep: the direct solve at σ from `guess`, with the derivatives `derivatives`.
 ShootingResult solve_at(const ClampedRod& rod,
                         const EquilibriumPath& path,
@@ -102,16 +113,13 @@ ShootingResult solve_at(const ClampedRod& rod,
                         Derivatives derivatives) {
   shooting.continuation = false;  // a failure here is what the caller wants to see
   shooting.output_derivatives = derivatives;
-  if (!path.ramp_loads) return solve_equilibrium(rod, path.tip_at(sigma), guess, shooting);
-  ClampedRod scaled = rod;
-  scaled.load.force *= sigma;
-  scaled.load.moment *= sigma;
-  return solve_equilibrium(scaled, path.tip_at(sigma), guess, shooting);
+  return solve_equilibrium(rod_at(rod, path, sigma), path.tip_at(sigma), guess, shooting);
 }
 
 /// Records an accepted substep; false (with the event set) when it is unstable and stability is
 /// assessed at every substep.
 bool accept(const ClampedRod& rod,
+            const EquilibriumPath& path,
             const FollowOptions& options,
             double sigma,
             ShootingResult&& solved,
@@ -124,7 +132,7 @@ bool accept(const ClampedRod& rod,
                       solved.summary,
                       std::nullopt};
   if (options.stability_every_substep)
-    state.stability = assess_stability(rod, solved.configuration);
+    state.stability = assess_stability(rod_at(rod, path, sigma), solved.configuration);
   const bool unstable = state.stability && !state.stability->stable && !state.stability->degenerate;
   result.sigma = sigma;
   result.base_wrench = solved.base_wrench;
@@ -160,7 +168,7 @@ void follow_fixed(const ClampedRod& rod,
           solved.summary.brief() + ")";
       return;
     }
-    if (!accept(rod, options, sigma, std::move(solved), result)) return;
+    if (!accept(rod, path, options, sigma, std::move(solved), result)) return;
   }
 }
 
@@ -189,7 +197,7 @@ void follow_adaptive(const ClampedRod& rod,
       dt_previous = dt;
       t = t_next;
       dt *= 2.0;
-      if (!accept(rod, options, t, std::move(solved), result)) return;
+      if (!accept(rod, path, options, t, std::move(solved), result)) return;
     } else if (dt * 0.5 >= dt_min) {
       dt *= 0.5;
     } else {
@@ -202,6 +210,20 @@ void follow_adaptive(const ClampedRod& rod,
       return;
     }
   }
+}
+
+/// After an event on the way: the last followed equilibrium (the start when none was) with
+/// final_derivatives, as on arrival (the last accepted substep carried the derivatives of the
+/// substeps, and a first substep that failed left none).
+void keep_last_equilibrium(const ClampedRod& rod,
+                           const EquilibriumPath& path,
+                           const FollowOptions& options,
+                           FollowResult& result) {
+  if (result.configuration.nodes() == rod.nodes() &&
+      result.configuration.derivatives == options.final_derivatives)
+    return;
+  integrate(rod_at(rod, path, result.sigma), result.base_wrench, result.configuration,
+            options.final_derivatives);
 }
 
 /// On arrival: the expected equilibrium (else another branch), then stable (else unstable).
@@ -251,7 +273,10 @@ FollowResult follow_equilibrium(const ClampedRod& rod,
     follow_adaptive(rod, path, options, result);
   else
     follow_fixed(rod, path, options, result);
-  if (result.followed()) check_arrival(rod, options, expected, branch_tolerance, result);
+  if (result.followed())
+    check_arrival(rod, options, expected, branch_tolerance, result);
+  else
+    keep_last_equilibrium(rod, path, options, result);
   return result;
 }
 
