@@ -11,6 +11,7 @@
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 
@@ -41,19 +42,26 @@ class EquilibriumCommand final : public Command {
   int run() override {
     const EquilibriumTask task = read_equilibrium_task(task_path_);
 
-    // The stability test needs the derivatives at every node; a free tip has no stability test.
-    const bool held = !std::holds_alternative<FreeTip>(task.tip);
+    // The stability test needs the derivatives at every node.
     ShootingOptions options = task.options;
-    options.output_derivatives = held ? Derivatives::AllNodes : Derivatives::None;
+    options.output_derivatives = Derivatives::AllNodes;
 
     const ShootingSolution solution =
         solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
     const ShootingSummary& summary = solution.summary;
+    ClampedRod solved_rod = task.rod;  // with the sub-steps the solver needed
+    solved_rod.substeps = summary.substeps;
 
     std::optional<StabilityReport> stability;
-    if (held && summary.converged()) stability = assess_stability(task.rod, solution.configuration);
+    if (summary.converged()) {
+      // A pose the user holds the tip at must not ask the model for more than it can say.
+      if (!std::holds_alternative<FreeTip>(task.tip))
+        check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
+                             "tip");
+      stability = assess_stability(solved_rod, solution.configuration, task.tip);
+    }
 
-    const std::string json = equilibrium_result_json(solution, stability, task.rod);
+    const std::string json = equilibrium_result_json(solution, stability, solved_rod);
     if (output_path_.empty()) {
       std::cout << json << std::flush;
     } else {

@@ -11,6 +11,9 @@ void ClampedRod::validate() const {
   detail::require_pose("base", clamp);
   if (intervals < 1)
     throw InputError("rod.nodes = " + std::to_string(intervals + 1) + " must be >= 2");
+  if (substeps < 1 || substeps > kMaxSubsteps)
+    throw InputError("substeps = " + std::to_string(substeps) + " must be in [1, " +
+                     std::to_string(kMaxSubsteps) + "]");
 }
 
 }  // namespace rodshape

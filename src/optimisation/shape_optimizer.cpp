@@ -163,6 +163,9 @@ StartResult run_start(Ipopt::IpoptApplication& app,
   if (result.status == SolveStatus::Converged &&
       !(result.violation <= options.constraint_tolerance && std::isfinite(result.cost)))
     result.status = SolveStatus::Singular;
+  // Nor is a shape that is not a number converged, whatever IPOPT's test said.
+  if (result.status == SolveStatus::Converged && !problem.configuration().finite())
+    result.status = SolveStatus::NonFinite;
   return result;
 }
 
@@ -199,6 +202,7 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
   if (r.status == SolveStatus::Singular &&
       map_status(r.application_status) == SolveStatus::Converged)
     out << " exceeds optimizer.constraint_tolerance = " << options.constraint_tolerance;
+  if (r.status == SolveStatus::NonFinite) out << "; the shape is not finite (NaN or infinite values)";
   return out.str();
 }
 

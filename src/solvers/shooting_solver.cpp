@@ -9,6 +9,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
+#include "converged_check.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "validation.hpp"
 
@@ -23,6 +24,13 @@ void ShootingOptions::validate() const {
   if (max_continuation_steps < 1)
     throw InputError("max_continuation_steps = " + std::to_string(max_continuation_steps) +
                      " must be >= 1");
+  if (!(integration_tolerance > 0.0))
+    throw InputError("integration_tolerance = " + detail::format_value(integration_tolerance) +
+                     " must be > 0");
+  if (max_substeps < 1 || max_substeps > ClampedRod::kMaxSubsteps)
+    throw InputError("max_substeps = " + std::to_string(max_substeps) + " must be in [1, " +
+                     std::to_string(ClampedRod::kMaxSubsteps) + "]");
+  strain_limits.validate();
 }
 
 std::string ShootingSummary::brief() const {
@@ -31,6 +39,7 @@ std::string ShootingSummary::brief() const {
   if (chord_steps > 0) out << " + " << chord_steps << " chord steps";
   out << " (" << integrations << " integrations, " << jacobian_evaluations << " with derivatives";
   if (continuation_steps > 0) out << ", " << continuation_steps << " continuation steps";
+  if (substeps > 1) out << ", " << substeps << " sub-steps per interval";
   out << "), |r| = ";
   out.precision(3);
   out << residual_norm;
@@ -394,6 +403,7 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
 
   solution.base_wrench = Wrench::from_vector(w);
   integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
+  detail::confirm_converged(rod, tip, options, solution);  // finite, accurate, or a status
   return solution;
 }
 

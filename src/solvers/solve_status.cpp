@@ -14,6 +14,10 @@ std::string to_string(SolveStatus status) {
       return "diverged";
     case SolveStatus::Singular:
       return "singular";
+    case SolveStatus::NonFinite:
+      return "non_finite";
+    case SolveStatus::DiscretisationTooCoarse:
+      return "discretisation_too_coarse";
   }
   return "unknown";
 }

@@ -2,19 +2,19 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
+#include <variant>
 #include <vector>
 
-#include "core/rk4_step.hpp"
+#include "rodshape/core/pose_between_nodes.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/tip_stiffness.hpp"
 
 namespace rodshape {
 
 namespace {
-
-using detail::NodeState;
-using detail::Slot;
 
 constexpr double kConjugateTolerance = 1e-6;  // σ_min(J̃) below this after refinement: singular
 
@@ -67,52 +67,43 @@ class ScaledJacobian {
   Eigen::Matrix3d R0_;
 };
 
-double smallest_singular_value(const Matrix6d& J) {
+/// σ_min of J̃ after equilibrating its rows and columns (Ruiz's iteration: each row, then each
+/// column, divided by the square root of its largest entry, until all are near 1). Whether J̃ is
+/// singular does not depend on such scalings (nor does the sign of det J̃), but σ_min of the
+/// unscaled J̃ does: when EA, GA ≫ EI/L² a bent rod near its clamp nearly cannot move along its
+/// tangent (a small row of J̃) and answers an axial force through bending (a long column), and
+/// σ_min, computed to ε σ_max, becomes a matter of units. Equilibrated, the test is the same for
+/// any units and any axial stiffness. J̃ = I stays I; a zero row or column stays zero.
+double smallest_singular_value(Matrix6d J) {
+  constexpr int kSweeps = 8;  // each halves log(max / min) of the row and column maxima
+  for (int sweep = 0; sweep < kSweeps; ++sweep) {
+    for (int i = 0; i < 6; ++i) {
+      const double row = J.row(i).cwiseAbs().maxCoeff();
+      if (row > 0.0 && std::isfinite(row)) J.row(i) /= std::sqrt(row);
+    }
+    for (int j = 0; j < 6; ++j) {
+      const double column = J.col(j).cwiseAbs().maxCoeff();
+      if (column > 0.0 && std::isfinite(column)) J.col(j) /= std::sqrt(column);
+    }
+  }
   return Eigen::JacobiSVD<Matrix6d>(J).singularValues()(5);
 }
 
-/// Re-enters the integration at node i: y from the stored node, the tangent from the stored
-/// derivatives (δq = ½ q ⊗ (0, θ) for each direction).
-NodeState node_state(const RodConfiguration& c, int i) {
-  NodeState state;
-  const Eigen::Quaterniond q(c.R[i]);
-  state.y << q.w(), q.x(), q.y(), q.z(), c.p[i], c.n[i], c.m[i], 0.0;
-  state.Y.setZero();
-  for (int j = 0; j < 6; ++j) {
-    const Eigen::Vector3d theta = c.dtheta_dw[i].col(j);
-    const Eigen::Quaterniond dq =
-        q * Eigen::Quaterniond(0.0, 0.5 * theta.x(), 0.5 * theta.y(), 0.5 * theta.z());
-    state.Y(j, Slot::q) = dq.w();
-    state.Y.block<1, 3>(j, Slot::q + 1) = dq.vec().transpose();
-  }
-  state.Y.middleCols<3>(Slot::p) = c.dp_dw[i].transpose();
-  state.Y.middleCols<3>(Slot::n) = c.dn_dw[i].transpose();
-  state.Y.middleCols<3>(Slot::m) = c.dm_dw[i].transpose();
-  return state;
-}
-
-/// Evaluates J̃ between nodes by one Runge–Kutta step from node i.
+/// Evaluates J̃ between nodes by re-entering the integration at node i.
 class JacobianBetweenNodes {
  public:
   JacobianBetweenNodes(const ClampedRod& rod,
                        const RodConfiguration& c,
                        const ScaledJacobian& scaled)
-      : ode_(rod), c_(c), scaled_(scaled) {}
+      : rod_(rod), c_(c), scaled_(scaled) {}
 
   Matrix6d at(int i, double s) const {
-    NodeState state = node_state(c_, i);
-    detail::OdePoint start;
-    detail::Matrix63d theta;
-    detail::rk4_step<true>(ode_, s - c_.s[i], state, start, theta);
-    const double q_scale = 2.0 / state.y.segment<4>(Slot::q).squaredNorm();
-    const detail::Matrix63d theta_s =
-        detail::body_rotation_tangent(state.y.segment<4>(Slot::q), q_scale, state.Y);
-    return scaled_(state.Y.middleCols<3>(Slot::p).transpose(), theta_s.transpose(),
-                   detail::rotation_of(state.y.segment<4>(Slot::q), q_scale), s);
+    const PoseDerivatives d = pose_between_nodes(rod_, c_, i, s);
+    return scaled_(d.dp_dw, d.dtheta_dw, d.pose.rotation, s);
   }
 
  private:
-  detail::CosseratOde ode_;
+  const ClampedRod& rod_;
   const RodConfiguration& c_;
   const ScaledJacobian& scaled_;
 };
@@ -214,6 +205,27 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   // with EIx = EIy, which can turn about the line of its clamps at no cost): neutral, not shown
   // stable, and not unstable either.
   if (conjugate && *conjugate >= rod.properties.length * (1.0 - 1e-9)) report.degenerate = true;
+  return report;
+}
+
+StabilityReport assess_stability(const ClampedRod& rod,
+                                 const RodConfiguration& c,
+                                 const TipCondition& tip) {
+  StabilityReport report = assess_stability(rod, c);
+  std::array<bool, 6> free{};
+  Eigen::Matrix3d grasp = Eigen::Matrix3d::Identity();
+  if (std::holds_alternative<FreeTip>(tip)) free.fill(true);
+  if (const auto* grasped = std::get_if<GraspedTip>(&tip)) {
+    free = grasped->released;
+    grasp = grasped->pose.rotation;
+  }
+  const bool any_free = std::find(free.begin(), free.end(), true) != free.end();
+  if (!any_free || !report.stable) return report;
+  constexpr double kNeutral = 1e-9;  // |λ| below this: a direction of (nearly) zero stiffness
+  const double lambda = tip_stiffness_eigenvalue(rod, c, grasp, free);
+  report.tip_stiffness_eigenvalue = lambda;
+  report.stable = lambda > kNeutral;
+  report.degenerate = !(std::abs(lambda) > kNeutral);  // NaN included
   return report;
 }
 

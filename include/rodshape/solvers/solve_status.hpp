@@ -11,6 +11,9 @@ enum class SolveStatus {
   IterationLimit,  // max_iterations reached first
   Diverged,        // the residual or the iterate became non-finite, or grew without bound
   Singular,        // the Jacobian lost rank and no step reduced the residual
+  NonFinite,       // the residual looked converged but the shape is not finite (NaN or ±inf)
+  DiscretisationTooCoarse,  // the residual met the tolerance but the integration error estimate
+                            // exceeds the tolerance, even with the most sub-steps allowed
 };
 
 std::string to_string(SolveStatus status);
