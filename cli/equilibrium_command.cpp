@@ -46,13 +46,13 @@ class EquilibriumCommand final : public Command {
     ShootingOptions options = task.options;
     options.output_derivatives = Derivatives::AllNodes;
 
-    const ShootingSolution solution =
+    const ShootingResult solution =
         solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
     const ShootingSummary& summary = solution.summary;
     ClampedRod solved_rod = task.rod;  // with the sub-steps the solver needed
     solved_rod.substeps = summary.substeps;
 
-    std::optional<StabilityReport> stability;
+    std::optional<StabilityResult> stability;
     if (summary.converged()) {
       // A pose the user holds the tip at must not ask the model for more than it can say.
       if (!std::holds_alternative<FreeTip>(task.tip))

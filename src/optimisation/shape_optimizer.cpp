@@ -208,14 +208,14 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
 
 }  // namespace
 
-ShapeSolution optimise_shape(ShapeProblem& problem,
+ShapeResult optimise_shape(ShapeProblem& problem,
                              const BaseWrench& guess,
                              const ShapeOptimizerOptions& options) {
   options.validate();
   const Vector6d w0 = guess.to_vector();
   detail::require_finite("optimizer.guess", w0);
 
-  ShapeSolution solution;
+  ShapeResult solution;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   detail::apply_options(*app->Options(), options,
                         detail::uses_finite_difference_hessian(options, problem));

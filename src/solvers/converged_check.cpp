@@ -15,7 +15,7 @@ namespace {
 /// residual is above the tolerance; else refreshes residual_norm from the configuration.
 bool confirm_residual(const TipCondition& tip,
                       const ShootingOptions& options,
-                      ShootingSolution& solution) {
+                      ShootingResult& solution) {
   ShootingSummary& summary = solution.summary;
   const Vector6d r = shooting_residual(tip, solution.configuration);
   if (!solution.configuration.finite() || !r.allFinite()) {
@@ -58,7 +58,7 @@ void add_counts(ShootingSummary& total, const ShootingSummary& part) {
 void confirm_converged(const ClampedRod& rod,
                        const TipCondition& tip,
                        const ShootingOptions& options,
-                       ShootingSolution& solution) {
+                       ShootingResult& solution) {
   ShootingSummary& summary = solution.summary;
   summary.substeps = rod.substeps;
   if (!summary.converged() || !confirm_residual(tip, options, solution)) return;
@@ -83,7 +83,7 @@ void confirm_converged(const ClampedRod& rod,
                                      options.integration_tolerance, options.max_substeps);
     ShootingOptions inner = options;
     inner.integration_tolerance = std::numeric_limits<double>::infinity();
-    ShootingSolution again = solve_equilibrium(refined, tip, solution.base_wrench, inner);
+    ShootingResult again = solve_equilibrium(refined, tip, solution.base_wrench, inner);
     add_counts(summary, again.summary);
     summary.substeps = refined.substeps;
     solution.base_wrench = again.base_wrench;

@@ -16,6 +16,6 @@ namespace rodshape::detail {
 void confirm_converged(const ClampedRod& rod,
                        const TipCondition& tip,
                        const ShootingOptions& options,
-                       ShootingSolution& solution);
+                       ShootingResult& solution);
 
 }  // namespace rodshape::detail

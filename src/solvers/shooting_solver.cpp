@@ -343,7 +343,7 @@ struct Homotopy {
 
 }  // namespace
 
-ShootingSolution solve_equilibrium(const ClampedRod& rod,
+ShootingResult solve_equilibrium(const ClampedRod& rod,
                                    const TipCondition& tip,
                                    const BaseWrench& guess,
                                    const ShootingOptions& options) {
@@ -353,7 +353,7 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
   detail::require_finite("initial_wrench.force", guess.force);
   detail::require_finite("initial_wrench.moment", guess.moment);
 
-  ShootingSolution solution;
+  ShootingResult solution;
   ShootingSummary& summary = solution.summary;
   RodConfiguration work;
   work.resize(rod.nodes(), Derivatives::Tip);

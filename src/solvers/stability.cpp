@@ -110,7 +110,7 @@ class JacobianBetweenNodes {
 
 }  // namespace
 
-StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
   if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
     throw InputError(
         "assess_stability needs a configuration integrated with Derivatives::AllNodes");
@@ -127,7 +127,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     det[i] = J.determinant();
   }
 
-  StabilityReport report;
+  StabilityResult report;
   report.tip_singular_value = sigma[N];
   report.min_singular_value = *std::min_element(sigma.begin() + 1, sigma.end());
   int singular_nodes = 0;
@@ -208,10 +208,10 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   return report;
 }
 
-StabilityReport assess_stability(const ClampedRod& rod,
+StabilityResult assess_stability(const ClampedRod& rod,
                                  const RodConfiguration& c,
                                  const TipCondition& tip) {
-  StabilityReport report = assess_stability(rod, c);
+  StabilityResult report = assess_stability(rod, c);
   std::array<bool, 6> free{};
   Eigen::Matrix3d grasp = Eigen::Matrix3d::Identity();
   if (std::holds_alternative<FreeTip>(tip)) free.fill(true);

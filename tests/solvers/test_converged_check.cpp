@@ -26,7 +26,7 @@ using std::numbers::pi;
 /// configuration) and integration error (re-estimated) within the tolerances.
 void expect_converged_means_accurate(const ClampedRod& rod,
                                      const TipCondition& tip,
-                                     const ShootingSolution& solution,
+                                     const ShootingResult& solution,
                                      const ShootingOptions& options = {}) {
   if (!solution.summary.converged()) return;
   ClampedRod solved = rod;
@@ -74,7 +74,7 @@ TEST(ConvergedCheck, LoadsTheIssueFoundNeverConvergeToANonFiniteShape) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
-    const ShootingSolution solution = solve_equilibrium(c.rod, c.tip);
+    const ShootingResult solution = solve_equilibrium(c.rod, c.tip);
     expect_converged_means_accurate(c.rod, c.tip, solution);
     if (!solution.summary.converged()) {
       EXPECT_FALSE(solution.summary.message.empty());
@@ -99,7 +99,7 @@ TEST(ConvergedCheck, CoilingMomentIsNotConvergedWithoutSubsteps) {
   const CoiledBand band(24);
   ShootingOptions options;
   options.max_substeps = 1;
-  const ShootingSolution solution = solve_equilibrium(band.rod, band.tip, {}, options);
+  const ShootingResult solution = solve_equilibrium(band.rod, band.tip, {}, options);
   EXPECT_EQ(solution.summary.status, SolveStatus::DiscretisationTooCoarse)
       << solution.summary.brief() << " " << solution.summary.message;
   EXPECT_GT(solution.summary.integration_error, options.integration_tolerance);
@@ -109,7 +109,7 @@ TEST(ConvergedCheck, CoilingMomentIsNotConvergedWithoutSubsteps) {
 TEST(ConvergedCheck, CoilingMomentConvergesWithSubstepsToTheAnalyticArc) {
   const CoiledBand band(24);
   const ShootingOptions options;  // max_substeps = 64
-  const ShootingSolution solution = solve_equilibrium(band.rod, band.tip, {}, options);
+  const ShootingResult solution = solve_equilibrium(band.rod, band.tip, {}, options);
   ASSERT_TRUE(solution.summary.converged()) << solution.summary.message;
   EXPECT_GT(solution.summary.substeps, 1);
   EXPECT_LE(solution.summary.integration_error, options.integration_tolerance);
@@ -153,7 +153,7 @@ TEST(ModelValidity, TipHeldAtTheClampIsRejectedAsCompression) {
   // equilibrium there squashes it: v_z ≈ 0.
   const ClampedRod rod = testing::rubber_band();
   const ClampedTip tip{Pose{}};
-  const ShootingSolution solution = solve_equilibrium(rod, tip);
+  const ShootingResult solution = solve_equilibrium(rod, tip);
   ASSERT_TRUE(solution.summary.converged()) << solution.summary.message;
   try {
     check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{}, "tip");
@@ -172,7 +172,7 @@ TEST(ModelValidity, TipHeldBeyondTheRodsLengthIsRejectedAsStretching) {
   Pose far;
   far.position = {0, 0, 1.0};
   const ClampedTip tip{far};
-  const ShootingSolution solution = solve_equilibrium(rod, tip);
+  const ShootingResult solution = solve_equilibrium(rod, tip);
   ASSERT_TRUE(solution.summary.converged()) << solution.summary.message;
   EXPECT_NEAR(strain_extremes(rod.properties, solution.configuration).max_axial, 1.0 / 0.29 - 1.0,
               1e-6);
@@ -196,7 +196,7 @@ TEST(ModelValidity, TheBundledBandPoseIsAccepted) {
   Pose pose;
   pose.position = {0.12, 0.0, 0.22};
   pose.rotation = Eigen::AngleAxisd(pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  const ShootingSolution solution = solve_equilibrium(rod, ClampedTip{pose});
+  const ShootingResult solution = solve_equilibrium(rod, ClampedTip{pose});
   ASSERT_TRUE(solution.summary.converged());
   EXPECT_NO_THROW(check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{}));
 }

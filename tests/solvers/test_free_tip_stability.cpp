@@ -21,10 +21,10 @@ namespace {
 
 using std::numbers::pi;
 
-StabilityReport free_tip_verdict(const ClampedRod& rod,
+StabilityResult free_tip_verdict(const ClampedRod& rod,
                                  const FreeTip& tip,
                                  const ShootingOptions& options = {}) {
-  const ShootingSolution solution = solve_equilibrium(rod, tip, {}, options);
+  const ShootingResult solution = solve_equilibrium(rod, tip, {}, options);
   EXPECT_TRUE(solution.summary.converged()) << solution.summary.message;
   return assess_stability(rod, solution.configuration, tip);
 }
@@ -33,7 +33,7 @@ TEST(FreeTipStability, UnloadedBandIsStableWithUnitTipStiffness) {
   // The unloaded straight rod is the reference: its tip stiffness is K0, eigenvalue 1. RK4 is exact
   // on its (polynomial) variational equations, so only round-off remains.
   const ClampedRod rod = testing::rubber_band();
-  const StabilityReport report = free_tip_verdict(rod, FreeTip{});
+  const StabilityResult report = free_tip_verdict(rod, FreeTip{});
   EXPECT_TRUE(report.stable);
   EXPECT_FALSE(report.degenerate);
   ASSERT_TRUE(report.tip_stiffness_eigenvalue.has_value());
@@ -42,7 +42,7 @@ TEST(FreeTipStability, UnloadedBandIsStableWithUnitTipStiffness) {
 
 TEST(FreeTipStability, TransverseTipLoadIsStable) {
   const ClampedRod rod = testing::rubber_band();
-  const StabilityReport report = free_tip_verdict(rod, FreeTip{{{1.0, 0.3, 0}, {0, 0, 0.01}}});
+  const StabilityResult report = free_tip_verdict(rod, FreeTip{{{1.0, 0.3, 0}, {0, 0, 0.01}}});
   EXPECT_TRUE(report.stable);
   EXPECT_GT(*report.tip_stiffness_eigenvalue, 0.0);
 }
@@ -56,7 +56,7 @@ TEST(FreeTipStability, StraightColumnUnderDeadLoadBucklesAtEulersClampedFreeLoad
     // The straight shape is the equilibrium: n = (0, 0, -P) along the whole rod.
     const RodConfiguration c =
         integrate(rod, BaseWrench{tip.wrench.force, {0, 0, 0}}, Derivatives::AllNodes);
-    const StabilityReport report = assess_stability(rod, c, tip);
+    const StabilityResult report = assess_stability(rod, c, tip);
     EXPECT_EQ(report.stable, factor < 1.0);
     EXPECT_FALSE(report.degenerate);
     // The held rod is stable up to 4 P_cr: the tip stiffness decides.
@@ -95,7 +95,7 @@ TEST(FreeTipStability, WireStandingUpAgainstGravityIsUnstableBeyondGreenhillsLen
     const BaseWrench w{{0, 0, q * length}, {0, 0, 0}};
     const RodConfiguration c = integrate(rod, w, Derivatives::AllNodes);
     ASSERT_LE(c.tip_wrench().force.norm(), 1e-12 * q * length);
-    const StabilityReport report = assess_stability(rod, c, FreeTip{});
+    const StabilityResult report = assess_stability(rod, c, FreeTip{});
     EXPECT_EQ(report.stable, length < l_c);
   }
 }
@@ -112,7 +112,7 @@ TEST(FreeTipStability, VerdictDoesNotDependOnTheStiffnessScale) {
     const FreeTip tip{{{lambda * P, 0, -lambda * 0.5}, {0, 0, 0}}};
     ShootingOptions options;  // the residual in N, N·m: its tolerance scales with the loads
     options.residual_tolerance = 1e-10 * lambda;
-    const StabilityReport report = free_tip_verdict(rod, tip, options);
+    const StabilityResult report = free_tip_verdict(rod, tip, options);
     EXPECT_TRUE(report.stable) << lambda;
     ASSERT_TRUE(report.tip_stiffness_eigenvalue.has_value());
     if (decade == -6) reference = *report.tip_stiffness_eigenvalue;

@@ -166,7 +166,7 @@ TEST(RandomSweep, ConvergedMeansFiniteAndAccurateAndNothingIsUnbounded) {
     const ClampedRod& rod = rods[sweep.index(static_cast<int>(rods.size()))];
     const TipCondition tip = sweep.tip(rod);
     try {
-      const ShootingSolution solution = solve_equilibrium(rod, tip, {}, options);
+      const ShootingResult solution = solve_equilibrium(rod, tip, {}, options);
       const ShootingSummary& summary = solution.summary;
       EXPECT_LE(summary.integrations, bound) << "draw " << k << ": " << summary.brief();
       EXPECT_NE(summary.status, SolveStatus::NotRun);

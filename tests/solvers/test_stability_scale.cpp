@@ -25,8 +25,8 @@ ClampedTip band_pose() {
   return ClampedTip{pose};
 }
 
-StabilityReport verdict(const ClampedRod& rod, const TipCondition& tip) {
-  const ShootingSolution solution = solve_equilibrium(rod, tip);
+StabilityResult verdict(const ClampedRod& rod, const TipCondition& tip) {
+  const ShootingResult solution = solve_equilibrium(rod, tip);
   EXPECT_TRUE(solution.summary.converged()) << solution.summary.message;
   return assess_stability(rod, solution.configuration, tip);
 }
@@ -38,7 +38,7 @@ TEST(StabilityScale, BandPoseIsStableForYoungsModulusOverFourteenDecades) {
     SCOPED_TRACE(E);
     ClampedRod rod = testing::rubber_band();
     rod.properties.K_tra = Eigen::Vector3d(E / 3.0, E / 3.0, E) * 4e-4;  // GA, GA, EA; ν = 0.5
-    const StabilityReport report = verdict(rod, tip);
+    const StabilityResult report = verdict(rod, tip);
     EXPECT_TRUE(report.stable);
     EXPECT_FALSE(report.degenerate);
     EXPECT_FALSE(report.conjugate_point_s.has_value());
@@ -48,7 +48,7 @@ TEST(StabilityScale, BandPoseIsStableForYoungsModulusOverFourteenDecades) {
 TEST(StabilityScale, VerdictAndMarginsDoNotDependOnTheOverallStiffnessScale) {
   // Every stiffness times λ: the same shape (no loads), the base wrench times λ; J̃ is the same.
   const ClampedTip tip = band_pose();
-  const StabilityReport reference = verdict(testing::rubber_band(), tip);
+  const StabilityResult reference = verdict(testing::rubber_band(), tip);
   ASSERT_TRUE(reference.stable);
   for (int decade = -6; decade <= 6; ++decade) {
     const double lambda = std::pow(10.0, decade);
@@ -56,7 +56,7 @@ TEST(StabilityScale, VerdictAndMarginsDoNotDependOnTheOverallStiffnessScale) {
     ClampedRod rod = testing::rubber_band();
     rod.properties.K_rot *= lambda;
     rod.properties.K_tra *= lambda;
-    const StabilityReport report = verdict(rod, tip);
+    const StabilityResult report = verdict(rod, tip);
     EXPECT_TRUE(report.stable);
     EXPECT_NEAR(report.min_singular_value, reference.min_singular_value,
                 1e-6 * reference.min_singular_value);

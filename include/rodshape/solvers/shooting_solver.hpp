@@ -64,7 +64,7 @@ struct ShootingSummary {
   std::string brief() const;
 };
 
-struct ShootingSolution {
+struct ShootingResult {
   ShootingSummary summary;
   BaseWrench base_wrench;          // the last iterate (the solution when converged)
   RodConfiguration configuration;  // integrated at base_wrench, with options.output_derivatives
@@ -73,7 +73,7 @@ struct ShootingSolution {
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
 /// Throws InputError for bad input (rod, tip condition, options); a solve that does not converge is
 /// reported in the summary's status, never thrown.
-ShootingSolution solve_equilibrium(const ClampedRod& rod,
+ShootingResult solve_equilibrium(const ClampedRod& rod,
                                    const TipCondition& tip,
                                    const BaseWrench& guess = {},
                                    const ShootingOptions& options = {});

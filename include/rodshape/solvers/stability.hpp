@@ -13,7 +13,7 @@
 
 namespace rodshape {
 
-struct StabilityReport {
+struct StabilityResult {
   bool stable = false;
   /// Where the first conjugate point lies (J(s) singular), if any.
   std::optional<double> conjugate_point_s;
@@ -38,13 +38,13 @@ struct StabilityReport {
 /// `configuration` must come from integrate(rod, ..., Derivatives::AllNodes). A sign change of
 /// det J̃ between nodes is a conjugate point; so is a local minimum of σ_min that a finer search
 /// inside its two intervals drives below 1e-6 (a double root, as in a round rod, keeps the sign).
-StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& configuration);
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& configuration);
 
 /// The test for the boundary condition `tip`: a clamped tip as above; a free tip, or a grasped tip
 /// with released axes, also needs the tip stiffness over its free directions positive definite
 /// (tip_stiffness.hpp): stable iff no conjugate point and tip_stiffness_eigenvalue > 1e-9;
 /// |eigenvalue| ≤ 1e-9 (a neutral direction) is degenerate.
-StabilityReport assess_stability(const ClampedRod& rod,
+StabilityResult assess_stability(const ClampedRod& rod,
                                  const RodConfiguration& configuration,
                                  const TipCondition& tip);
 
