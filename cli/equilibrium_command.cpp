@@ -9,6 +9,7 @@
 
 #include "exit_code.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/model_validity.hpp"
@@ -57,7 +58,7 @@ class EquilibriumCommand final : public Command {
       // A pose the user holds the tip at must not ask the model for more than it can say.
       if (!std::holds_alternative<FreeTip>(task.tip))
         check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
-                             "tip");
+                             "ClampedTip.pose", "ShootingOptions.strain_limits");
       stability = assess_stability(solved_rod, solution.configuration, task.tip);
     }
 
@@ -75,7 +76,7 @@ class EquilibriumCommand final : public Command {
 
     if (!summary.converged()) {
       std::cerr << "error: " << task_path_ << ": the solver did not converge: " << summary.brief();
-      if (!summary.message.empty()) std::cerr << " (" << summary.message << ")";
+      if (!summary.message.empty()) std::cerr << " (" << fields_in_task_names(summary.message) << ")";
       std::cerr << "\n";
       return kNotConverged;
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <variant>
+#include <sstream>
 #include <vector>
 
 #include "rodshape/core/pose_between_nodes.hpp"
@@ -227,6 +228,24 @@ StabilityResult assess_stability(const ClampedRod& rod,
   report.stable = lambda > kNeutral;
   report.degenerate = !(std::abs(lambda) > kNeutral);  // NaN included
   return report;
+}
+
+std::string StabilityResult::brief() const {
+  std::ostringstream out;
+  out.precision(3);
+  if (stable) {
+    out << "stable (min σ̃ = " << min_singular_value << ", at the tip " << tip_singular_value << ")";
+  } else if (conjugate_point_s) {
+    out << "unstable: conjugate point at s = " << *conjugate_point_s << " m";
+  } else if (tip_stiffness_eigenvalue && !degenerate) {
+    out << "unstable: the free tip's stiffness has eigenvalue " << *tip_stiffness_eigenvalue
+        << " <= 0 (it can move with no restoring wrench)";
+  } else if (degenerate) {
+    out << "not shown stable: degenerate (J singular along the rod or only at the tip)";
+  } else {
+    out << "not shown stable (min σ̃ = " << min_singular_value << ")";
+  }
+  return out.str();
 }
 
 }  // namespace rodshape

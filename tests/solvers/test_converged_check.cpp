@@ -156,12 +156,13 @@ TEST(ModelValidity, TipHeldAtTheClampIsRejectedAsCompression) {
   const ShootingResult solution = solve_equilibrium(rod, tip);
   ASSERT_TRUE(solution.summary.converged()) << solution.summary.message;
   try {
-    check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{}, "tip");
+    check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{},
+                         "ClampedTip.pose", "ShootingOptions.strain_limits");
     ADD_FAILURE() << "accepted; strains: axial "
                   << strain_extremes(rod.properties, solution.configuration).max_axial;
   } catch (const InputError& error) {
     const std::string message = error.what();
-    EXPECT_EQ(message.rfind("tip: ", 0), 0u) << message;
+    EXPECT_EQ(error.field(), "ClampedTip.pose") << message;
     EXPECT_NE(message.find("compressed"), std::string::npos) << message;
   }
 }
@@ -177,18 +178,19 @@ TEST(ModelValidity, TipHeldBeyondTheRodsLengthIsRejectedAsStretching) {
   EXPECT_NEAR(strain_extremes(rod.properties, solution.configuration).max_axial, 1.0 / 0.29 - 1.0,
               1e-6);
   try {
-    check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{}, "initial.tip");
+    check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{},
+                         "PlanProblem.initial.tip", "PlanProblem.validity");
     ADD_FAILURE() << "accepted";
   } catch (const InputError& error) {
     const std::string message = error.what();
-    EXPECT_EQ(message.rfind("initial.tip: ", 0), 0u) << message;
+    EXPECT_EQ(error.field(), "PlanProblem.initial.tip") << message;
     EXPECT_NE(message.find("stretched"), std::string::npos) << message;
-    EXPECT_NE(message.find("max_axial_strain"), std::string::npos) << message;
+    EXPECT_NE(message.find("PlanProblem.validity.max_axial_strain"), std::string::npos) << message;
   }
   // The limit is the task's: a looser one accepts it.
   ModelValidityLimits loose;
   loose.max_axial_strain = 3.0;
-  EXPECT_NO_THROW(check_model_validity(rod.properties, solution.configuration, loose));
+  EXPECT_NO_THROW(check_model_validity(rod.properties, solution.configuration, loose, "tip", "l"));
 }
 
 TEST(ModelValidity, TheBundledBandPoseIsAccepted) {
@@ -198,7 +200,8 @@ TEST(ModelValidity, TheBundledBandPoseIsAccepted) {
   pose.rotation = Eigen::AngleAxisd(pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
   const ShootingResult solution = solve_equilibrium(rod, ClampedTip{pose});
   ASSERT_TRUE(solution.summary.converged());
-  EXPECT_NO_THROW(check_model_validity(rod.properties, solution.configuration, ModelValidityLimits{}));
+  EXPECT_NO_THROW(check_model_validity(rod.properties, solution.configuration,
+                                       ModelValidityLimits{}, "tip", "l"));
 }
 
 TEST(ModelValidity, LimitsAreValidated) {

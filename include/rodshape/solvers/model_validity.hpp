@@ -15,17 +15,20 @@ struct ModelValidityLimits {
   double max_axial_strain = 0.5;  // max |v_z - ṽ_z|
   double max_shear_strain = 0.5;  // max |v_x - ṽ_x|, |v_y - ṽ_y|
 
-  /// Throws InputError naming the field when a limit is not finite and > 0.
-  void validate() const;
+  /// Throws InputError naming `owner`.max_axial_strain etc. when a limit is not finite and > 0;
+  /// `owner` is where the limits live, e.g. "ShootingOptions.strain_limits".
+  void validate(const std::string& owner = "ModelValidityLimits") const;
 };
 
-/// Throws InputError, "<field>: ...", when `configuration` (an equilibrium of a rod with
-/// `properties`) has v_z ≤ 0 at a node or a strain beyond `limits`: the pose or load named by
-/// `field` asks the model for more than it can say. Meant for poses a user asks the rod to be held
-/// at (an equilibrium task's tip, a plan's initial tip), not for intermediate solves.
+/// Throws InputError(pose_field, ": the rod would be …") when `configuration` (an equilibrium of a
+/// rod with `properties`) has v_z ≤ 0 at a node or a strain beyond `limits` (named in the message
+/// as `limits_owner`.max_axial_strain etc.): the pose named by `pose_field` asks the model for
+/// more than it can say. Meant for poses a user asks the rod to be held at (an equilibrium task's
+/// tip, a plan's initial tip), not for intermediate solves.
 void check_model_validity(const RodProperties& properties,
                           const RodConfiguration& configuration,
                           const ModelValidityLimits& limits,
-                          const std::string& field = "tip");
+                          const std::string& pose_field,
+                          const std::string& limits_owner);
 
 }  // namespace rodshape

@@ -1,4 +1,6 @@
-// solve_status.hpp: how an iterative solve ended. Never collapsed to a bool.
+// solve_status.hpp: how an iterative solve ended, one vocabulary for every solver (shooting,
+// shape optimisation, inverse kinematics). Never collapsed to a bool; the raw status of an external
+// solver (IPOPT's ApplicationReturnStatus) is kept beside it in the solver's own details.
 #pragma once
 
 #include <string>
@@ -10,10 +12,15 @@ enum class SolveStatus {
   Converged,       // the residual met the tolerance
   IterationLimit,  // max_iterations reached first
   Diverged,        // the residual or the iterate became non-finite, or grew without bound
-  Singular,        // the Jacobian lost rank and no step reduced the residual
-  NonFinite,       // the residual looked converged but the shape is not finite (NaN or ±inf)
+  Singular,        // the Jacobian lost rank and no step reduced the residual (or, in IPOPT, the
+                   // step computation failed)
+  Infeasible,      // the constraints admit no point (IPOPT: infeasible problem, restoration failed)
+  ConstraintViolated,  // the iteration stopped, but the final point violates the constraints by
+                       // more than their tolerance (judged on the problem as posed)
+  OutOfReach,          // the target is beyond what the solver's unknowns can reach (IK: the arm)
+  NonFinite,           // the residual looked converged but the shape is not finite (NaN, ±inf)
   DiscretisationTooCoarse,  // the residual met the tolerance but the integration error estimate
-                            // exceeds the tolerance, even with the most sub-steps allowed
+                            // exceeds its tolerance, even with the most sub-steps allowed
 };
 
 std::string to_string(SolveStatus status);

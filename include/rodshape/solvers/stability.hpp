@@ -33,6 +33,9 @@ struct StabilityResult {
   /// the unloaded rod; ≤ 0 unstable). Empty for a held tip, or when the conjugate-point test has
   /// already decided (unstable or degenerate).
   std::optional<double> tip_stiffness_eigenvalue;
+  /// One line: "stable (min σ̃ = 0.43, at the tip 0.61)", "unstable: conjugate point at s = 0.12 m"
+  /// or "not shown stable: degenerate (…)".
+  std::string brief() const;
 };
 
 /// `configuration` must come from integrate(rod, ..., Derivatives::AllNodes). A sign change of
