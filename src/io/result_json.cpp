@@ -6,7 +6,6 @@
 
 #include "io/json_format.hpp"
 #include "rodshape/core/rod_properties.hpp"
-#include "rodshape/core/strain_extremes.hpp"
 #include "rodshape/solvers/solve_status.hpp"
 
 namespace rodshape {
@@ -29,15 +28,7 @@ std::string equilibrium_result_json(const ShootingResult& solution,
   result["integration_error"] = io_detail::json_number(summary.integration_error);
   result["substeps"] = summary.substeps;
   result.update(io_detail::configuration_json(solution.configuration, solution.base_wrench,
-                                              stability, rod.properties.model));
-  if (stability && stability->tip_stiffness_eigenvalue)
-    result["stability"]["tip_stiffness_eigenvalue"] =
-        io_detail::json_number(*stability->tip_stiffness_eigenvalue);
-  // The largest strains, to judge the shape against the linear law's range (docs/task-file.md).
-  const StrainExtremes strain = strain_extremes(rod.properties, solution.configuration);
-  result["strain"] = {{"max_axial", io_detail::json_number(strain.max_axial)},
-                      {"max_shear", io_detail::json_number(strain.max_shear)},
-                      {"max_curvature", io_detail::json_number(strain.max_curvature)}};
+                                              stability, rod.properties));
   return io_detail::format_json(result);
 }
 

@@ -91,8 +91,9 @@ TEST(FreeTipStability, WireStandingUpAgainstGravityIsUnstableBeyondGreenhillsLen
   for (const double length : {0.8 * l_c, 1.2 * l_c, 1.0}) {
     SCOPED_TRACE(length);
     const ClampedRod rod = upright_wire(length, radius);
-    // Straight up is an equilibrium: the clamp carries the weight, n(0) = q L e_z.
-    const BaseWrench w{{0, 0, q * length}, {0, 0, 0}};
+    // Straight up is an equilibrium: the rod above presses on the clamp, n(0) = -q L e_z
+    // (n' = -f, n(L) = 0).
+    const BaseWrench w{{0, 0, -q * length}, {0, 0, 0}};
     const RodConfiguration c = integrate(rod, w, Derivatives::AllNodes);
     ASSERT_LE(c.tip_wrench().force.norm(), 1e-12 * q * length);
     const StabilityResult report = assess_stability(rod, c, FreeTip{});

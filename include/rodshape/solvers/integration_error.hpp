@@ -8,13 +8,14 @@
 
 namespace rodshape {
 
-/// Integrates `rod` again at `base_wrench` with twice its sub-steps and compares the nodes with
-/// `configuration` (integrated from the same rod and wrench). Classical Runge–Kutta is of order 4,
-/// so the coarse error is 16/15 of the difference. Returned dimensionless, the largest over the
-/// nodes of: |Δp| / L, the angle between the two rotations (rad), and |Δm| / (EI / L) (the
-/// curvature error times L). NaN or +inf when either integration is not finite.
-/// Cost: one integration without derivatives at twice the steps (about 2/3 of one solve iteration
-/// with derivatives); for the end of a solve, not its inner loop.
+/// Integrates `rod` again at `base_wrench` with steps twice as long (half its sub-steps, or half
+/// its intervals, comparing every other node; twice as short when both counts are odd) and compares
+/// the nodes with `configuration` (integrated from the same rod and wrench). Classical Runge–Kutta
+/// is of order 4, so the error of `configuration` is 1/15 of the difference (16/15 against the
+/// finer run). Returned dimensionless, the largest over the compared nodes of: |Δp| / L, the angle
+/// between the two rotations (rad), and |Δm| / (EI / L) (the curvature error times L); +inf when
+/// either integration is not finite. Cost: one integration without derivatives at half the steps
+/// (about a sixth of a solve iteration with derivatives); for the end of a solve, not its loop.
 double integration_error_estimate(const ClampedRod& rod,
                                   const BaseWrench& base_wrench,
                                   const RodConfiguration& configuration);
