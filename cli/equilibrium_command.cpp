@@ -56,9 +56,15 @@ class EquilibriumCommand final : public Command {
     std::optional<StabilityResult> stability;
     if (summary.converged()) {
       // A pose the user holds the tip at must not ask the model for more than it can say.
-      if (!std::holds_alternative<FreeTip>(task.tip))
-        check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
-                             "ClampedTip.pose", "ShootingOptions.strain_limits");
+      if (!std::holds_alternative<FreeTip>(task.tip)) {
+        try {
+          check_model_validity(solved_rod.properties, solution.configuration,
+                               options.strain_limits, "ClampedTip.pose",
+                               "ShootingOptions.strain_limits");
+        } catch (const InputError& error) {
+          throw InputError(task_path_ + ": " + in_task_names(error));
+        }
+      }
       stability = assess_stability(solved_rod, solution.configuration, task.tip);
     }
 

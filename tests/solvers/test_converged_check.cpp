@@ -10,6 +10,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/strain_extremes.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/integration_error.hpp"
 #include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
@@ -93,6 +94,33 @@ struct CoiledBand {
     tip.wrench.moment = {testing::kBandEI * kappa, 0, 0};
   }
 };
+
+TEST(ConvergedCheck, FollowedPathsEndOnFiniteAccurateShapes) {
+  // The continuation the planner uses: the band's free tip loaded from 0 to 1e4 N in 4 substeps.
+  // Each substep is a solve_equilibrium, so each accepted state obeys its invariant, and so does
+  // the end of a path followed to the end.
+  const ClampedRod rod = testing::rubber_band();
+  for (const double force : {1e4, 1e6}) {
+    SCOPED_TRACE(force);
+    EquilibriumPath path;
+    path.tip_at = [force](double sigma) { return FreeTip{{{sigma * force, 0, 0}, {0, 0, 0}}}; };
+    FollowOptions options;
+    options.substeps = 4;
+    const FollowResult followed = follow_equilibrium(rod, path, {}, options);
+    for (const FollowedState& state : followed.states) {
+      EXPECT_TRUE(state.solve.converged());
+      EXPECT_LE(state.solve.integration_error, options.shooting.integration_tolerance);
+    }
+    if (followed.followed()) {
+      EXPECT_TRUE(followed.configuration.finite());
+      expect_converged_means_accurate(rod, path.tip_at(1.0),
+                                      ShootingResult{followed.states.back().solve, followed.base_wrench,
+                                                     followed.configuration});
+    } else {
+      EXPECT_FALSE(followed.message.empty());
+    }
+  }
+}
 
 TEST(ConvergedCheck, CoilingMomentIsNotConvergedWithoutSubsteps) {
   // 24 turns on 100 intervals: κh = 1.5 rad per step, RK4's angle error κL (κh)⁴/1920 ≈ 0.4 rad.
