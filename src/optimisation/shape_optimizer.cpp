@@ -244,8 +244,12 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   solution.configuration = problem.configuration();
   solution.cost = problem.breakdown();
   solution.max_constraint_violation = best.violation;
-  if (options.assess_stability && std::isfinite(best.cost))
-    solution.stability = assess_stability(problem.rod(), solution.configuration);
+  if (options.assess_stability && std::isfinite(best.cost)) {
+    // Released grasp components leave the tip partly free: their tip stiffness is tested too.
+    solution.stability =
+        assess_stability(problem.rod(), solution.configuration,
+                         GraspedTip{solution.configuration.tip(), problem.grasp().released});
+  }
   solution.ipopt.application_status = static_cast<int>(best.application_status);
   solution.ipopt.application_status_name = detail::application_status_name(best.application_status);
   solution.ipopt.iterations = best.iterations;
