@@ -58,9 +58,8 @@ class EquilibriumCommand final : public Command {
       // A pose the user holds the tip at must not ask the model for more than it can say.
       if (!std::holds_alternative<FreeTip>(task.tip)) {
         try {
-          check_model_validity(solved_rod.properties, solution.configuration,
-                               options.strain_limits, "ClampedTip.pose",
-                               "ShootingOptions.strain_limits");
+          check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
+                               "ClampedTip.pose", "ShootingOptions.strain_limits");
         } catch (const InputError& error) {
           throw InputError(task_path_ + ": " + in_task_names(error));
         }
@@ -82,7 +81,8 @@ class EquilibriumCommand final : public Command {
 
     if (!summary.converged()) {
       std::cerr << "error: " << task_path_ << ": the solver did not converge: " << summary.brief();
-      if (!summary.message.empty()) std::cerr << " (" << fields_in_task_names(summary.message) << ")";
+      if (!summary.message.empty())
+        std::cerr << " (" << fields_in_task_names(summary.message) << ")";
       std::cerr << "\n";
       return kNotConverged;
     }

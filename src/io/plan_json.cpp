@@ -225,10 +225,11 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["target"] = target_object(request.target);
   result["feasibility"] = feasibility_object(plan.feasibility, task.problem.target.points);
   result["final"] = final_object(plan);
-  result["initial"] = plan.initial_configuration.nodes() > 0
-                          ? io_detail::configuration_json(plan.initial_configuration,
-                                                          plan.initial_wrench, std::nullopt, properties)
-                          : Json(nullptr);
+  result["initial"] =
+      plan.initial_configuration.nodes() > 0
+          ? io_detail::configuration_json(plan.initial_configuration, plan.initial_wrench,
+                                          std::nullopt, properties)
+          : Json(nullptr);
   result["initial_points"] = json_vectors(plan.initial_points);
   Json steps = Json::array();
   for (std::size_t k = 0; k < plan.steps.size(); ++k)

@@ -201,7 +201,8 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
   if (r.status == SolveStatus::Singular &&
       map_status(r.application_status) == SolveStatus::Converged)
     out << " exceeds optimizer.constraint_tolerance = " << options.constraint_tolerance;
-  if (r.status == SolveStatus::NonFinite) out << "; the shape is not finite (NaN or infinite values)";
+  if (r.status == SolveStatus::NonFinite)
+    out << "; the shape is not finite (NaN or infinite values)";
   return out.str();
 }
 

@@ -29,8 +29,9 @@ bool confirm_residual(const TipCondition& tip,
   summary.residual_norm = r.lpNorm<Eigen::Infinity>();
   if (summary.residual_norm > options.residual_tolerance) {
     summary.status = SolveStatus::Diverged;
-    summary.message = "the returned configuration's residual |r| = " +
-                      format_value(summary.residual_norm) + " exceeds ShootingOptions.residual_tolerance";
+    summary.message =
+        "the returned configuration's residual |r| = " + format_value(summary.residual_norm) +
+        " exceeds ShootingOptions.residual_tolerance";
     return false;
   }
   return true;
@@ -73,10 +74,12 @@ void confirm_converged(const ClampedRod& rod,
     if (refined.substeps >= options.max_substeps) {
       summary.status = SolveStatus::DiscretisationTooCoarse;
       summary.message = "the integration error estimate " +
-                        format_value(summary.integration_error) + " exceeds ShootingOptions.integration_tolerance = " +
+                        format_value(summary.integration_error) +
+                        " exceeds ShootingOptions.integration_tolerance = " +
                         format_value(options.integration_tolerance) + " with " +
                         std::to_string(refined.substeps) +
-                        " sub-steps per interval (ShootingOptions.max_substeps): use more nodes or a larger max_substeps";
+                        " sub-steps per interval (ShootingOptions.max_substeps): use more nodes or "
+                        "a larger max_substeps";
       return;
     }
     refined.substeps = next_substeps(refined.substeps, summary.integration_error,

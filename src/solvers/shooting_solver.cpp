@@ -6,10 +6,10 @@
 #include <sstream>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "converged_check.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
-#include "converged_check.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "validation.hpp"
@@ -30,10 +30,9 @@ void ShootingOptions::validate() const {
     throw InputError("ShootingOptions.integration_tolerance",
                      " = " + detail::format_value(integration_tolerance) + " must be > 0");
   if (max_substeps < 1 || max_substeps > ClampedRod::kMaxSubsteps)
-    throw InputError("ShootingOptions.max_substeps", " = " + std::to_string(max_substeps) +
-                                                         " must be in [1, " +
-                                                         std::to_string(ClampedRod::kMaxSubsteps) +
-                                                         "]");
+    throw InputError("ShootingOptions.max_substeps",
+                     " = " + std::to_string(max_substeps) + " must be in [1, " +
+                         std::to_string(ClampedRod::kMaxSubsteps) + "]");
   strain_limits.validate("ShootingOptions.strain_limits");
 }
 

@@ -5,8 +5,8 @@
 #include <array>
 #include <cmath>
 #include <optional>
-#include <variant>
 #include <sstream>
+#include <variant>
 #include <vector>
 
 #include "rodshape/core/pose_between_nodes.hpp"
@@ -18,8 +18,8 @@ namespace rodshape {
 namespace {
 
 // A local minimum of σ_min(J̃) that refinement drives below this fraction of σ_min at the
-// neighbouring nodes is a root (a conjugate point). Relative, so that the verdict does not depend on
-// the units or on the ratio of axial to bending stiffness (issue 12).
+// neighbouring nodes is a root (a conjugate point). Relative, so that the verdict does not depend
+// on the units or on the ratio of axial to bending stiffness (issue 12).
 constexpr double kConjugateTolerance = 1e-6;
 
 /// C(s) = d(pose at s)/d(base wrench) of the unloaded straight rod of length s, clamp frame,

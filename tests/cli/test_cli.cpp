@@ -230,8 +230,9 @@ namespace {
 // Issue 12, item 2: loads that "converged" with null (NaN) nodes now exit 3, and a converged
 // result is finite everywhere.
 TEST_F(Cli, LoadsBeyondTheDiscretisationNeverConvergeWithNonFiniteShapes) {
-  const std::string band_tip = "tip:\n  position: [0.12, 0.0, 0.22]\n"
-                               "  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]\n";
+  const std::string band_tip =
+      "tip:\n  position: [0.12, 0.0, 0.22]\n"
+      "  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]\n";
   for (const char* force : {"1e4", "3e4", "1e6"}) {
     SCOPED_TRACE(force);
     const fs::path task = write_task(
@@ -256,16 +257,14 @@ TEST_F(Cli, LoadsBeyondTheDiscretisationNeverConvergeWithNonFiniteShapes) {
 // Issue 12, item 3: the clamped tip at the clamp squashes the band to nothing: bad input.
 TEST_F(Cli, TipHeldAtTheClampIsBadInputNamingTheTip) {
   const fs::path task = write_task(
-      "squashed.yaml",
-      rodshape::testing::replaced_first(band_with("[0.12, 0.0, 0.22]", "[0, 0, 0]"),
-                                        "[0.7071067811865476, 0, 0.7071067811865476, 0]",
-                                        "[1, 0, 0, 0]"));
+      "squashed.yaml", rodshape::testing::replaced_first(
+                           band_with("[0.12, 0.0, 0.22]", "[0, 0, 0]"),
+                           "[0.7071067811865476, 0, 0.7071067811865476, 0]", "[1, 0, 0, 0]"));
   const fs::path output = directory_ / "squashed.json";
   const Outcome result =
       run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
   EXPECT_EQ(result.exit_code, 2) << result.out;
-  EXPECT_NE(result.err.find(": tip: the rod would be compressed"), std::string::npos)
-      << result.err;
+  EXPECT_NE(result.err.find(": tip: the rod would be compressed"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
   EXPECT_FALSE(fs::exists(output));
 }

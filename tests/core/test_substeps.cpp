@@ -116,8 +116,7 @@ TEST(PoseBetweenNodes, ReproducesTheNextNodeAndItsDerivatives) {
       EXPECT_LE((d.pose.position - c.p[i + 1]).norm(), 1e-14) << i;
       EXPECT_LE((d.pose.rotation - c.R[i + 1]).norm(), 1e-13) << i;
       EXPECT_LE((d.dp_dw - c.dp_dw[i + 1]).norm(), 1e-12 * c.dp_dw[i + 1].norm()) << i;
-      EXPECT_LE((d.dtheta_dw - c.dtheta_dw[i + 1]).norm(), 1e-12 * c.dtheta_dw[i + 1].norm())
-          << i;
+      EXPECT_LE((d.dtheta_dw - c.dtheta_dw[i + 1]).norm(), 1e-12 * c.dtheta_dw[i + 1].norm()) << i;
     }
   }
 }

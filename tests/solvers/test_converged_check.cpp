@@ -114,8 +114,8 @@ TEST(ConvergedCheck, FollowedPathsEndOnFiniteAccurateShapes) {
     if (followed.followed()) {
       EXPECT_TRUE(followed.configuration.finite());
       expect_converged_means_accurate(rod, path.tip_at(1.0),
-                                      ShootingResult{followed.states.back().solve, followed.base_wrench,
-                                                     followed.configuration});
+                                      ShootingResult{followed.states.back().solve,
+                                                     followed.base_wrench, followed.configuration});
     } else {
       EXPECT_FALSE(followed.message.empty());
     }

@@ -49,7 +49,8 @@ TEST(FreeTipStability, TransverseTipLoadIsStable) {
 
 TEST(FreeTipStability, StraightColumnUnderDeadLoadBucklesAtEulersClampedFreeLoad) {
   const ClampedRod rod = testing::rubber_band();
-  const double P_cr = pi * pi * testing::kBandEI / (4.0 * testing::kBandLength * testing::kBandLength);
+  const double P_cr =
+      pi * pi * testing::kBandEI / (4.0 * testing::kBandLength * testing::kBandLength);
   for (const double factor : {0.9, 1.1}) {
     SCOPED_TRACE(factor);
     const FreeTip tip{{{0, 0, -factor * P_cr}, {0, 0, 0}}};

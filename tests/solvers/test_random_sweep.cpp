@@ -42,7 +42,9 @@ class Sweep {
  public:
   explicit Sweep(unsigned seed) : random_(seed) {}
 
-  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(random_); }
+  double uniform(double a, double b) {
+    return std::uniform_real_distribution<double>(a, b)(random_);
+  }
   int index(int n) { return std::uniform_int_distribution<int>(0, n - 1)(random_); }
   Eigen::Vector3d direction() {
     Eigen::Vector3d d;
@@ -51,8 +53,9 @@ class Sweep {
     return d.normalized();
   }
   Eigen::Matrix3d rotation() {
-    return Eigen::Quaterniond(Eigen::Vector4d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1),
-                                              uniform(-1, 1)).normalized())
+    return Eigen::Quaterniond(
+               Eigen::Vector4d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1))
+                   .normalized())
         .toRotationMatrix();
   }
   /// 0, huge, or a magnitude log-uniform over 10⁻³ … 10⁷ units.

@@ -36,8 +36,8 @@ TEST(StabilityScale, BandPoseIsStableForYoungsModulusOverTwelveDecades) {
   // round-off of the bending terms and the Cosserat rod is a Kirchhoff rod to double precision
   // (use rod.model: kirchhoff there).
   const ClampedTip tip = band_pose();
-  for (const double E : {3.2e6, 3.2e7, 3.2e8, 3.2e9, 2e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17,
-                         1e18, 1e19}) {
+  for (const double E :
+       {3.2e6, 3.2e7, 3.2e8, 3.2e9, 2e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19}) {
     SCOPED_TRACE(E);
     ClampedRod rod = testing::rubber_band();
     rod.properties.K_tra = Eigen::Vector3d(E / 3.0, E / 3.0, E) * 4e-4;  // GA, GA, EA; ν = 0.5

@@ -11,7 +11,7 @@
 namespace rodshape {
 
 struct PoseDerivatives {
-  Pose pose;                              // p(s), R(s)
+  Pose pose;                                // p(s), R(s)
   Matrix36d dp_dw = Matrix36d::Zero();      // dp(s)/dw, world frame
   Matrix36d dtheta_dw = Matrix36d::Zero();  // body-frame angle: δR = R θ̂, θ = dtheta_dw δw
 };
