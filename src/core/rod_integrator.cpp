@@ -46,9 +46,14 @@ void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& 
   for (int i = 0; i < N; ++i) {
     store_node_state(state, i, i * h, out);
     if (WithTangent && all_nodes) store_node_tangent(state, i, out);
-    detail::rk4_step<WithTangent>(ode, h_step, state, point, theta);
-    for (int k = 1; k < rod.substeps; ++k)
-      detail::rk4_step<WithTangent>(ode, h_step, state, inner_point, inner_theta);
+    // One call site, so that the step stays inlined; the first sub-step's start is node i.
+    detail::OdePoint* start = &point;
+    Matrix63d* start_theta = &theta;
+    for (int k = 0; k < rod.substeps; ++k) {
+      detail::rk4_step<WithTangent>(ode, h_step, state, *start, *start_theta);
+      start = &inner_point;
+      start_theta = &inner_theta;
+    }
     store_node_point(point, i, out);  // `point` and `theta` are at node i
     if (WithTangent && all_nodes) out.dtheta_dw[i] = theta.transpose();
   }
