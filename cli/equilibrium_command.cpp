@@ -9,8 +9,10 @@
 
 #include "exit_code.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 
@@ -41,19 +43,31 @@ class EquilibriumCommand final : public Command {
   int run() override {
     const EquilibriumTask task = read_equilibrium_task(task_path_);
 
-    // The stability test needs the derivatives at every node; a free tip has no stability test.
-    const bool held = !std::holds_alternative<FreeTip>(task.tip);
+    // The stability test needs the derivatives at every node.
     ShootingOptions options = task.options;
-    options.output_derivatives = held ? Derivatives::AllNodes : Derivatives::None;
+    options.output_derivatives = Derivatives::AllNodes;
 
     const ShootingResult solution =
         solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
     const ShootingSummary& summary = solution.summary;
+    ClampedRod solved_rod = task.rod;  // with the sub-steps the solver needed
+    solved_rod.substeps = summary.substeps;
 
     std::optional<StabilityResult> stability;
-    if (held && summary.converged()) stability = assess_stability(task.rod, solution.configuration);
+    if (summary.converged()) {
+      // A pose the user holds the tip at must not ask the model for more than it can say.
+      if (!std::holds_alternative<FreeTip>(task.tip)) {
+        try {
+          check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
+                               "ClampedTip.pose", "ShootingOptions.strain_limits");
+        } catch (const InputError& error) {
+          throw InputError(task_path_ + ": " + in_task_names(error));
+        }
+      }
+      stability = assess_stability(solved_rod, solution.configuration, task.tip);
+    }
 
-    const std::string json = equilibrium_result_json(solution, stability, task.rod);
+    const std::string json = equilibrium_result_json(solution, stability, solved_rod);
     if (output_path_.empty()) {
       std::cout << json << std::flush;
     } else {
@@ -67,7 +81,8 @@ class EquilibriumCommand final : public Command {
 
     if (!summary.converged()) {
       std::cerr << "error: " << task_path_ << ": the solver did not converge: " << summary.brief();
-      if (!summary.message.empty()) std::cerr << " (" << summary.message << ")";
+      if (!summary.message.empty())
+        std::cerr << " (" << fields_in_task_names(summary.message) << ")";
       std::cerr << "\n";
       return kNotConverged;
     }

@@ -11,6 +11,9 @@ void ClampedRod::validate() const {
   detail::require_pose("ClampedRod.clamp", clamp);
   if (intervals < 1)
     throw InputError("ClampedRod.intervals", " = " + std::to_string(intervals) + " must be >= 1");
+  if (substeps < 1 || substeps > kMaxSubsteps)
+    throw InputError("ClampedRod.substeps", " = " + std::to_string(substeps) + " must be in [1, " +
+                                                std::to_string(kMaxSubsteps) + "]");
 }
 
 }  // namespace rodshape

@@ -1,6 +1,18 @@
 #include "rodshape/core/rod_configuration.hpp"
 
+#include <cmath>
+
 namespace rodshape {
+
+bool RodConfiguration::finite() const {
+  if (!std::isfinite(energy)) return false;
+  for (int i = 0; i < nodes(); ++i) {
+    if (!std::isfinite(s[i]) || !p[i].allFinite() || !R[i].allFinite() || !n[i].allFinite() ||
+        !m[i].allFinite() || !v[i].allFinite() || !u[i].allFinite())
+      return false;
+  }
+  return true;
+}
 
 void RodConfiguration::resize(int nodes, Derivatives with) {
   s.resize(nodes);

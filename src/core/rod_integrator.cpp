@@ -38,13 +38,22 @@ void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& 
   const detail::CosseratOde ode(rod);
   const int N = rod.intervals;
   const double h = rod.step();
+  // One step per interval unless the rod asks for sub-steps (same h, bitwise, when substeps = 1).
+  const double h_step = rod.properties.length / (static_cast<double>(N) * rod.substeps);
   const bool all_nodes = out.derivatives == Derivatives::AllNodes;
-  OdePoint point;
-  Matrix63d theta;
+  OdePoint point, inner_point;
+  Matrix63d theta, inner_theta;
   for (int i = 0; i < N; ++i) {
     store_node_state(state, i, i * h, out);
     if (WithTangent && all_nodes) store_node_tangent(state, i, out);
-    detail::rk4_step<WithTangent>(ode, h, state, point, theta);
+    // One call site, so that the step stays inlined; the first sub-step's start is node i.
+    detail::OdePoint* start = &point;
+    Matrix63d* start_theta = &theta;
+    for (int k = 0; k < rod.substeps; ++k) {
+      detail::rk4_step<WithTangent>(ode, h_step, state, *start, *start_theta);
+      start = &inner_point;
+      start_theta = &inner_theta;
+    }
     store_node_point(point, i, out);  // `point` and `theta` are at node i
     if (WithTangent && all_nodes) out.dtheta_dw[i] = theta.transpose();
   }

@@ -68,6 +68,10 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"ShootingOptions.residual_tolerance", "solver.tolerance"},
       {"ShootingOptions.max_continuation_steps", "solver.max_continuation_steps"},
       {"ShootingOptions.continuation", "solver.continuation"},
+      {"ShootingOptions.integration_tolerance", "solver.integration_tolerance"},
+      {"ShootingOptions.max_substeps", "solver.max_substeps"},
+      {"ShootingOptions.strain_limits", "solver"},
+      {"PlanProblem.validity", "limits.model"},
   };
   return names;
 }

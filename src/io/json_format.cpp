@@ -1,6 +1,8 @@
 // json_format.cpp: the shared JSON pieces of the result documents (see json_format.hpp).
 #include "io/json_format.hpp"
 
+#include "rodshape/core/strain_extremes.hpp"
+
 #include <cmath>
 #include <utility>
 
@@ -17,7 +19,18 @@ Json stability_object(const std::optional<StabilityResult>& stability) {
       {"min_singular_value", json_number(stability->min_singular_value)},
       {"tip_singular_value", json_number(stability->tip_singular_value)},
       {"degenerate", stability->degenerate},
+      {"tip_stiffness_eigenvalue", stability->tip_stiffness_eigenvalue
+                                       ? json_number(*stability->tip_stiffness_eigenvalue)
+                                       : Json(nullptr)},
   };
+}
+
+/// The largest strains, to judge the shape against the linear law's range (null when not finite).
+Json strain_object(const RodProperties& properties, const RodConfiguration& c) {
+  const StrainExtremes e = strain_extremes(properties, c);
+  return {{"max_axial", json_number(e.max_axial)},
+          {"max_shear", json_number(e.max_shear)},
+          {"max_curvature", json_number(e.max_curvature)}};
 }
 
 Json nodes_object(const RodConfiguration& c) {
@@ -140,13 +153,14 @@ Json json_pose(const Pose& pose) {
 Json configuration_json(const RodConfiguration& configuration,
                         const BaseWrench& base_wrench,
                         const std::optional<StabilityResult>& stability,
-                        ConstitutiveModel model) {
+                        const RodProperties& properties) {
   const bool has_shape = configuration.nodes() > 0;
   Json result;
-  result["model"] = to_string(model);
+  result["model"] = to_string(properties.model);
   result["energy"] = has_shape ? json_number(configuration.energy) : Json(nullptr);
   result["stable"] = stability ? Json(stability->stable) : Json(nullptr);
   result["stability"] = stability_object(stability);
+  result["strain"] = has_shape ? strain_object(properties, configuration) : Json(nullptr);
   result["base_wrench"] = json_wrench(base_wrench);
   if (has_shape) {
     result["tip_wrench"] = json_wrench(configuration.tip_wrench());

@@ -34,13 +34,14 @@ Json json_wrench(const Wrench& w);
 Json json_pose(const Pose& pose);
 
 /// A rod configuration as both result documents write it (docs/task-file.md): model, energy,
-/// stable, stability, base_wrench, tip_wrench, tip, nodes. `stability` absent: "stable" and
+/// stable, stability, strain (strain_extremes()), base_wrench, tip_wrench, tip, nodes. `stability`
+/// absent: "stable" and
 /// "stability" are null. A configuration without nodes (a solve that never integrated) has null
 /// energy, tip and tip_wrench.
 Json configuration_json(const RodConfiguration& configuration,
                         const BaseWrench& base_wrench,
                         const std::optional<StabilityResult>& stability,
-                        ConstitutiveModel model);
+                        const RodProperties& properties);
 
 /// Pretty-printed with two-space indentation, except that a list of scalars stays on one line (so
 /// each node's position is one line of the file), ending with a newline.

@@ -65,7 +65,7 @@ Json solver_object(const ShapeResult& solution) {
   };
 }
 
-Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
+Json step_object(const PlanStep& step, int number, const RodProperties& properties) {
   const ShapeResult& solution = step.solution;
   const ShapeCostBreakdown& cost = solution.cost;
   Json result;
@@ -74,7 +74,7 @@ Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
   result["inserted"] = step.inserted;
   result["objective_points"] = json_vectors(step.objective_points);
   result["configuration"] = io_detail::configuration_json(
-      solution.configuration, solution.base_wrench, solution.stability, model);
+      solution.configuration, solution.base_wrench, solution.stability, properties);
   result["end_effector"] = json_pose(step.end_effector);
   result["energy"] = json_number(cost.energy);
   result["cost"] = {
@@ -211,7 +211,7 @@ Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
 
 std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   const PlanProblem& request = task.problem;
-  const ConstitutiveModel model = request.rod.properties.model;
+  const RodProperties& properties = request.rod.properties;
   const bool complete = plan.status == PlanStatus::Complete;
 
   Json result;
@@ -225,14 +225,15 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["target"] = target_object(request.target);
   result["feasibility"] = feasibility_object(plan.feasibility, task.problem.target.points);
   result["final"] = final_object(plan);
-  result["initial"] = plan.initial_configuration.nodes() > 0
-                          ? io_detail::configuration_json(plan.initial_configuration,
-                                                          plan.initial_wrench, std::nullopt, model)
-                          : Json(nullptr);
+  result["initial"] =
+      plan.initial_configuration.nodes() > 0
+          ? io_detail::configuration_json(plan.initial_configuration, plan.initial_wrench,
+                                          std::nullopt, properties)
+          : Json(nullptr);
   result["initial_points"] = json_vectors(plan.initial_points);
   Json steps = Json::array();
   for (std::size_t k = 0; k < plan.steps.size(); ++k)
-    steps.push_back(step_object(plan.steps[k], static_cast<int>(k) + 1, model));
+    steps.push_back(step_object(plan.steps[k], static_cast<int>(k) + 1, properties));
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);

@@ -109,12 +109,24 @@ InitialState read_initial_section(const YamlField& initial) {
 }
 
 StrainLimits read_limits_section(const YamlField& limits) {
-  limits.expect_mapping({"max_curvature", "max_axial_strain"});
+  limits.expect_mapping({"max_curvature", "max_axial_strain", "model"});
   StrainLimits result;
   if (const YamlField field = limits.get("max_curvature"); field.present())
     result.max_curvature = field.number();
   if (const YamlField field = limits.get("max_axial_strain"); field.present())
     result.max_axial_strain = field.number();
+  return result;
+}
+
+ModelValidityLimits read_model_validity(const YamlField& limits) {
+  ModelValidityLimits result;
+  const YamlField model = limits.get("model");
+  if (!model.present()) return result;
+  model.expect_mapping({"max_axial_strain", "max_shear_strain"});
+  if (const YamlField field = model.get("max_axial_strain"); field.present())
+    result.max_axial_strain = field.positive_number();
+  if (const YamlField field = model.get("max_shear_strain"); field.present())
+    result.max_shear_strain = field.positive_number();
   return result;
 }
 

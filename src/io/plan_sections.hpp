@@ -42,8 +42,11 @@ Grasp read_grasp_section(const YamlField& grasp);
 /// `initial`: tip (a pose) or base_wrench {force, moment}; the rod at rest when both are left out.
 InitialState read_initial_section(const YamlField& initial);
 
-/// `limits`: max_curvature, max_axial_strain.
+/// `limits`: max_curvature, max_axial_strain (and `model`, read by read_model_validity()).
 StrainLimits read_limits_section(const YamlField& limits);
+
+/// `limits.model`: max_axial_strain, max_shear_strain, the model's validity for the initial tip.
+ModelValidityLimits read_model_validity(const YamlField& limits);
 
 /// `wrench_bounds`: lower and upper, each {force, moment}; an omitted vector is unbounded.
 WrenchBounds read_wrench_bounds_section(const YamlField& bounds);

@@ -25,8 +25,10 @@ std::string equilibrium_result_json(const ShootingResult& solution,
   result["integrations"] = summary.integrations;
   result["jacobian_evaluations"] = summary.jacobian_evaluations;
   result["continuation_steps"] = summary.continuation_steps;
+  result["integration_error"] = io_detail::json_number(summary.integration_error);
+  result["substeps"] = summary.substeps;
   result.update(io_detail::configuration_json(solution.configuration, solution.base_wrench,
-                                              stability, rod.properties.model));
+                                              stability, rod.properties));
   return io_detail::format_json(result);
 }
 

@@ -146,8 +146,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     problem.grasp = io_detail::read_grasp_section(grasp);
   if (const YamlField initial = root.get("initial"); initial.present())
     problem.initial = io_detail::read_initial_section(initial);
-  if (const YamlField limits = root.get("limits"); limits.present())
+  if (const YamlField limits = root.get("limits"); limits.present()) {
     problem.limits = io_detail::read_limits_section(limits);
+    problem.validity = io_detail::read_model_validity(limits);
+  }
   if (const YamlField bounds = root.get("wrench_bounds"); bounds.present()) {
     problem.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
     check_wrench_bounds(problem.wrench_bounds, bounds);

@@ -275,8 +275,9 @@ TipCondition read_tip_condition(const YamlField& tip) {
 void read_solver_section(const YamlField& solver,
                          ShootingOptions& options,
                          BaseWrench& initial_wrench) {
-  solver.expect_mapping(
-      {"max_iterations", "tolerance", "continuation", "max_continuation_steps", "initial_wrench"});
+  solver.expect_mapping({"max_iterations", "tolerance", "continuation", "max_continuation_steps",
+                         "initial_wrench", "integration_tolerance", "max_substeps",
+                         "max_axial_strain", "max_shear_strain"});
   if (const YamlField field = solver.get("max_iterations"); field.present()) {
     options.max_iterations = field.integer();
     if (options.max_iterations < 1) field.fail_value("must be >= 1");
@@ -293,6 +294,20 @@ void read_solver_section(const YamlField& solver,
   }
   if (const YamlField field = solver.get("initial_wrench"); field.present()) {
     initial_wrench = read_wrench(field);
+  }
+  if (const YamlField field = solver.get("integration_tolerance"); field.present()) {
+    options.integration_tolerance = field.positive_number();
+  }
+  if (const YamlField field = solver.get("max_substeps"); field.present()) {
+    options.max_substeps = field.integer();
+    if (options.max_substeps < 1 || options.max_substeps > ClampedRod::kMaxSubsteps)
+      field.fail_value("must be in [1, " + std::to_string(ClampedRod::kMaxSubsteps) + "]");
+  }
+  if (const YamlField field = solver.get("max_axial_strain"); field.present()) {
+    options.strain_limits.max_axial_strain = field.positive_number();
+  }
+  if (const YamlField field = solver.get("max_shear_strain"); field.present()) {
+    options.strain_limits.max_shear_strain = field.positive_number();
   }
 }
 

@@ -104,8 +104,10 @@ StartResult run_start(IpoptSession& session,
   result.status = result.run.status;
   // "Converged" promises a feasible point: IPOPT's own test runs on the relaxed bounds, and an
   // acceptable point could in principle slip through, so our measure has the last word.
-  if (result.status == SolveStatus::Converged &&
-      !(result.violation <= options.constraint_tolerance && std::isfinite(result.cost)))
+  if (result.status != SolveStatus::Converged) return result;
+  if (!std::isfinite(result.cost) || !std::isfinite(result.violation))
+    result.status = SolveStatus::NonFinite;
+  else if (!(result.violation <= options.constraint_tolerance))
     result.status = SolveStatus::ConstraintViolated;
   return result;
 }
@@ -142,6 +144,8 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
   if (r.status == SolveStatus::ConstraintViolated)
     out << " exceeds ShapeOptimizerOptions.constraint_tolerance = " << options.constraint_tolerance;
+  if (r.status == SolveStatus::NonFinite)
+    out << "; the shape is not finite (NaN or infinite values)";
   return out.str();
 }
 
@@ -179,8 +183,12 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   solution.configuration = problem.configuration();
   solution.cost = problem.breakdown();
   solution.max_constraint_violation = best.violation;
-  if (options.assess_stability && std::isfinite(best.cost))
-    solution.stability = assess_stability(problem.rod(), solution.configuration);
+  if (options.assess_stability && std::isfinite(best.cost)) {
+    // Released grasp components leave the tip partly free: their tip stiffness is tested too.
+    solution.stability =
+        assess_stability(problem.rod(), solution.configuration,
+                         GraspedTip{solution.configuration.tip(), problem.grasp().released});
+  }
   solution.ipopt = best.run.details;
   solution.starts_tried = static_cast<int>(starts.size());
   return solution;

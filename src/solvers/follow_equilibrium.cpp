@@ -116,6 +116,13 @@ ShootingResult solve_at(const ClampedRod& rod,
   return solve_equilibrium(rod_at(rod, path, sigma), path.tip_at(sigma), guess, shooting);
 }
 
+/// The rod as the solve integrated it (with the sub-steps its accuracy check asked for).
+ClampedRod with_substeps(const ClampedRod& rod, const ShootingSummary& solved) {
+  ClampedRod copy = rod;
+  copy.substeps = solved.substeps;
+  return copy;
+}
+
 /// Records an accepted substep; false (with the event set) when it is unstable and stability is
 /// assessed at every substep.
 bool accept(const ClampedRod& rod,
@@ -132,7 +139,8 @@ bool accept(const ClampedRod& rod,
                       solved.summary,
                       std::nullopt};
   if (options.stability_every_substep)
-    state.stability = assess_stability(rod_at(rod, path, sigma), solved.configuration);
+    state.stability = assess_stability(with_substeps(rod_at(rod, path, sigma), solved.summary),
+                                       solved.configuration);
   const bool unstable = state.stability && !state.stability->stable && !state.stability->degenerate;
   result.sigma = sigma;
   result.base_wrench = solved.base_wrench;
@@ -222,8 +230,9 @@ void keep_last_equilibrium(const ClampedRod& rod,
   if (result.configuration.nodes() == rod.nodes() &&
       result.configuration.derivatives == options.final_derivatives)
     return;
-  integrate(rod_at(rod, path, result.sigma), result.base_wrench, result.configuration,
-            options.final_derivatives);
+  const ClampedRod at = rod_at(rod, path, result.sigma);
+  integrate(result.states.empty() ? at : with_substeps(at, result.states.back().solve),
+            result.base_wrench, result.configuration, options.final_derivatives);
 }
 
 /// On arrival: the expected equilibrium (else another branch), then stable (else unstable).
@@ -243,7 +252,8 @@ void check_arrival(const ClampedRod& rod,
     }
   }
   if (!options.arrival_stability) return;
-  result.arrival_stability = assess_stability(rod, result.configuration);
+  result.arrival_stability =
+      assess_stability(with_substeps(rod, result.states.back().solve), result.configuration);
   if (!result.arrival_stability->stable && !result.arrival_stability->degenerate) {
     result.event = FollowEvent::Unstable;
     result.message = "the equilibrium on arrival is unstable";
@@ -273,6 +283,13 @@ FollowResult follow_equilibrium(const ClampedRod& rod,
     follow_adaptive(rod, path, options, result);
   else
     follow_fixed(rod, path, options, result);
+  // Checked invariant: a path followed to the end ends on a finite shape (each accepted solve
+  // converged, and converged solves are finite: solve_equilibrium checks it).
+  if (result.followed() && !result.configuration.finite()) {
+    result.event = FollowEvent::Lost;
+    result.event_sigma = result.sigma;
+    result.message = "the followed shape is not finite (NaN or infinite values)";
+  }
   if (result.followed())
     check_arrival(rod, options, expected, branch_tolerance, result);
   else

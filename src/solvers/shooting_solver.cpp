@@ -6,6 +6,7 @@
 #include <sstream>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "converged_check.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
@@ -25,6 +26,14 @@ void ShootingOptions::validate() const {
   if (max_continuation_steps < 1)
     throw InputError("ShootingOptions.max_continuation_steps",
                      " = " + std::to_string(max_continuation_steps) + " must be >= 1");
+  if (!(integration_tolerance > 0.0))  // +inf is allowed: it turns the accuracy check off
+    throw InputError("ShootingOptions.integration_tolerance",
+                     " = " + detail::format_value(integration_tolerance) + " must be > 0");
+  if (max_substeps < 1 || max_substeps > ClampedRod::kMaxSubsteps)
+    throw InputError("ShootingOptions.max_substeps",
+                     " = " + std::to_string(max_substeps) + " must be in [1, " +
+                         std::to_string(ClampedRod::kMaxSubsteps) + "]");
+  strain_limits.validate("ShootingOptions.strain_limits");
 }
 
 std::string ShootingSummary::brief() const {
@@ -33,6 +42,7 @@ std::string ShootingSummary::brief() const {
   if (chord_steps > 0) out << " + " << chord_steps << " chord steps";
   out << " (" << integrations << " integrations, " << jacobian_evaluations << " with derivatives";
   if (continuation_steps > 0) out << ", " << continuation_steps << " continuation steps";
+  if (substeps > 1) out << ", " << substeps << " sub-steps per interval";
   out << "), |r| = ";
   out.precision(3);
   out << residual_norm;
@@ -378,6 +388,7 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
 
   solution.base_wrench = Wrench::from_vector(w);
   integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
+  detail::confirm_converged(rod, tip, options, solution);  // finite, accurate, or a status
   return solution;
 }
 

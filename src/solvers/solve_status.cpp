@@ -20,6 +20,10 @@ std::string to_string(SolveStatus status) {
       return "constraint_violated";
     case SolveStatus::OutOfReach:
       return "out_of_reach";
+    case SolveStatus::NonFinite:
+      return "non_finite";
+    case SolveStatus::DiscretisationTooCoarse:
+      return "discretisation_too_coarse";
   }
   return "unknown";
 }

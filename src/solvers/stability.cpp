@@ -2,22 +2,25 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <variant>
 #include <vector>
 
-#include "core/rk4_step.hpp"
+#include "rodshape/core/pose_between_nodes.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/tip_stiffness.hpp"
 
 namespace rodshape {
 
 namespace {
 
-using detail::NodeState;
-using detail::Slot;
-
-constexpr double kConjugateTolerance = 1e-6;  // σ_min(J̃) below this after refinement: singular
+// A local minimum of σ_min(J̃) that refinement drives below this fraction of σ_min at the
+// neighbouring nodes is a root (a conjugate point). Relative, so that the verdict does not depend
+// on the units or on the ratio of axial to bending stiffness (issue 12).
+constexpr double kConjugateTolerance = 1e-6;
 
 /// C(s) = d(pose at s)/d(base wrench) of the unloaded straight rod of length s, clamp frame,
 /// from the linearised equations m(σ) = m(0) - σ e_z × n(0), θ' = K_rot⁻¹ m, δp' = K_tra⁻¹ n + θ ×
@@ -72,48 +75,21 @@ double smallest_singular_value(const Matrix6d& J) {
   return Eigen::JacobiSVD<Matrix6d>(J).singularValues()(5);
 }
 
-/// Re-enters the integration at node i: y from the stored node, the tangent from the stored
-/// derivatives (δq = ½ q ⊗ (0, θ) for each direction).
-NodeState node_state(const RodConfiguration& c, int i) {
-  NodeState state;
-  const Eigen::Quaterniond q(c.R[i]);
-  state.y << q.w(), q.x(), q.y(), q.z(), c.p[i], c.n[i], c.m[i], 0.0;
-  state.Y.setZero();
-  for (int j = 0; j < 6; ++j) {
-    const Eigen::Vector3d theta = c.dtheta_dw[i].col(j);
-    const Eigen::Quaterniond dq =
-        q * Eigen::Quaterniond(0.0, 0.5 * theta.x(), 0.5 * theta.y(), 0.5 * theta.z());
-    state.Y(j, Slot::q) = dq.w();
-    state.Y.block<1, 3>(j, Slot::q + 1) = dq.vec().transpose();
-  }
-  state.Y.middleCols<3>(Slot::p) = c.dp_dw[i].transpose();
-  state.Y.middleCols<3>(Slot::n) = c.dn_dw[i].transpose();
-  state.Y.middleCols<3>(Slot::m) = c.dm_dw[i].transpose();
-  return state;
-}
-
-/// Evaluates J̃ between nodes by one Runge–Kutta step from node i.
+/// Evaluates J̃ between nodes by re-entering the integration at node i.
 class JacobianBetweenNodes {
  public:
   JacobianBetweenNodes(const ClampedRod& rod,
                        const RodConfiguration& c,
                        const ScaledJacobian& scaled)
-      : ode_(rod), c_(c), scaled_(scaled) {}
+      : rod_(rod), c_(c), scaled_(scaled) {}
 
   Matrix6d at(int i, double s) const {
-    NodeState state = node_state(c_, i);
-    detail::OdePoint start;
-    detail::Matrix63d theta;
-    detail::rk4_step<true>(ode_, s - c_.s[i], state, start, theta);
-    const double q_scale = 2.0 / state.y.segment<4>(Slot::q).squaredNorm();
-    const detail::Matrix63d theta_s =
-        detail::body_rotation_tangent(state.y.segment<4>(Slot::q), q_scale, state.Y);
-    return scaled_(state.Y.middleCols<3>(Slot::p).transpose(), theta_s.transpose(),
-                   detail::rotation_of(state.y.segment<4>(Slot::q), q_scale), s);
+    const PoseDerivatives d = pose_between_nodes(rod_, c_, i, s);
+    return scaled_(d.dp_dw, d.dtheta_dw, d.pose.rotation, s);
   }
 
  private:
-  detail::CosseratOde ode_;
+  const ClampedRod& rod_;
   const RodConfiguration& c_;
   const ScaledJacobian& scaled_;
 };
@@ -182,7 +158,11 @@ StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& 
     const bool left_ok = sigma[i] <= sigma[i - 1];
     const bool right_ok = i == N || sigma[i] <= sigma[i + 1];
     if (!left_ok || !right_ok) continue;
-    if (sigma[i] <= kConjugateTolerance) {
+    // Relative to its neighbours: a root drives σ_min to round-off, while a rod that is nearly
+    // inextensible (EA, GA ≫ EI/L²) has a small but smooth σ_min near the clamp, whose size
+    // depends on EA L²/EI (about 1e-5 for the band at E ≥ 1e11) and not on a conjugate point.
+    const double scale = std::max(sigma[i - 1], i == N ? sigma[i] : sigma[i + 1]);
+    if (sigma[i] <= kConjugateTolerance * scale) {
       conjugate = c.s[i];
       break;
     }
@@ -205,7 +185,7 @@ StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& 
     }
     const double f_min = std::min(f1, f2);
     report.min_singular_value = std::min(report.min_singular_value, f_min);
-    if (f_min <= kConjugateTolerance) conjugate = f1 < f2 ? x1 : x2;
+    if (f_min <= kConjugateTolerance * scale) conjugate = f1 < f2 ? x1 : x2;
   }
 
   report.conjugate_point_s = conjugate;
@@ -218,6 +198,27 @@ StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& 
   return report;
 }
 
+StabilityResult assess_stability(const ClampedRod& rod,
+                                 const RodConfiguration& c,
+                                 const TipCondition& tip) {
+  StabilityResult report = assess_stability(rod, c);
+  std::array<bool, 6> free{};
+  Eigen::Matrix3d grasp = Eigen::Matrix3d::Identity();
+  if (std::holds_alternative<FreeTip>(tip)) free.fill(true);
+  if (const auto* grasped = std::get_if<GraspedTip>(&tip)) {
+    free = grasped->released;
+    grasp = grasped->pose.rotation;
+  }
+  const bool any_free = std::find(free.begin(), free.end(), true) != free.end();
+  if (!any_free || !report.stable) return report;
+  constexpr double kNeutral = 1e-9;  // |λ| below this: a direction of (nearly) zero stiffness
+  const double lambda = tip_stiffness_eigenvalue(rod, c, grasp, free);
+  report.tip_stiffness_eigenvalue = lambda;
+  report.stable = lambda > kNeutral;
+  report.degenerate = !(std::abs(lambda) > kNeutral);  // NaN included
+  return report;
+}
+
 std::string StabilityResult::brief() const {
   std::ostringstream out;
   out.precision(3);
@@ -225,6 +226,9 @@ std::string StabilityResult::brief() const {
     out << "stable (min σ̃ = " << min_singular_value << ", at the tip " << tip_singular_value << ")";
   } else if (conjugate_point_s) {
     out << "unstable: conjugate point at s = " << *conjugate_point_s << " m";
+  } else if (tip_stiffness_eigenvalue && !degenerate) {
+    out << "unstable: the free tip's stiffness has eigenvalue " << *tip_stiffness_eigenvalue
+        << " <= 0 (it can move with no restoring wrench)";
   } else if (degenerate) {
     out << "not shown stable: degenerate (J singular along the rod or only at the tip)";
   } else {

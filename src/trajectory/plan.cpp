@@ -31,6 +31,7 @@ void PlanProblem::validate() const {
   target.validate();
   workspace.validate();
   limits.validate();
+  validity.validate("PlanProblem.validity");
   if (initial.kind == InitialState::Kind::HeldTip)
     detail::require_pose("PlanProblem.initial.tip", initial.tip);
   if (initial.kind == InitialState::Kind::Equilibrium) {

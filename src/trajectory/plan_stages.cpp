@@ -8,6 +8,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
+#include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 
 namespace rodshape::plan_stages {
@@ -48,6 +49,8 @@ InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip)
   if (!solved.summary.converged())
     throw InputError("PlanProblem.initial.tip",
                      ": no equilibrium holds the rod there (" + solved.summary.brief() + ")");
+  check_model_validity(problem.rod.properties, solved.configuration, problem.validity,
+                       "PlanProblem.initial.tip", "PlanProblem.validity");
   return {solved.base_wrench, solved.configuration};
 }
 
@@ -64,6 +67,8 @@ InitialEquilibrium given_equilibrium(const PlanProblem& problem, const BaseWrenc
                            " is one the grasp releases (Grasp.released): not an equilibrium "
                            "of the grasped rod");
   }
+  check_model_validity(problem.rod.properties, initial.configuration, problem.validity,
+                       "PlanProblem.initial.base_wrench", "PlanProblem.validity");
   return initial;
 }
 

@@ -190,13 +190,15 @@ TEST_F(Cli, WithoutOutputFileTheJsonGoesToStandardOutput) {
   EXPECT_TRUE(j["stable"].is_boolean());
 }
 
-TEST_F(Cli, FreeTipHasNoStabilityVerdict) {
+TEST_F(Cli, FreeTipHasAStabilityVerdict) {
+  // Issue 12: free tips had `stable: null`. The sagging cantilever is stable, its tip stiffness
+  // (over all six free directions) positive.
   const Outcome result = run("equilibrium " + quoted(kExamples + "/cantilever_gravity.yaml"));
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const Json j = Json::parse(result.out);
   EXPECT_EQ(j["status"], "converged");
-  EXPECT_TRUE(j["stable"].is_null());
-  EXPECT_TRUE(j["stability"].is_null());
+  EXPECT_EQ(j["stable"], true);
+  EXPECT_GT(j["stability"]["tip_stiffness_eigenvalue"].get<double>(), 0.0);
   // The wire sags: its tip is below the clamp, and the tip carries no load.
   EXPECT_LT(j["tip"]["position"][2].get<double>(), 1.0);
   for (const Json& c : j["tip_wrench"]["force"]) EXPECT_NEAR(c.get<double>(), 0.0, 1e-9);
@@ -219,6 +221,70 @@ TEST_F(Cli, NonConvergenceExitsThreeAndStillWritesTheWholeResult) {
   EXPECT_NE(result.err.find(j["status"].get<std::string>()), std::string::npos);
   EXPECT_TRUE(j["stable"].is_null());
   EXPECT_EQ(j["nodes"]["s"].size(), 101u);
+}
+
+}  // namespace
+
+namespace {
+
+// Issue 12, item 2: loads that "converged" with null (NaN) nodes now exit 3, and a converged
+// result is finite everywhere.
+TEST_F(Cli, LoadsBeyondTheDiscretisationNeverConvergeWithNonFiniteShapes) {
+  const std::string band_tip =
+      "tip:\n  position: [0.12, 0.0, 0.22]\n"
+      "  rotation: [0.7071067811865476, 0, 0.7071067811865476, 0]\n";
+  for (const char* force : {"1e4", "3e4", "1e6"}) {
+    SCOPED_TRACE(force);
+    const fs::path task = write_task(
+        std::string("force") + force + ".yaml",
+        band_with(band_tip, std::string("tip: {wrench: {force: [") + force + ", 0, 0]}}\n"));
+    const fs::path output = directory_ / (std::string("force") + force + ".json");
+    const Outcome result =
+        run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()) + " -q");
+    ASSERT_TRUE(fs::exists(output)) << result.err;
+    const Json j = Json::parse(read_file(output));
+    if (j["status"] == "converged") {
+      EXPECT_EQ(result.exit_code, 0);
+      EXPECT_FALSE(j["energy"].is_null());
+      for (const Json& p : j["nodes"]["position"])
+        for (const Json& x : p) EXPECT_FALSE(x.is_null());
+    } else {
+      EXPECT_EQ(result.exit_code, 3) << result.err;
+    }
+  }
+}
+
+// Issue 12, item 3: the clamped tip at the clamp squashes the band to nothing: bad input.
+TEST_F(Cli, TipHeldAtTheClampIsBadInputNamingTheTip) {
+  const fs::path task = write_task(
+      "squashed.yaml", rodshape::testing::replaced_first(
+                           band_with("[0.12, 0.0, 0.22]", "[0, 0, 0]"),
+                           "[0.7071067811865476, 0, 0.7071067811865476, 0]", "[1, 0, 0, 0]"));
+  const fs::path output = directory_ / "squashed.json";
+  const Outcome result =
+      run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
+  EXPECT_EQ(result.exit_code, 2) << result.out;
+  EXPECT_NE(result.err.find(": tip: the rod would be compressed"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  EXPECT_FALSE(fs::exists(output));
+}
+
+// The strain limit is the task's: stretching the band 20 % is accepted by default and rejected at
+// solver.max_axial_strain: 0.1.
+TEST_F(Cli, StrainLimitIsSetByTheTask) {
+  const std::string far = band_with("[0.12, 0.0, 0.22]", "[0, 0, 0.348]");
+  const std::string straight = rodshape::testing::replaced_first(
+      far, "[0.7071067811865476, 0, 0.7071067811865476, 0]", "[1, 0, 0, 0]");
+  const fs::path accepted = write_task("stretched.yaml", straight);
+  const Outcome ok = run("equilibrium " + quoted(accepted.string()));
+  ASSERT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NEAR(Json::parse(ok.out)["strain"]["max_axial"].get<double>(), 0.2, 1e-6);
+  const fs::path rejected =
+      write_task("limited.yaml", straight + "solver: {max_axial_strain: 0.1}\n");
+  const Outcome bad = run("equilibrium " + quoted(rejected.string()));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("stretched"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("solver.max_axial_strain = 0.1"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -304,3 +304,32 @@ TEST_F(CliPlan, MissingOutputOptionIsAUsageError) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 12, item 3: an initial tip 1.0 m from the clamp of the 0.29 m band (stretched 3.45×) is bad
+// input, and the limit is the task's (limits.model.max_axial_strain).
+TEST_F(CliPlan, InitialTipBeyondTheModelsRangeIsBadInput) {
+  const std::string far =
+      kTask + "initial:\n  tip: {position: [0, 0, 1.0], rotation: [1, 0, 0, 0]}\n";
+  const fs::path task = write_task("stretched.yaml", far);
+  const fs::path outdir = directory_ / "stretched";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  expect_one_line(result.err);
+  EXPECT_NE(result.err.find("initial.tip: the rod would be stretched"), std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("limits.model.max_axial_strain = 0.5"), std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(outdir));
+}
+
+TEST_F(CliPlan, ModelValidityLimitsAreRead) {
+  const fs::path task =
+      write_task("limit.yaml", kTask + "limits: {model: {max_axial_strain: -1}}\n");
+  const Outcome result = plan(task, directory_ / "limit");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("limits.model.max_axial_strain"), std::string::npos) << result.err;
+}
+
+}  // namespace

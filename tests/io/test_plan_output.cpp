@@ -120,7 +120,8 @@ TEST(PlanOutput, StepConfigurationIsWhatEquilibriumWrites) {
   const Json& configuration = j["steps"][2]["configuration"];
   ASSERT_FALSE(configuration.empty());
   for (const auto& [key, value] : configuration.items()) EXPECT_EQ(value, equilibrium[key]) << key;
-  EXPECT_EQ(configuration.size() + 8, equilibrium.size());  // + the solver's eight fields
+  EXPECT_EQ(configuration.size() + 10, equilibrium.size());  // + the solver's ten fields
+  EXPECT_TRUE(configuration.contains("strain"));
 }
 
 TEST(PlanOutput, PartialPlanSaysWhichStepFailed) {

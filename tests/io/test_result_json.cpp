@@ -111,3 +111,44 @@ TEST(ResultJson, NumbersRoundTripExactly) {
 
 }  // namespace
 }  // namespace rodshape
+
+namespace rodshape {
+namespace {
+
+TEST(ResultJson, ReportsTheLargestStrainsAndTheAccuracyOfTheShape) {
+  // make_solution(): u = (0, 0.6, 0), v = (0, 0, 1) at every node except the tip, which is
+  // stretched by 0.2 and sheared by -0.05 here.
+  ShootingResult solution = make_solution();
+  solution.configuration.v.back() = Eigen::Vector3d(-0.05, 0.0, 1.2);
+  solution.summary.integration_error = 3e-9;
+  solution.summary.substeps = 4;
+  const Json j = Json::parse(equilibrium_result_json(solution, std::nullopt, make_rod()));
+  ASSERT_TRUE(j.contains("strain"));
+  EXPECT_DOUBLE_EQ(j["strain"]["max_axial"].get<double>(), 0.2);
+  EXPECT_DOUBLE_EQ(j["strain"]["max_shear"].get<double>(), 0.05);
+  EXPECT_DOUBLE_EQ(j["strain"]["max_curvature"].get<double>(), 0.6);
+  EXPECT_EQ(j["integration_error"].get<double>(), 3e-9);
+  EXPECT_EQ(j["substeps"].get<int>(), 4);
+}
+
+TEST(ResultJson, FreeTipStabilityCarriesTheTipStiffnessEigenvalue) {
+  StabilityResult stability;
+  stability.stable = false;
+  stability.tip_stiffness_eigenvalue = -0.25;
+  const Json j = Json::parse(equilibrium_result_json(make_solution(), stability, make_rod()));
+  EXPECT_EQ(j["stable"], false);
+  EXPECT_EQ(j["stability"]["tip_stiffness_eigenvalue"].get<double>(), -0.25);
+}
+
+TEST(ResultJson, StrainsOfANonFiniteShapeAreNull) {
+  ShootingResult solution = make_solution();
+  solution.summary.status = SolveStatus::NonFinite;
+  solution.configuration.p[1].x() = std::numeric_limits<double>::quiet_NaN();
+  const Json j = Json::parse(equilibrium_result_json(solution, std::nullopt, make_rod()));
+  EXPECT_EQ(j["status"], "non_finite");
+  EXPECT_TRUE(j["strain"]["max_axial"].is_null());
+  EXPECT_TRUE(j["integration_error"].is_null());
+}
+
+}  // namespace
+}  // namespace rodshape

@@ -13,12 +13,16 @@ struct ClampedRod {
   DistributedLoad load;
   Pose clamp;           // world_T_base: p(0), R(0)
   int intervals = 100;  // N: N + 1 nodes s_i = i L / N
+  /// Runge–Kutta steps per interval (1 ≤ substeps ≤ kMaxSubsteps): the nodes stay at s_i, each
+  /// interval is crossed in `substeps` steps of L / (N substeps).
+  int substeps = 1;
+  static constexpr int kMaxSubsteps = 4096;
 
   int nodes() const { return intervals + 1; }
   double step() const { return properties.length / intervals; }
 
   /// Throws InputError naming the field: properties, loads finite, clamp rotation orthonormal
-  /// (within 1e-6), intervals ≥ 1.
+  /// (within 1e-6), intervals ≥ 1, 1 ≤ substeps ≤ kMaxSubsteps.
   void validate() const;
 };
 

@@ -50,6 +50,10 @@ struct RodConfiguration {
   /// n(0), m(0).
   BaseWrench base_wrench() const { return {n.front(), m.front()}; }
 
+  /// Every node value (s, p, R, n, m, v, u) and the energy are finite; the derivatives are not
+  /// looked at. One pass over the nodes: for the end of a solve, not its inner loop.
+  bool finite() const;
+
   /// Sizes every array for `nodes` nodes; allocates only when the size changes.
   void resize(int nodes, Derivatives derivatives);
 };

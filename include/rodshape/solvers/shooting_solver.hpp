@@ -10,6 +10,7 @@
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/solve_status.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
 
@@ -28,6 +29,15 @@ struct ShootingOptions {
   int max_continuation_steps = 256;
   /// Derivatives stored in the returned configuration.
   Derivatives output_derivatives = Derivatives::AllNodes;
+  /// "Converged" also promises accuracy: the step-doubling estimate of the returned
+  /// configuration's integration error (integration_error_estimate(): |Δp|/L, rad, |Δm|/(EI/L)) is
+  /// at most this. Where it is not, each interval is crossed in more Runge–Kutta sub-steps
+  /// (powers of two, at most max_substeps) and the equilibrium solved again; past max_substeps the
+  /// status is DiscretisationTooCoarse. +inf turns the check off.
+  double integration_tolerance = 1e-6;
+  int max_substeps = 64;  // 1 ≤ max_substeps ≤ ClampedRod::kMaxSubsteps
+  /// Not used by the solver: what a held pose may ask of the model (check_model_validity()).
+  ModelValidityLimits strain_limits;
 
   /// Throws InputError naming the field, e.g. "residual_tolerance = -1 must be > 0".
   void validate() const;
@@ -42,6 +52,11 @@ struct ShootingSummary {
   int jacobian_evaluations = 0;  // of which with tip derivatives (about 3× the cost of one without)
   int continuation_steps = 0;    // 0 when the direct solve converged
   double residual_norm = std::numeric_limits<double>::quiet_NaN();  // ||r||_∞ at the end
+  /// integration_error_estimate() of the returned configuration (NaN when not converged).
+  double integration_error = std::numeric_limits<double>::quiet_NaN();
+  /// Runge–Kutta sub-steps per interval of the returned configuration: integrate and test it with
+  /// a copy of the rod whose `substeps` is this.
+  int substeps = 1;
 
   bool converged() const { return status == SolveStatus::Converged; }
   /// One line: "converged in 2 iterations + 3 chord steps (6 integrations, 3 with derivatives),

@@ -18,6 +18,9 @@ enum class SolveStatus {
   ConstraintViolated,  // the iteration stopped, but the final point violates the constraints by
                        // more than their tolerance (judged on the problem as posed)
   OutOfReach,          // the target is beyond what the solver's unknowns can reach (IK: the arm)
+  NonFinite,           // the residual looked converged but the shape is not finite (NaN, ±inf)
+  DiscretisationTooCoarse,  // the residual met the tolerance but the integration error estimate
+                            // exceeds its tolerance, even with the most sub-steps allowed
 };
 
 std::string to_string(SolveStatus status);

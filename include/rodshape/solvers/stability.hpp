@@ -1,13 +1,15 @@
 // stability.hpp: stability of a clamped–clamped equilibrium by the conjugate-point test (Bretl and
 // McCarthy, IJRR 2014): the equilibrium is stable iff J(s) = d(pose at s)/d(base wrench) is
 // non-singular for every s in (0, L]. The same test is applied to the Cosserat model (Till and
-// Rucker extend it to shearable, extensible rods).
+// Rucker extend it to shearable, extensible rods). Free and partly released tips add the tip
+// stiffness over their free directions (tip_stiffness.hpp).
 #pragma once
 
 #include <optional>
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/solvers/tip_condition.hpp"
 
 namespace rodshape {
 
@@ -16,8 +18,9 @@ struct StabilityResult {
   /// Where the first conjugate point lies (J(s) singular), if any.
   std::optional<double> conjugate_point_s;
   /// min over nodes s_i > 0 of σ_min(J̃(s_i)), where J̃(s) = J(s) C(s)⁻¹ is J relative to the
-  /// unloaded straight rod of length s (C(s) its compliance, in the clamp frame). J̃ = I for that
-  /// rod, so 1 means "as controllable as the unloaded rod" and 0 a conjugate point.
+  /// unloaded straight rod of length s (C(s) its compliance, in the clamp frame), with its rows and
+  /// columns equilibrated (so that it does not depend on units or on EA, GA ≫ EI/L²). J̃ = I for
+  /// that rod, so 1 means "as controllable as the unloaded rod" and 0 a conjugate point.
   double min_singular_value = 0.0;
   /// σ_min(J̃(L)): how far the tip pose is from losing control of the shape.
   double tip_singular_value = 0.0;
@@ -26,6 +29,10 @@ struct StabilityResult {
   /// planar buckled shape of a rod with EIx = EIy, which turns about the line of its clamps at no
   /// cost). `stable` is then false and means "not shown stable".
   bool degenerate = false;
+  /// Free or partly released tips only: tip_stiffness_eigenvalue() over the free directions (1 for
+  /// the unloaded rod; ≤ 0 unstable). Empty for a held tip, or when the conjugate-point test has
+  /// already decided (unstable or degenerate).
+  std::optional<double> tip_stiffness_eigenvalue;
   /// One line: "stable (min σ̃ = 0.43, at the tip 0.61)", "unstable: conjugate point at s = 0.12 m"
   /// or "not shown stable: degenerate (…)".
   std::string brief() const;
@@ -35,5 +42,13 @@ struct StabilityResult {
 /// det J̃ between nodes is a conjugate point; so is a local minimum of σ_min that a finer search
 /// inside its two intervals drives below 1e-6 (a double root, as in a round rod, keeps the sign).
 StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& configuration);
+
+/// The test for the boundary condition `tip`: a clamped tip as above; a free tip, or a grasped tip
+/// with released axes, also needs the tip stiffness over its free directions positive definite
+/// (tip_stiffness.hpp): stable iff no conjugate point and tip_stiffness_eigenvalue > 1e-9;
+/// |eigenvalue| ≤ 1e-9 (a neutral direction) is degenerate.
+StabilityResult assess_stability(const ClampedRod& rod,
+                                 const RodConfiguration& configuration,
+                                 const TipCondition& tip);
 
 }  // namespace rodshape

@@ -16,6 +16,7 @@
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/arm_placement.hpp"
+#include "rodshape/solvers/model_validity.hpp"
 
 namespace rodshape {
 
@@ -52,6 +53,8 @@ struct PlanProblem {
   Workspace workspace;
   Grasp grasp;  // the components the grasp cannot transmit, and tip_T_ee
   StrainLimits limits;
+  /// What the initial tip (or base wrench) may ask of the model (check_model_validity()).
+  ModelValidityLimits validity;
   WrenchBounds wrench_bounds;
   InitialState initial;
   std::optional<PlanArm> arm;
