@@ -124,7 +124,7 @@ void write_file_atomically(const std::string& path, const std::string& content) 
       write_in_place(path, target, content);
       return;
     }
-    if (!S_ISREG(status.st_mode)) fail(path, EINVAL);  // a socket
+    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot write: it is a socket");
     permissions = status.st_mode & 07777;
   }
   replace_atomically(path, target, content, permissions);
