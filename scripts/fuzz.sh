@@ -10,7 +10,7 @@
 #                          tolerance) is a finding too (known numeric findings: fuzz/findings/)
 #   RODSHAPE_JOBS          parallel compile jobs (default 2)
 # Needs clang++ and libclang-rt-14-dev (libFuzzer). The corpus grows in build-fuzz/corpus/<target>/
-# (seeded from examples/*.yaml); a finding's reproducer is written to build-fuzz/findings/<target>/
+# (seeded from examples/*.yaml and fuzz/regressions/); a finding's reproducer is written to build-fuzz/findings/<target>/
 # and the script exits 1. Reproduce one with: (cd examples && ../build-fuzz/fuzz/<target> FILE)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -22,10 +22,11 @@ build="$root/build-fuzz"
 targets=(fuzz_task_reader fuzz_equilibrium)
 
 # -O1 with line tables, as libFuzzer recommends; assertions on.
+mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
   -DRODSHAPE_BUILD_FUZZ=ON -DRODSHAPE_BUILD_TESTS=OFF -DRODSHAPE_BUILD_BENCH=OFF \
-  -DRODSHAPE_BUILD_CLI=OFF > "$build.configure.log" 2>&1 || { cat "$build.configure.log"; exit 1; }
+  -DRODSHAPE_BUILD_CLI=OFF > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j "$jobs" --target "${targets[@]}"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
@@ -37,7 +38,7 @@ for target in "${targets[@]}"; do
   corpus="$build/corpus/$target"
   findings="$build/findings/$target"
   mkdir -p "$corpus" "$findings"
-  cp "$root"/examples/*.yaml "$corpus"/
+  cp "$root"/examples/*.yaml "$root"/fuzz/regressions/* "$corpus"/
   # In examples/, the seeds' relative robot.urdf paths lead to data/robots/. No standard input.
   (cd "$root/examples" && exec "$build/fuzz/$target" -max_total_time="$seconds" \
     -rss_limit_mb=2048 -timeout=10 -max_len=16384 -print_final_stats=1 \

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -104,28 +105,64 @@ int first_tab_indented_line(const std::string& text, int last) {
   return 0;
 }
 
-/// The line of the "---" that starts the document whose content is at `content_line` (1-based):
-/// the last "---" at or before it, else `content_line`.
-int document_start_line(const std::string& text, int content_line) {
-  const std::vector<std::string_view> lines = lines_of(text);
-  for (int k = std::min(content_line, static_cast<int>(lines.size())); k >= 1; --k) {
-    const std::string_view line = lines[static_cast<std::size_t>(k - 1)];
-    if (line.starts_with("---") &&
-        (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r'))
-      return k;
-  }
-  return content_line;
-}
-
 int line_of(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
+
+/// Builds nothing; keeps where the document started.
+class DocumentStart final : public YAML::EventHandler {
+ public:
+  std::optional<YAML::Mark> mark;
+  void OnDocumentStart(const YAML::Mark& at) override { mark = at; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&,
+                const std::string&,
+                YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&,
+                       const std::string&,
+                       YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&,
+                  const std::string&,
+                  YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+/// Where a document after the first starts, if there is one. yaml-cpp's Load() reads the first
+/// document only, and ends it early, silently, at text it cannot fit into it; a second pass over
+/// the events (cheap: no nodes are built) finds what follows. (Not YAML::LoadAll: yaml-cpp 0.7
+/// loops forever on text such as ",$# #T".)
+std::optional<YAML::Mark> second_document(const std::string& text) {
+  std::istringstream stream(text);
+  YAML::Parser parser(stream);
+  DocumentStart first, second;
+  if (!parser.HandleNextDocument(first) || !parser.HandleNextDocument(second)) return std::nullopt;
+  return second.mark;
+}
 
 }  // namespace
 
 YAML::Node load_single_document(const std::string& text, const std::string& source) {
   check_text(text, source);
-  std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(text);
+    YAML::Node root = YAML::Load(text);
+    if (const std::optional<YAML::Mark> second = second_document(text)) {
+      const int line = line_of(*second);
+      const std::vector<std::string_view> lines = lines_of(text);
+      const std::size_t row = static_cast<std::size_t>(std::max(line, 1) - 1);
+      const auto column = static_cast<std::size_t>(std::max(second->column, 0));
+      const bool marked = row < lines.size() && column <= lines[row].size() &&
+                          lines[row].substr(column).starts_with("---");
+      fail_at(source, line,
+              marked ? "a second YAML document starts here (after '---'); a task file is a single "
+                       "document"
+                     : "malformed YAML: text after the end of the document (check the "
+                       "indentation)");
+    }
+    return root;
   } catch (const YAML::DeepRecursion& error) {
     fail_at(source, line_of(error.mark),
             "lists and mappings nested too deeply (the YAML reader stops at about 500 levels)");
@@ -138,11 +175,6 @@ YAML::Node load_single_document(const std::string& text, const std::string& sour
     }
     fail_at(source, line, "malformed YAML: " + error.msg);
   }
-  if (documents.size() > 1) {
-    fail_at(source, document_start_line(text, line_of(documents[1].Mark())),
-            "a second YAML document starts here (after '---'); a task file is a single document");
-  }
-  return documents.empty() ? YAML::Node() : documents.front();
 }
 
 }  // namespace rodshape::io_detail

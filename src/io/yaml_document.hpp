@@ -1,9 +1,11 @@
 // yaml_document.hpp (private to the io area): a task file's text to one YAML document, with the
 // reader's failures said in words and with the line: bytes that are not UTF-8 text, tabs used for
-// indentation, nesting deeper than the YAML reader's limit, a second document.
+// indentation, nesting deeper than the YAML reader's limit, a second document, text after the end
+// of the document (which yaml-cpp ignores silently).
 #pragma once
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <string>

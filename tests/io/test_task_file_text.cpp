@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "rodshape/io/task_reader.hpp"
@@ -108,6 +109,31 @@ TEST(TaskFileText, SecondDocumentIsAnErrorAtItsLine) {
             "single document");
   // A leading "---" and a closing "..." belong to the one document.
   EXPECT_EQ(error_of("---\n" + kBandTask + "...\n"), "");
+}
+
+TEST(TaskFileText, TextAfterTheEndOfTheDocumentIsAnError) {
+  // yaml-cpp's Load() reads "[1, 2]" and silently drops the rest.
+  EXPECT_EQ(error_of("[1, 2]\nrod: {length: 0.29}\n"),
+            "task.yaml:2: malformed YAML: text after the end of the document (check the "
+            "indentation)");
+}
+
+// Found by fuzz_task_reader: inputs on which YAML::LoadAll (yaml-cpp 0.7) never returns. Each must
+// end, with an error, at once; SIGALRM ends the test binary if one loops.
+TEST(TaskFileText, FuzzRegressionsEndWithAnError) {
+  const std::filesystem::path directory =
+      std::filesystem::path(RODSHAPE_SOURCE_DIR) / "fuzz" / "regressions";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    std::ifstream file(entry.path(), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    ::alarm(20);
+    EXPECT_NE(error_of(text), "") << entry.path();
+    ::alarm(0);
+    ++files;
+  }
+  EXPECT_GE(files, 2);
 }
 
 }  // namespace
