@@ -49,11 +49,11 @@ class EquilibriumCommand final : public Command {
     ShootingOptions options = task.options;
     options.output_derivatives = held ? Derivatives::AllNodes : Derivatives::None;
 
-    const ShootingSolution solution =
+    const ShootingResult solution =
         solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
     const ShootingSummary& summary = solution.summary;
 
-    std::optional<StabilityReport> stability;
+    std::optional<StabilityResult> stability;
     if (held && summary.converged()) stability = assess_stability(task.rod, solution.configuration);
 
     const std::string json = equilibrium_result_json(solution, stability, task.rod);

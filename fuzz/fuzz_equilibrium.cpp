@@ -73,9 +73,9 @@ void run(const std::string& text) {
   const bool held = !std::holds_alternative<FreeTip>(task.tip);
   options.output_derivatives = held ? Derivatives::AllNodes : Derivatives::None;
 
-  const ShootingSolution solution =
+  const ShootingResult solution =
       solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
-  std::optional<StabilityReport> stability;
+  std::optional<StabilityResult> stability;
   if (solution.summary.converged()) {
     if (!finite(solution.configuration))
       garbage("the configuration is not finite");

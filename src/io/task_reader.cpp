@@ -132,7 +132,7 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
 
   PlanTask task;
   task.source = source_name;
-  PlanRequest& request = task.request;
+  PlanProblem& request = task.request;
   request.rod = read_clamped_rod(root);
   request.target.energy_weight = io_detail::kDefaultEnergyWeight;
   request.target.distance_weight = io_detail::kDefaultDistanceWeight;
