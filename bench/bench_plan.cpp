@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
-#include "rodshape/trajectory/shape_plan.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace {
 
@@ -29,7 +29,7 @@ PointSet target_points() {
 }
 
 void plan_experiment(benchmark::State& state, bool track) {
-  PlanRequest request;
+  PlanProblem request;
   request.rod = rubber_band(100);
   request.target.points = target_points();
   request.target.energy_weight = 1e-3;
@@ -37,9 +37,9 @@ void plan_experiment(benchmark::State& state, bool track) {
   PlanOptions options;
   options.steps = 7;
   options.track_between_waypoints = track;
-  ShapePlan plan;
+  PlanResult plan;
   for (auto _ : state) {
-    plan = plan_shape(request, options);
+    plan = rodshape::plan(request, options);
     if (plan.status != PlanStatus::Complete) state.SkipWithError(plan.message.c_str());
   }
   int iterations = 0;

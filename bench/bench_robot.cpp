@@ -13,11 +13,10 @@
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_model.hpp"
-#include "rodshape/robot/arm_plan.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
-#include "rodshape/robot/joint_trajectory.hpp"
-#include "rodshape/trajectory/shape_plan.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace {
 
@@ -41,15 +40,22 @@ void BM_IkWarm(benchmark::State& state) {
 
 void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
   const PlanTask task = read_plan_task(kSource + "/examples/plan_panda_s_curve.yaml");
-  const ShapePlan plan = plan_shape(task.request, task.options);
-  if (plan.status != PlanStatus::Complete || !task.robot) {
+  if (!task.problem.arm) {
+    state.SkipWithError("the S-curve task has no robot");
+    return;
+  }
+  const PlanArm& arm = *task.problem.arm;
+  PlanProblem rod_only = task.problem;  // the path as planned without the arm's reach
+  rod_only.arm.reset();
+  const PlanResult plan = rodshape::plan(rod_only, task.options);
+  if (plan.status != PlanStatus::Complete) {
     state.SkipWithError("the S-curve plan did not complete");
     return;
   }
-  JointTrajectory joints;
+  JointTrajectoryResult joints;
   for (auto _ : state) {
-    joints = joint_trajectory(task.robot->arm, plan.end_effector_path, task.robot->placement,
-                              task.robot->options.joints);
+    joints =
+        joint_trajectory(arm.model, plan.end_effector_path, arm.placement, task.options.arm.joints);
     benchmark::DoNotOptimize(joints.q.data());
   }
   if (!joints.complete()) state.SkipWithError(joints.message.c_str());
@@ -69,12 +75,16 @@ void BM_ArmReachPanda(benchmark::State& state) {
 
 void BM_PlanWithArm(benchmark::State& state, const char* example) {
   const PlanTask task = read_plan_task(kSource + "/examples/" + example);
-  ArmPlan arm;
-  for (auto _ : state) {
-    arm = plan_with_arm(task.request, task.options, task.robot->arm, task.robot->placement,
-                        task.robot->options);
-    benchmark::DoNotOptimize(arm.joints.q.data());
+  if (!task.problem.arm) {
+    state.SkipWithError("the task has no robot");
+    return;
   }
+  PlanResult result;
+  for (auto _ : state) {
+    result = plan(task.problem, task.options);
+    benchmark::DoNotOptimize(result.arm->joints.q.data());
+  }
+  const ArmPlanResult& arm = *result.arm;
   if (!arm.reachable()) state.SkipWithError(arm.message.c_str());
   state.counters["replans"] = static_cast<double>(arm.replans.size());
   state.counters["samples"] = static_cast<double>(arm.joints.t.size());

@@ -96,7 +96,7 @@ void BM_SolveClampedClampedCold(benchmark::State& state) {
   const ShootingOptions options = bench_options();
   ShootingSummary summary;
   for (auto _ : state) {
-    const ShootingSolution solution = solve_equilibrium(rod, tip, BaseWrench{}, options);
+    const ShootingResult solution = solve_equilibrium(rod, tip, BaseWrench{}, options);
     if (!solution.summary.converged()) state.SkipWithError("cold solve did not converge");
     summary = solution.summary;
   }
@@ -106,13 +106,13 @@ void BM_SolveClampedClampedCold(benchmark::State& state) {
 void BM_SolveClampedClampedWarm(benchmark::State& state) {
   const ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
   const ShootingOptions options = bench_options();
-  const ShootingSolution solved = solve_equilibrium(rod, ClampedTip{bent_tip()}, {}, options);
+  const ShootingResult solved = solve_equilibrium(rod, ClampedTip{bent_tip()}, {}, options);
   Pose moved = bent_tip();
   moved.position += Eigen::Vector3d(1e-3, 0.0, 0.0);  // the tip moved by 1 mm
   const TipCondition tip = ClampedTip{moved};
   ShootingSummary summary;
   for (auto _ : state) {
-    const ShootingSolution solution = solve_equilibrium(rod, tip, solved.base_wrench, options);
+    const ShootingResult solution = solve_equilibrium(rod, tip, solved.base_wrench, options);
     if (!solution.summary.converged()) state.SkipWithError("warm solve did not converge");
     summary = solution.summary;
   }

@@ -14,7 +14,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
-#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
 
 namespace rodshape::cli {
 

@@ -22,34 +22,34 @@ inline std::string format_value(double value) {
 
 inline void require_finite(const std::string& field, double value) {
   if (!std::isfinite(value))
-    throw InputError(field + " = " + format_value(value) + " must be finite");
+    throw InputError(field, " = " + format_value(value) + " must be finite");
 }
 
 inline void require_positive(const std::string& field, double value) {
   require_finite(field, value);
-  if (!(value > 0.0)) throw InputError(field + " = " + format_value(value) + " must be > 0");
+  if (!(value > 0.0)) throw InputError(field, " = " + format_value(value) + " must be > 0");
 }
 
 inline void require_non_negative(const std::string& field, double value) {
   require_finite(field, value);
-  if (value < 0.0) throw InputError(field + " = " + format_value(value) + " must be >= 0");
+  if (value < 0.0) throw InputError(field, " = " + format_value(value) + " must be >= 0");
 }
 
 template <typename Derived>
 void require_finite(const std::string& field, const Eigen::MatrixBase<Derived>& value) {
   for (Eigen::Index i = 0; i < value.size(); ++i)
     if (!std::isfinite(value(i)))
-      throw InputError(field + "[" + std::to_string(i) + "] = " + format_value(value(i)) +
-                       " must be finite");
+      throw InputError(
+          field, "[" + std::to_string(i) + "] = " + format_value(value(i)) + " must be finite");
 }
 
 /// A finite position and a rotation (RᵀR = I, det R = 1, within 1e-6); `field` names the pose,
 /// e.g. "base" or "tip".
 inline void require_pose(const std::string& field, const Pose& pose) {
   require_finite(field + ".position", pose.position);
-  if (!pose.rotation.allFinite()) throw InputError(field + ".rotation must be finite");
+  if (!pose.rotation.allFinite()) throw InputError(field, ".rotation must be finite");
   if (!is_rotation(pose.rotation, 1e-6))
-    throw InputError(field + ".rotation is not a rotation (RᵀR = I and det R = 1 within 1e-6)");
+    throw InputError(field, ".rotation is not a rotation (RᵀR = I and det R = 1 within 1e-6)");
 }
 
 }  // namespace rodshape::detail

@@ -38,11 +38,11 @@ int main() {
   tip.pose.position = {0.12, 0.0, 0.22};
   tip.pose.rotation =
       Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  const ShootingSolution solution = solve_equilibrium(rod, tip);
+  const ShootingResult solution = solve_equilibrium(rod, tip);
   std::printf("equilibrium: %s\n", solution.summary.brief().c_str());
   if (!solution.summary.converged()) return 1;
 
-  const StabilityReport stability = assess_stability(rod, solution.configuration);
+  const StabilityResult stability = assess_stability(rod, solution.configuration);
   std::printf("energy %.6g J, %s (min sigma %.3g)\n", solution.configuration.energy,
               stability.stable ? "stable" : "not shown stable", stability.min_singular_value);
   return 0;

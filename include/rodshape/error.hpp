@@ -13,10 +13,26 @@ class RodshapeError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Bad input: the message names the field and the value, e.g. "rod.length = -0.3 must be > 0".
+/// Bad input: the message names the field and the value, e.g.
+/// "PlanOptions.steps = 0 must be >= 1". The library names its own fields (C++ type and member);
+/// io says them as the task file does ("trajectory.steps = 0 must be >= 1") from field() and
+/// problem(), by a table (io/field_names.hpp), not by rewriting the text.
 class InputError : public RodshapeError {
  public:
-  using RodshapeError::RodshapeError;
+  /// A message that names no single field (or names it in its own words).
+  explicit InputError(const std::string& message) : RodshapeError(message), problem_(message) {}
+  /// what() is field + problem, e.g. "ClampedRod.intervals" + " = 0 must be >= 1".
+  InputError(std::string field, std::string problem)
+      : RodshapeError(field + problem), field_(std::move(field)), problem_(std::move(problem)) {}
+
+  /// The field the message is about, in the library's names; empty when none is named apart.
+  const std::string& field() const noexcept { return field_; }
+  /// The rest of the message after the field (the whole message when field() is empty).
+  const std::string& problem() const noexcept { return problem_; }
+
+ private:
+  std::string field_;
+  std::string problem_;
 };
 
 }  // namespace rodshape

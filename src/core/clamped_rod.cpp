@@ -6,11 +6,11 @@ namespace rodshape {
 
 void ClampedRod::validate() const {
   properties.validate();
-  detail::require_finite("distributed_load.force", load.force);
-  detail::require_finite("distributed_load.moment", load.moment);
-  detail::require_pose("base", clamp);
+  detail::require_finite("ClampedRod.load.force", load.force);
+  detail::require_finite("ClampedRod.load.moment", load.moment);
+  detail::require_pose("ClampedRod.clamp", clamp);
   if (intervals < 1)
-    throw InputError("rod.nodes = " + std::to_string(intervals + 1) + " must be >= 2");
+    throw InputError("ClampedRod.intervals", " = " + std::to_string(intervals) + " must be >= 1");
 }
 
 }  // namespace rodshape

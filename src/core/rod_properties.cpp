@@ -14,15 +14,15 @@ ConstitutiveModel constitutive_model_from_string(const std::string& name,
                                                  const std::string& field) {
   if (name == "cosserat") return ConstitutiveModel::Cosserat;
   if (name == "kirchhoff") return ConstitutiveModel::Kirchhoff;
-  throw InputError(field + " = '" + name + "' must be 'cosserat' or 'kirchhoff'");
+  throw InputError(field, " = '" + name + "' must be 'cosserat' or 'kirchhoff'");
 }
 
 void RodProperties::validate() const {
-  detail::require_positive("rod.length", length);
-  static const char* const tra_names[] = {"rod.stiffness.GA", "rod.stiffness.GA",
-                                          "rod.stiffness.EA"};
-  static const char* const rot_names[] = {"rod.stiffness.EIx", "rod.stiffness.EIy",
-                                          "rod.stiffness.GJ"};
+  detail::require_positive("RodProperties.length", length);
+  static const char* const tra_names[] = {"RodProperties.K_tra[0]", "RodProperties.K_tra[1]",
+                                          "RodProperties.K_tra[2]"};
+  static const char* const rot_names[] = {"RodProperties.K_rot[0]", "RodProperties.K_rot[1]",
+                                          "RodProperties.K_rot[2]"};
   for (int i = 0; i < 3; ++i) {
     // The Kirchhoff model never uses K_tra (v = ṽ): it may be +inf there ("not given").
     if (model == ConstitutiveModel::Kirchhoff &&
@@ -31,11 +31,12 @@ void RodProperties::validate() const {
     detail::require_positive(tra_names[i], K_tra(i));
     detail::require_positive(rot_names[i], K_rot(i));
   }
-  detail::require_finite("rod.rest_strain", v_rest);
+  detail::require_finite("RodProperties.v_rest", v_rest);
   if (!(v_rest.z() > 0.0))
-    throw InputError("rod.rest_strain[2] = " + detail::format_value(v_rest.z()) + " must be > 0");
-  detail::require_finite("rod.rest_curvature", u_rest);
-  detail::require_non_negative("rod.mass_per_length", mass_per_length);
+    throw InputError("RodProperties.v_rest[2]",
+                     " = " + detail::format_value(v_rest.z()) + " must be > 0");
+  detail::require_finite("RodProperties.u_rest", u_rest);
+  detail::require_non_negative("RodProperties.mass_per_length", mass_per_length);
 }
 
 namespace {
@@ -46,24 +47,24 @@ double stiffness_or(const std::optional<double>& override_value,
                     const RodDescription& d,
                     const char* name,
                     double (*from_section)(const CrossSection&, const Material&)) {
-  const std::string field = std::string("rod.stiffness.") + name;
+  const std::string field = std::string("RodDescription.stiffness.") + name;
   if (override_value) {
     detail::require_positive(field, *override_value);
     return *override_value;
   }
   if (!d.section)
-    throw InputError(field + " is not given and rod.section is missing to compute it");
+    throw InputError(field, " is not given and RodDescription.section is missing to compute it");
   if (!d.material)
-    throw InputError(field + " is not given and rod.material is missing to compute it");
+    throw InputError(field, " is not given and RodDescription.material is missing to compute it");
   return from_section(*d.section, *d.material);
 }
 
 }  // namespace
 
 RodProperties make_rod_properties(const RodDescription& d) {
-  detail::require_positive("rod.length", d.length);
-  if (d.section) d.section->validate("rod.section");
-  if (d.material) d.material->validate("rod.material");
+  detail::require_positive("RodDescription.length", d.length);
+  if (d.section) d.section->validate("RodDescription.section");
+  if (d.material) d.material->validate("RodDescription.material");
 
   RodProperties p;
   p.length = d.length;

@@ -8,7 +8,7 @@ namespace rodshape::io_detail {
 
 namespace {
 
-Json stability_object(const std::optional<StabilityReport>& stability) {
+Json stability_object(const std::optional<StabilityResult>& stability) {
   if (!stability) return nullptr;
   return {
       {"stable", stability->stable},
@@ -109,7 +109,7 @@ Json json_pose(const Pose& pose) {
 
 Json configuration_json(const RodConfiguration& configuration,
                         const BaseWrench& base_wrench,
-                        const std::optional<StabilityReport>& stability,
+                        const std::optional<StabilityResult>& stability,
                         ConstitutiveModel model) {
   const bool has_shape = configuration.nodes() > 0;
   Json result;

@@ -39,7 +39,7 @@ Json json_pose(const Pose& pose);
 /// energy, tip and tip_wrench.
 Json configuration_json(const RodConfiguration& configuration,
                         const BaseWrench& base_wrench,
-                        const std::optional<StabilityReport>& stability,
+                        const std::optional<StabilityResult>& stability,
                         ConstitutiveModel model);
 
 /// Pretty-printed with two-space indentation, except that a list of scalars stays on one line (so

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/json_format.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/solvers/solve_status.hpp"
@@ -37,29 +38,25 @@ Json target_object(const ShapeTarget& target) {
   };
 }
 
-Json feasibility_object(const PlanTask& task) {
-  const PlanRequest& request = task.request;
-  const TargetFeasibility feasibility =
-      check_feasibility(request.target, request.rod, request.limits.max_axial_strain.value_or(0.0));
+Json feasibility_object(const FeasibilityResult& feasibility, const PointSet& target) {
   const int offending = feasibility.offending_point;
-  const bool has_offending =
-      offending >= 0 && offending < static_cast<int>(request.target.points.size());
+  const bool has_offending = offending >= 0 && offending < static_cast<int>(target.size());
   return {
       {"feasible", feasibility.feasible},
-      {"reason", feasibility.feasible ? Json(nullptr) : Json(feasibility.reason)},
+      {"reason",
+       feasibility.feasible ? Json(nullptr) : Json(fields_in_task_names(feasibility.reason))},
       {"offending_point", has_offending ? Json(offending) : Json(nullptr)},
       {"offending_position",
-       has_offending ? json_vector(request.target.points[static_cast<std::size_t>(offending)])
-                     : Json(nullptr)},
+       has_offending ? json_vector(target[static_cast<std::size_t>(offending)]) : Json(nullptr)},
       {"curve_length", json_number(feasibility.curve_length)},
       {"reach", json_number(feasibility.reach)},
   };
 }
 
-Json solver_object(const ShapeSolution& solution) {
+Json solver_object(const ShapeResult& solution) {
   return {
       {"status", to_string(solution.status)},
-      {"message", solution.message},
+      {"message", fields_in_task_names(solution.message)},
       {"iterations", solution.ipopt.iterations},
       {"ipopt_status", solution.ipopt.application_status_name},
       {"objective", json_number(solution.ipopt.objective)},
@@ -69,7 +66,7 @@ Json solver_object(const ShapeSolution& solution) {
 }
 
 Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
-  const ShapeSolution& solution = step.solution;
+  const ShapeResult& solution = step.solution;
   const ShapeCostBreakdown& cost = solution.cost;
   Json result;
   result["step"] = number;
@@ -92,9 +89,9 @@ Json step_object(const PlanStep& step, int number, ConstitutiveModel model) {
   return result;
 }
 
-Json final_object(const ShapePlan& plan) {
+Json final_object(const PlanResult& plan) {
   if (plan.steps.empty()) return nullptr;
-  const ShapeSolution& last = plan.steps.back().solution;
+  const ShapeResult& last = plan.steps.back().solution;
   int iterations = 0;
   for (const PlanStep& step : plan.steps) iterations += step.solution.ipopt.iterations;
   double mean = 0.0;
@@ -110,7 +107,7 @@ Json final_object(const ShapePlan& plan) {
   };
 }
 
-Json path_object(const ShapePlan& plan) {
+Json path_object(const PlanResult& plan) {
   const std::vector<TimedPose>& path = plan.end_effector_path;
   Json waypoints = Json::array();
   for (const PlanStep& step : plan.steps) waypoints.push_back(json_pose(step.end_effector));
@@ -123,7 +120,7 @@ Json path_object(const ShapePlan& plan) {
   };
 }
 
-Json tracking_object(const TrackingReport& tracking) {
+Json tracking_object(const TrackingResult& tracking) {
   return {
       {"performed", tracking.performed},
       {"arrival_deviation", numbers(tracking.arrival_deviation)},
@@ -135,11 +132,11 @@ Json tracking_object(const TrackingReport& tracking) {
   };
 }
 
-Json joint_trajectory_object(const JointTrajectory& joints) {
+Json joint_trajectory_object(const JointTrajectoryResult& joints) {
   const bool complete = joints.complete();
   return {
       {"status", to_string(joints.status)},
-      {"message", joints.message},
+      {"message", fields_in_task_names(joints.message)},
       {"file", complete ? Json("joint_trajectory.csv") : Json(nullptr)},
       {"samples", static_cast<int>(joints.t.size())},
       {"duration", complete ? json_number(joints.duration()) : Json(nullptr)},
@@ -178,7 +175,8 @@ Json shell_object(const Workspace::ReachShell& shell) {
           {"tip_point", json_vector(shell.tip_point)}};
 }
 
-Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
+Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
+  const ArmPlanResult& arm = *plan.arm;
   Json reach = nullptr;
   if (arm.reach && arm.shell) {
     reach = shell_object(*arm.shell);
@@ -188,22 +186,22 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
     // |w - c| where the rod starts and at each step: how close the plan came to the shell.
     Json distances = Json::array();
     const auto distance = [&](const Pose& tip) { return json_number(arm.shell->distance(tip)); };
-    distances.push_back(distance(arm.plan.initial_configuration.tip()));
-    for (const PlanStep& step : arm.plan.steps)
+    distances.push_back(distance(plan.initial_configuration.tip()));
+    for (const PlanStep& step : plan.steps)
       distances.push_back(distance(step.solution.configuration.tip()));
     reach["wrist_distances"] = std::move(distances);
   }
   Json replans = Json::array();
   for (const Replan& replan : arm.replans) {
     Json entry = shell_object(replan.shell);
-    entry["reason"] = replan.reason;
+    entry["reason"] = fields_in_task_names(replan.reason);
     entry["wrist_distance"] = json_number(replan.wrist_distance);
     replans.push_back(std::move(entry));
   }
   Json waypoints = Json::array();
   for (const Eigen::VectorXd& q : arm.waypoint_q) waypoints.push_back(joint_values(q));
   return {{"status", to_string(arm.status)},
-          {"message", arm.message},
+          {"message", fields_in_task_names(arm.message)},
           {"reach", std::move(reach)},
           {"replans", std::move(replans)},
           {"waypoint_joint_positions", std::move(waypoints)}};
@@ -211,21 +209,21 @@ Json robot_object(const ArmPlan& arm, const ArmPlanOptions& options) {
 
 }  // namespace
 
-std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const ArmPlan* arm) {
-  const PlanRequest& request = task.request;
+std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
+  const PlanProblem& request = task.problem;
   const ConstitutiveModel model = request.rod.properties.model;
   const bool complete = plan.status == PlanStatus::Complete;
 
   Json result;
   result["status"] = to_string(plan.status);
-  result["message"] = plan.message;
-  result["reason"] = complete ? Json(nullptr) : Json(plan.message);
+  result["message"] = fields_in_task_names(plan.message);
+  result["reason"] = complete ? Json(nullptr) : Json(fields_in_task_names(plan.message));
   result["failed_step"] = plan.failed_step >= 0 ? Json(plan.failed_step + 1) : Json(nullptr);
   result["steps_requested"] = task.options.steps;
   result["steps_completed"] = static_cast<int>(plan.steps.size());
   result["source"] = task.source;
   result["target"] = target_object(request.target);
-  result["feasibility"] = feasibility_object(task);
+  result["feasibility"] = feasibility_object(plan.feasibility, task.problem.target.points);
   result["final"] = final_object(plan);
   result["initial"] = plan.initial_configuration.nodes() > 0
                           ? io_detail::configuration_json(plan.initial_configuration,
@@ -238,12 +236,12 @@ std::string plan_result_json(const ShapePlan& plan, const PlanTask& task, const 
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
-  result["robot"] = arm && task.robot ? robot_object(*arm, task.robot->options) : Json(nullptr);
-  result["joint_trajectory"] = arm ? joint_trajectory_object(arm->joints) : Json(nullptr);
+  result["robot"] = plan.arm ? robot_object(plan, task.options.arm) : Json(nullptr);
+  result["joint_trajectory"] = plan.arm ? joint_trajectory_object(plan.arm->joints) : Json(nullptr);
   return io_detail::format_json(result);
 }
 
-std::string joint_trajectory_csv(const JointTrajectory& trajectory) {
+std::string joint_trajectory_csv(const JointTrajectoryResult& trajectory) {
   std::ostringstream out;
   out << "t";
   for (const std::string& name : trajectory.joint_names) out << ',' << name;
@@ -256,7 +254,7 @@ std::string joint_trajectory_csv(const JointTrajectory& trajectory) {
   return out.str();
 }
 
-std::string joint_trajectory_json(const JointTrajectory& trajectory) {
+std::string joint_trajectory_json(const JointTrajectoryResult& trajectory) {
   Json points = Json::array();
   for (std::size_t i = 0; i < trajectory.t.size() && i < trajectory.q.size(); ++i) {
     Json point;

@@ -89,17 +89,23 @@ Grasp read_grasp_section(const YamlField& grasp) {
                          "zero_wrench (axes fx, fy, fz, mx, my, mz)"}});
   Grasp result;
   if (const YamlField axes = grasp.get("zero_wrench"); axes.present())
-    result.zero_wrench = read_wrench_axes(axes);
+    result.released = read_wrench_axes(axes);
   if (const YamlField offset = grasp.get("tip_to_end_effector"); offset.present())
     result.tip_to_end_effector = read_pose(offset);
   return result;
 }
 
-std::optional<Pose> read_initial_section(const YamlField& initial) {
-  initial.expect_mapping({"tip"}, {{"position", "give the initial tip pose as initial.tip"},
-                                   {"rotation", "give the initial tip pose as initial.tip"}});
-  if (const YamlField tip = initial.get("tip"); tip.present()) return read_pose(tip);
-  return std::nullopt;
+InitialState read_initial_section(const YamlField& initial) {
+  initial.expect_mapping({"tip", "base_wrench"},
+                         {{"position", "give the initial tip pose as initial.tip"},
+                          {"rotation", "give the initial tip pose as initial.tip"}});
+  const YamlField tip = initial.get("tip");
+  const YamlField wrench = initial.get("base_wrench");
+  if (tip.present() && wrench.present())
+    wrench.fail(wrench.path() + ": give initial.tip or initial.base_wrench, not both");
+  if (tip.present()) return InitialState::held_at(read_pose(tip));
+  if (wrench.present()) return InitialState::equilibrium(read_wrench(wrench));
+  return InitialState::rest();
 }
 
 StrainLimits read_limits_section(const YamlField& limits) {
@@ -148,7 +154,7 @@ void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& o
   read_integer(optimizer, "print_level", options.print_level);
 }
 
-PlanRobot read_robot_section(const YamlField& robot, const std::string& task_directory) {
+void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {
   robot.expect_mapping(
       {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach"},
       {{"flange_T_ee", "the end effector on the flange is robot.flange_to_end_effector"},
@@ -178,7 +184,8 @@ PlanRobot read_robot_section(const YamlField& robot, const std::string& task_dir
     urdf.fail(urdf.path() + ": " + message);
   }
 
-  PlanRobot result{path.string(), std::move(*arm), {}, {}};
+  PlanArm& result = task.problem.arm.emplace(PlanArm{std::move(*arm), {}});
+  ArmPlanOptions& options = task.options.arm;
   if (const YamlField base = robot.get("base"); base.present())
     result.placement.world_T_base = read_pose(base);
   if (const YamlField offset = robot.get("flange_to_end_effector"); offset.present())
@@ -188,21 +195,18 @@ PlanRobot read_robot_section(const YamlField& robot, const std::string& task_dir
     Eigen::VectorXd q(static_cast<Eigen::Index>(values.size()));
     for (std::size_t i = 0; i < values.size(); ++i)
       q(static_cast<Eigen::Index>(i)) = values[i].number();
-    seed.located([&] { result.arm.check_joint_positions(q, seed.path()); });
-    result.options.joints.seed = q;
+    seed.located([&] { result.model.check_joint_positions(q, seed.path()); });
+    options.joints.seed = q;
   }
   if (const YamlField reach = robot.get("reach"); reach.present()) {
     reach.expect_mapping({"use", "margin", "tightening", "max_replans", "samples"});
-    if (const YamlField use = reach.get("use"); use.present())
-      result.options.use_reach = use.boolean();
-    read_number(reach, "margin", result.options.reach_margin);
-    read_number(reach, "tightening", result.options.replan_tightening);
-    read_integer(reach, "max_replans", result.options.max_replans);
-    read_integer(reach, "samples", result.options.reach.samples);
-    // The names InputError uses ("reach.margin", ...) are the fields of this section.
-    reach.located([&] { result.options.validate(); });
+    if (const YamlField use = reach.get("use"); use.present()) options.use_reach = use.boolean();
+    read_number(reach, "margin", options.reach_margin);
+    read_number(reach, "tightening", options.replan_tightening);
+    read_integer(reach, "max_replans", options.max_replans);
+    read_integer(reach, "samples", options.reach.samples);
+    reach.located([&] { options.validate(); });
   }
-  return result;
 }
 
 }  // namespace rodshape::io_detail

@@ -15,7 +15,7 @@
 #include "rodshape/optimisation/shape_optimizer.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/optimisation/workspace.hpp"
-#include "rodshape/trajectory/shape_plan.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape::io_detail {
 
@@ -39,8 +39,8 @@ Workspace read_workspace_section(const YamlField& workspace);
 /// `grasp`: zero_wrench (axes among fx ... mz), tip_to_end_effector (a pose).
 Grasp read_grasp_section(const YamlField& grasp);
 
-/// `initial`: tip (a pose); nullopt when the section or its tip is left out (the rod at rest).
-std::optional<Pose> read_initial_section(const YamlField& initial);
+/// `initial`: tip (a pose) or base_wrench {force, moment}; the rod at rest when both are left out.
+InitialState read_initial_section(const YamlField& initial);
 
 /// `limits`: max_curvature, max_axial_strain.
 StrainLimits read_limits_section(const YamlField& limits);
@@ -57,6 +57,7 @@ void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& o
 /// `robot`: urdf (relative to `task_directory` unless absolute), base_link, tip_link, base (a
 /// pose), flange_to_end_effector (a pose), seed (joint positions). Reads the URDF; its errors are
 /// reported at the field they concern (robot.tip_link for an unknown tip link, else robot.urdf).
-PlanRobot read_robot_section(const YamlField& robot, const std::string& task_directory);
+/// Into `task`: problem.arm and options.arm.
+void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task);
 
 }  // namespace rodshape::io_detail

@@ -234,8 +234,8 @@ std::string millimetres(double metres) {
 
 }  // namespace
 
-std::string plan_svg(const ShapePlan& plan, const PlanTask& task) {
-  const PlanRequest& request = task.request;
+std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
+  const PlanProblem& request = task.problem;
   const int n = static_cast<int>(plan.steps.size());
 
   // Everything drawn decides the view.
@@ -263,7 +263,7 @@ std::string plan_svg(const ShapePlan& plan, const PlanTask& task) {
   if (plan.tracking.refinements > 0) title << ", " << plan.tracking.refinements << " inserted";
   title << ")";
   if (n > 0) {
-    const ShapeSolution& last = plan.steps.back().solution;
+    const ShapeResult& last = plan.steps.back().solution;
     title << "; final max distance " << millimetres(last.cost.max_distance) << ", energy "
           << std::setprecision(3) << last.cost.energy << " J";
   }

@@ -10,8 +10,8 @@
 
 namespace rodshape {
 
-std::string equilibrium_result_json(const ShootingSolution& solution,
-                                    const std::optional<StabilityReport>& stability,
+std::string equilibrium_result_json(const ShootingResult& solution,
+                                    const std::optional<StabilityResult>& stability,
                                     const ClampedRod& rod) {
   using io_detail::Json;
   const ShootingSummary& summary = solution.summary;

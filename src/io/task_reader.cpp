@@ -12,7 +12,6 @@
 #include "io/plan_sections.hpp"
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
-#include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 
 namespace rodshape {
@@ -91,15 +90,14 @@ std::string read_text_file(const std::string& path) {
   return detail::read_capped_file(path, kTaskFileCap);
 }
 
-/// ShootingOptions::validate() names its own fields ("residual_tolerance = ..."); say them as the
-/// task file does.
-std::string solver_field_message(std::string message) {
-  const std::string_view residual_tolerance = "residual_tolerance";
-  if (message.rfind(residual_tolerance, 0) == 0) {
-    return "solver.tolerance" + message.substr(residual_tolerance.size());
+/// Lower bounds above upper ones, in the section's own names.
+void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field) {
+  static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
+                                        "moment[0]", "moment[1]", "moment[2]"};
+  for (int k = 0; k < 6; ++k) {
+    if (bounds.lower(k) > bounds.upper(k))
+      field.fail(std::string("wrench_bounds: lower.") + kNames[k] + " is above upper." + kNames[k]);
   }
-  if (message.rfind("solver.", 0) == 0) return message;
-  return "solver." + message;
 }
 
 }  // namespace
@@ -118,11 +116,7 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
   }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
-  try {
-    task.options.validate();
-  } catch (const InputError& error) {
-    root.fail_located(solver_field_message(error.what()));
-  }
+  root.located([&] { task.options.validate(); });
   return task;
 }
 
@@ -132,62 +126,42 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
 
   PlanTask task;
   task.source = source_name;
-  PlanProblem& request = task.request;
-  request.rod = read_clamped_rod(root);
-  request.target.energy_weight = io_detail::kDefaultEnergyWeight;
-  request.target.distance_weight = io_detail::kDefaultDistanceWeight;
-  io_detail::read_target_section(root.require("target"), request.target);
+  task.lines = root.key_lines(2);
+  PlanProblem& problem = task.problem;
+  problem.rod = read_clamped_rod(root);
+  problem.target.energy_weight = io_detail::kDefaultEnergyWeight;
+  problem.target.distance_weight = io_detail::kDefaultDistanceWeight;
+  io_detail::read_target_section(root.require("target"), problem.target);
   if (const YamlField weights = root.get("weights"); weights.present())
-    io_detail::read_weights_section(weights, request.target);
+    io_detail::read_weights_section(weights, problem.target);
   if (const YamlField workspace = root.get("workspace"); workspace.present())
-    request.workspace = io_detail::read_workspace_section(workspace);
+    problem.workspace = io_detail::read_workspace_section(workspace);
   if (const YamlField grasp = root.get("grasp"); grasp.present())
-    request.grasp = io_detail::read_grasp_section(grasp);
+    problem.grasp = io_detail::read_grasp_section(grasp);
   if (const YamlField initial = root.get("initial"); initial.present())
-    request.initial_tip = io_detail::read_initial_section(initial);
+    problem.initial = io_detail::read_initial_section(initial);
   if (const YamlField limits = root.get("limits"); limits.present())
-    request.limits = io_detail::read_limits_section(limits);
-  const YamlField bounds = root.get("wrench_bounds");
-  if (bounds.present()) request.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
+    problem.limits = io_detail::read_limits_section(limits);
+  if (const YamlField bounds = root.get("wrench_bounds"); bounds.present()) {
+    problem.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
+    check_wrench_bounds(problem.wrench_bounds, bounds);
+  }
   if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
     io_detail::read_trajectory_section(trajectory, task.options);
   if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
     io_detail::read_optimizer_section(optimizer, task.options.optimizer);
   if (const YamlField robot = root.get("robot"); robot.present()) {
-    task.robot = io_detail::read_robot_section(
-        robot, std::filesystem::path(source_name).parent_path().string());
+    io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
+                                  task);
   }
 
-  // Whole-task checks by the library; their messages name the field, we add file and line.
+  // Whole-task checks by the library; their messages name the field, we add file and line. (That
+  // the workspace holds the initial tip is checked by plan(), which solves the initial
+  // equilibrium.)
   root.located([&] {
-    request.target.validate();
-    request.workspace.validate();
-    request.limits.validate();
+    problem.validate();
     task.options.validate();
   });
-  for (int k = 0; k < 6; ++k) {
-    if (request.wrench_bounds.lower(k) > request.wrench_bounds.upper(k)) {
-      static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
-                                            "moment[0]", "moment[1]", "moment[2]"};
-      bounds.fail(std::string("wrench_bounds: lower.") + kNames[k] + " is above upper." +
-                  kNames[k]);
-    }
-  }
-  // The tip must start inside the workspace (plan_shape checks this too, without a line): the
-  // initial tip pose, or the tip of the rod at rest.
-  if (!request.workspace.unbounded()) {
-    const Pose tip_pose =
-        request.initial_tip ? *request.initial_tip : integrate(request.rod, BaseWrench{}).tip();
-    if (!request.workspace.contains(tip_pose, 1e-9)) {
-      const Eigen::Vector3d& tip = tip_pose.position;
-      std::ostringstream where;
-      where.precision(4);
-      where << "[" << tip.x() << ", " << tip.y() << ", " << tip.z() << "]";
-      root.get("workspace")
-          .fail("workspace excludes the initial tip at " + where.str() +
-                (request.initial_tip ? " (initial.tip)" : " (the rod at rest; set initial.tip)"));
-    }
-  }
   return task;
 }
 

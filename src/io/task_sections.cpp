@@ -239,7 +239,7 @@ Wrench read_wrench(const YamlField& wrench) {
 // ---- tip ----------------------------------------------------------------------------------------
 
 std::array<bool, 6> read_wrench_axes(const YamlField& axes) {
-  // Order of GraspedTip::released and Grasp::zero_wrench: force x, y, z, then moment x, y, z.
+  // Order of GraspedTip::released and Grasp::released: force x, y, z, then moment x, y, z.
   static const std::vector<std::string_view> kAxes = {"fx", "fy", "fz", "mx", "my", "mz"};
   std::array<bool, 6> result{};
   for (const YamlField& element : axes.elements()) {

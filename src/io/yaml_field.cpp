@@ -195,6 +195,18 @@ void YamlField::expect_mapping(const std::vector<std::string_view>& allowed,
   }
 }
 
+std::map<std::string, int> YamlField::key_lines(int depth) const {
+  std::map<std::string, int> lines;
+  if (depth < 1 || !present_ || !node_.IsMap()) return lines;
+  for (const auto& entry : node_) {
+    if (!entry.first.IsScalar()) continue;
+    const YamlField value = get(entry.first.Scalar());
+    lines.emplace(value.path(), line_of(entry.first));
+    lines.merge(value.key_lines(depth - 1));
+  }
+  return lines;
+}
+
 YamlField YamlField::get(std::string_view key) const {
   const std::string key_path = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
   if (!present_ || !node_.IsMap()) {

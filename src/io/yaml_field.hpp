@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
 
 namespace rodshape::io_detail {
 
@@ -63,6 +65,9 @@ class YamlField {
   YamlField require(std::string_view key) const;
   bool has(std::string_view key) const { return get(key).present(); }
 
+  /// The line of each key under this mapping, `depth` levels deep, by path ("initial.tip").
+  std::map<std::string, int> key_lines(int depth) const;
+
   // ---- sequences
   // ---------------------------------------------------------------------------------
   /// Requires a sequence; its elements have paths "<path>[i]".
@@ -87,14 +92,15 @@ class YamlField {
   Eigen::Vector3d vector3() const;
 
   /// Runs a library call that may throw InputError whose message starts with a field path
-  /// ("rod.length = -0.3 must be > 0") and rethrows it with this file and the line of the deepest
+  /// ("rod.length = -0.3 must be > 0"; a library field is said in the task file's name, see
+  /// field_names.hpp) and rethrows it with this file and the line of the deepest
   /// node of that path in the document (or of this field when the path is not in the document).
   template <class Call>
   decltype(auto) located(Call&& call) const {
     try {
       return std::forward<Call>(call)();
     } catch (const InputError& error) {
-      fail_located(error.what());
+      fail_located(in_task_names(error));
     }
   }
   /// The same for a message already in hand.

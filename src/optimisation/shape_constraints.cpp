@@ -7,8 +7,9 @@
 namespace rodshape {
 
 void StrainLimits::validate() const {
-  if (max_curvature) detail::require_positive("limits.max_curvature", *max_curvature);
-  if (max_axial_strain) detail::require_positive("limits.max_axial_strain", *max_axial_strain);
+  if (max_curvature) detail::require_positive("StrainLimits.max_curvature", *max_curvature);
+  if (max_axial_strain)
+    detail::require_positive("StrainLimits.max_axial_strain", *max_axial_strain);
 }
 
 }  // namespace rodshape

@@ -15,15 +15,16 @@ namespace rodshape {
 
 void ShapeOptimizerOptions::validate() const {
   if (max_iterations < 0)
-    throw InputError("optimizer.max_iterations = " + std::to_string(max_iterations) +
-                     " must be >= 0");
-  detail::require_positive("optimizer.tolerance", tolerance);
-  detail::require_positive("optimizer.constraint_tolerance", constraint_tolerance);
+    throw InputError("ShapeOptimizerOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be >= 0");
+  detail::require_positive("ShapeOptimizerOptions.tolerance", tolerance);
+  detail::require_positive("ShapeOptimizerOptions.constraint_tolerance", constraint_tolerance);
   if (multi_starts < 0)
-    throw InputError("optimizer.multi_starts = " + std::to_string(multi_starts) + " must be >= 0");
+    throw InputError("ShapeOptimizerOptions.multi_starts",
+                     " = " + std::to_string(multi_starts) + " must be >= 0");
   if (print_level < 0 || print_level > 12)
-    throw InputError("optimizer.print_level = " + std::to_string(print_level) +
-                     " must be in [0, 12]");
+    throw InputError("ShapeOptimizerOptions.print_level",
+                     " = " + std::to_string(print_level) + " must be in [0, 12]");
 }
 
 bool ipopt_available() { return true; }
@@ -36,9 +37,9 @@ namespace {
 ///   Maximum_Iterations_Exceeded, _CpuTime_Exceeded → IterationLimit
 ///   Diverging_Iterates                             → Diverged  (|w| grew without bound)
 ///   Invalid_Number_Detected                        → Diverged  (F, g or a derivative non-finite)
-///   Infeasible_Problem_Detected                    → Singular  (a stationary point of the
+///   Infeasible_Problem_Detected                    → Infeasible (a stationary point of the
 ///                                                    constraint violation: no step reduces it)
-///   Restoration_Failed                             → Singular  (the feasibility restoration
+///   Restoration_Failed                             → Infeasible (the feasibility restoration
 ///                                                    found no step that reduces the violation)
 ///   Error_In_Step_Computation                      → Singular  (the KKT matrix stayed singular
 ///                                                    despite IPOPT's regularisation)
@@ -51,8 +52,8 @@ namespace {
 ///                                                  → Diverged  (the solve broke down; the
 ///                                                    message names IPOPT's status)
 /// A Converged run whose final w violates a constraint or a wrench bound by more than
-/// optimizer.constraint_tolerance (our measure, ShapeProblem::constraint_violation) becomes
-/// Singular.
+/// ShapeOptimizerOptions::constraint_tolerance (our measure, ShapeProblem::constraint_violation)
+/// becomes ConstraintViolated.
 SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
   switch (status) {
     case Ipopt::Solve_Succeeded:
@@ -64,6 +65,7 @@ SolveStatus map_status(Ipopt::ApplicationReturnStatus status) {
       return SolveStatus::IterationLimit;
     case Ipopt::Infeasible_Problem_Detected:
     case Ipopt::Restoration_Failed:
+      return SolveStatus::Infeasible;
     case Ipopt::Error_In_Step_Computation:
     case Ipopt::Search_Direction_Becomes_Too_Small:
     case Ipopt::Not_Enough_Degrees_Of_Freedom:
@@ -162,7 +164,7 @@ StartResult run_start(Ipopt::IpoptApplication& app,
   // acceptable point could in principle slip through, so our measure has the last word.
   if (result.status == SolveStatus::Converged &&
       !(result.violation <= options.constraint_tolerance && std::isfinite(result.cost)))
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::ConstraintViolated;
   return result;
 }
 
@@ -196,22 +198,21 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
       << r.iterations << " iterations";
   if (starts > 1) out << " (start " << r.start_index + 1 << " of " << starts << ")";
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
-  if (r.status == SolveStatus::Singular &&
-      map_status(r.application_status) == SolveStatus::Converged)
-    out << " exceeds optimizer.constraint_tolerance = " << options.constraint_tolerance;
+  if (r.status == SolveStatus::ConstraintViolated)
+    out << " exceeds ShapeOptimizerOptions.constraint_tolerance = " << options.constraint_tolerance;
   return out.str();
 }
 
 }  // namespace
 
-ShapeSolution optimise_shape(ShapeProblem& problem,
-                             const BaseWrench& guess,
-                             const ShapeOptimizerOptions& options) {
+ShapeResult optimise_shape(ShapeProblem& problem,
+                           const BaseWrench& guess,
+                           const ShapeOptimizerOptions& options) {
   options.validate();
   const Vector6d w0 = guess.to_vector();
-  detail::require_finite("optimizer.guess", w0);
+  detail::require_finite("guess", w0);
 
-  ShapeSolution solution;
+  ShapeResult solution;
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   detail::apply_options(*app->Options(), options,
                         detail::uses_finite_difference_hessian(options, problem));
@@ -252,6 +253,14 @@ ShapeSolution optimise_shape(ShapeProblem& problem,
   solution.ipopt.upper_bound_multipliers = best.outcome.upper_bound_multipliers;
   solution.starts_tried = static_cast<int>(starts.size());
   return solution;
+}
+
+std::string ShapeResult::brief() const {
+  std::ostringstream out;
+  out.precision(3);
+  out << to_string(status) << ": max distance " << 1e3 * cost.max_distance << " mm, energy "
+      << cost.energy << " J; " << message;
+  return out.str();
 }
 
 }  // namespace rodshape

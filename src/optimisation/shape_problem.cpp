@@ -3,7 +3,7 @@
 // Rows of g, in this order (constraint_count() in all):
 //  1. workspace, on the tip pose (p(L), R(L)): g_ws, d/dw = dg_ws/dp · tip_dp_dw
 //     + dg_ws/dθ · tip_dtheta_dw (only the reach shell depends on R(L));
-//  2. grasp, one per true entry of Grasp::zero_wrench (force x, y, z, then moment x, y, z): the tip
+//  2. grasp, one per true entry of Grasp::released (force x, y, z, then moment x, y, z): the tip
 //     wrench in the tip frame, e_kᵀ R(L)ᵀ n(L) or e_kᵀ R(L)ᵀ m(L), bounds [0, 0];
 //     δ(Rᵀn) = (Rᵀn) × θ_L + Rᵀ δn (δR = R θ̂);
 //  3. curvature, one per node when limits.max_curvature is set: |u_i - ũ|² ≤ κ², with
@@ -38,12 +38,12 @@ void validate_wrench_bounds(const WrenchBounds& bounds) {
   static const char* const kNames[6] = {"force.x",  "force.y",  "force.z",
                                         "moment.x", "moment.y", "moment.z"};
   for (int k = 0; k < 6; ++k) {
-    const std::string field = std::string("wrench_bounds.") + kNames[k];
+    const std::string field = std::string("WrenchBounds.") + kNames[k];
     if (std::isnan(bounds.lower(k)) || std::isnan(bounds.upper(k)))
-      throw InputError(field + ": a bound is NaN");
+      throw InputError(field, ": a bound is NaN");
     if (bounds.lower(k) > bounds.upper(k)) {
-      throw InputError(field + ": lower = " + detail::format_value(bounds.lower(k)) +
-                       " is above upper = " + detail::format_value(bounds.upper(k)));
+      throw InputError(field, ": lower = " + detail::format_value(bounds.lower(k)) +
+                                  " is above upper = " + detail::format_value(bounds.upper(k)));
     }
   }
 }
@@ -71,11 +71,11 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   workspace_.validate();
   limits_.validate();
   validate_wrench_bounds(wrench_bounds_);
-  detail::require_pose("grasp.tip_to_end_effector", grasp_.tip_to_end_effector);
+  detail::require_pose("Grasp.tip_to_end_effector", grasp_.tip_to_end_effector);
 
   const int nodes = rod_.nodes();
   rows_.workspace = workspace_.constraint_count();
-  rows_.grasp = count_true(grasp_.zero_wrench);
+  rows_.grasp = count_true(grasp_.released);
   rows_.curvature = limits_.max_curvature ? nodes : 0;
   rows_.axial =
       limits_.max_axial_strain && rod_.properties.model == ConstitutiveModel::Cosserat ? nodes : 0;
@@ -188,7 +188,7 @@ void ShapeProblem::evaluate_constraints() {
     const Matrix36d dn_body = hat(n_body) * theta + R.transpose() * c.tip_dn_dw;
     const Matrix36d dm_body = hat(m_body) * theta + R.transpose() * c.tip_dm_dw;
     for (int k = 0; k < 6; ++k) {
-      if (!grasp_.zero_wrench[k]) continue;
+      if (!grasp_.released[k]) continue;
       g_(row) = k < 3 ? n_body(k) : m_body(k - 3);
       dg_dw_.row(row) = k < 3 ? dn_body.row(k) : dm_body.row(k - 3);
       ++row;

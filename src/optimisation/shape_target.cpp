@@ -29,7 +29,7 @@ namespace rodshape {
 
 namespace {
 
-std::string point_field(std::size_t i) { return "target.points[" + std::to_string(i) + "]"; }
+std::string point_field(std::size_t i) { return "ShapeTarget.points[" + std::to_string(i) + "]"; }
 
 std::string metres(double value) {
   std::ostringstream out;
@@ -65,23 +65,26 @@ double spline_length(const Eigen::Spline3d& spline, double a, double b) {
 }  // namespace
 
 void ShapeTarget::validate() const {
-  if (points.empty()) throw InputError("target.points is empty: give at least one objective point");
-  for (std::size_t i = 0; i < points.size(); ++i) detail::require_finite(point_field(i), points[i]);
-  detail::require_non_negative("weights.energy", energy_weight);
-  detail::require_non_negative("weights.distance", distance_weight);
+  if (points.empty())
+    throw InputError("ShapeTarget.points", " is empty: give at least one objective point");
+  for (std::size_t i = 0; i < points.size(); ++i)
+    detail::require_finite("ShapeTarget.points[" + std::to_string(i) + "]", points[i]);
+  detail::require_non_negative("ShapeTarget.energy_weight", energy_weight);
+  detail::require_non_negative("ShapeTarget.distance_weight", distance_weight);
   if (energy_weight == 0.0 && distance_weight == 0.0)
-    throw InputError("weights.energy and weights.distance are both 0: at least one must be > 0");
-  detail::require_non_negative("target.distance_smoothing", distance_smoothing);
+    throw InputError("ShapeTarget.energy_weight",
+                     " and ShapeTarget.distance_weight are both 0: at least one must be > 0");
+  detail::require_non_negative("ShapeTarget.distance_smoothing", distance_smoothing);
 }
 
-TargetFeasibility check_feasibility(const ShapeTarget& target,
+FeasibilityResult check_feasibility(const ShapeTarget& target,
                                     const ClampedRod& rod,
                                     double max_axial_strain) {
   target.validate();
-  detail::require_non_negative("limits.max_axial_strain", max_axial_strain);
+  detail::require_non_negative("StrainLimits.max_axial_strain", max_axial_strain);
   const double L = rod.properties.length;
   const bool extensible = rod.properties.model == ConstitutiveModel::Cosserat;
-  TargetFeasibility result;
+  FeasibilityResult result;
   result.reach = extensible ? L * (1.0 + max_axial_strain) : L;
   const Eigen::Vector3d& clamp = rod.clamp.position;
 
@@ -148,6 +151,14 @@ TargetFeasibility check_feasibility(const ShapeTarget& target,
                     point_field(static_cast<std::size_t>(first_beyond)) + " beyond that length";
   }
   return result;
+}
+
+std::string FeasibilityResult::brief() const {
+  if (!feasible) return "infeasible: " + reason;
+  std::ostringstream out;
+  out.precision(3);
+  out << "feasible (spline " << curve_length << " m of a reach of " << reach << " m)";
+  return out.str();
 }
 
 }  // namespace rodshape

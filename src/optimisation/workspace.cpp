@@ -20,7 +20,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string indexed(const char* name, std::size_t i) {
-  return std::string("workspace.") + name + "[" + std::to_string(i) + "]";
+  return std::string("Workspace.") + name + "[" + std::to_string(i) + "]";
 }
 
 }  // namespace
@@ -107,13 +107,14 @@ void Workspace::bounds(Eigen::Ref<Eigen::VectorXd> lower, Eigen::Ref<Eigen::Vect
 
 void Workspace::validate() const {
   if (box) {
-    detail::require_finite("workspace.box.lower", box->lower);
-    detail::require_finite("workspace.box.upper", box->upper);
+    detail::require_finite("Workspace.box.lower", box->lower);
+    detail::require_finite("Workspace.box.upper", box->upper);
     for (int k = 0; k < 3; ++k) {
       if (box->lower(k) > box->upper(k)) {
-        throw InputError("workspace.box: lower[" + std::to_string(k) +
-                         "] = " + detail::format_value(box->lower(k)) + " is above upper[" +
-                         std::to_string(k) + "] = " + detail::format_value(box->upper(k)));
+        throw InputError("Workspace.box", ": lower[" + std::to_string(k) +
+                                              "] = " + detail::format_value(box->lower(k)) +
+                                              " is above upper[" + std::to_string(k) +
+                                              "] = " + detail::format_value(box->upper(k)));
       }
     }
   }
@@ -128,19 +129,19 @@ void Workspace::validate() const {
   for (std::size_t i = 0; i < half_spaces.size(); ++i) {
     const std::string field = indexed("half_spaces", i);
     detail::require_finite(field + ".normal", half_spaces[i].normal);
-    if (half_spaces[i].normal.norm() == 0.0) throw InputError(field + ".normal must be non-zero");
+    if (half_spaces[i].normal.norm() == 0.0) throw InputError(field, ".normal must be non-zero");
     detail::require_finite(field + ".offset", half_spaces[i].offset);
   }
   if (reach) {
-    detail::require_finite("workspace.reach.center", reach->center);
-    detail::require_finite("workspace.reach.tip_point", reach->tip_point);
-    detail::require_positive("workspace.reach.outer_radius", reach->outer_radius);
-    detail::require_non_negative("workspace.reach.inner_radius", reach->inner_radius);
+    detail::require_finite("Workspace.reach.center", reach->center);
+    detail::require_finite("Workspace.reach.tip_point", reach->tip_point);
+    detail::require_positive("Workspace.reach.outer_radius", reach->outer_radius);
+    detail::require_non_negative("Workspace.reach.inner_radius", reach->inner_radius);
     if (reach->inner_radius >= reach->outer_radius)
-      throw InputError(
-          "workspace.reach: inner_radius = " + detail::format_value(reach->inner_radius) +
-          " is not below outer_radius = " + detail::format_value(reach->outer_radius) +
-          " (an empty shell)");
+      throw InputError("Workspace.reach",
+                       ": inner_radius = " + detail::format_value(reach->inner_radius) +
+                           " is not below outer_radius = " +
+                           detail::format_value(reach->outer_radius) + " (an empty shell)");
   }
 }
 

@@ -99,10 +99,10 @@ void refine(const ArmModel& arm,
 
 void ArmReachOptions::validate() const {
   if (samples < 1)
-    throw InputError("robot.reach.samples = " + std::to_string(samples) + " must be >= 1");
+    throw InputError("ArmReachOptions.samples", " = " + std::to_string(samples) + " must be >= 1");
   if (refinement_steps < 0)
-    throw InputError("robot.reach.refinement_steps = " + std::to_string(refinement_steps) +
-                     " must be >= 0");
+    throw InputError("ArmReachOptions.refinement_steps",
+                     " = " + std::to_string(refinement_steps) + " must be >= 0");
 }
 
 double ArmReach::wrist_distance(const Pose& base_T_flange) const {
@@ -146,7 +146,7 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
                                   const ArmPlacement& placement,
                                   const Pose& tip_T_ee,
                                   double margin) {
-  detail::require_non_negative("robot.reach.margin", margin);
+  detail::require_non_negative("margin", margin);
   Workspace::ReachShell shell;
   shell.center = placement.world_T_base.position + placement.world_T_base.rotation * reach.shoulder;
   const Pose tip_T_flange = compose(tip_T_ee, inverse(placement.flange_T_ee));
@@ -154,10 +154,10 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
   shell.inner_radius = reach.min_distance + margin;
   shell.outer_radius = reach.max_distance - margin;
   if (!(shell.outer_radius > shell.inner_radius)) {
-    throw InputError("robot.reach.margin = " + detail::format_value(margin) +
-                     " leaves no shell: the wrist reaches " +
-                     detail::format_value(reach.min_distance) + " to " +
-                     detail::format_value(reach.max_distance) + " m from the shoulder");
+    throw InputError("margin",
+                     " = " + detail::format_value(margin) + " leaves no shell: the wrist reaches " +
+                         detail::format_value(reach.min_distance) + " to " +
+                         detail::format_value(reach.max_distance) + " m from the shoulder");
   }
   return shell;
 }

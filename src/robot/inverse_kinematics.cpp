@@ -19,13 +19,15 @@
 namespace rodshape {
 
 void IkOptions::validate() const {
-  detail::require_positive("ik.position_tolerance", position_tolerance);
-  detail::require_positive("ik.rotation_tolerance", rotation_tolerance);
+  detail::require_positive("IkOptions.position_tolerance", position_tolerance);
+  detail::require_positive("IkOptions.rotation_tolerance", rotation_tolerance);
   if (max_iterations < 1)
-    throw InputError("ik.max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
+    throw InputError("IkOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be >= 1");
   if (max_restarts < 0)
-    throw InputError("ik.max_restarts = " + std::to_string(max_restarts) + " must be >= 0");
-  detail::require_non_negative("ik.limit_avoidance_gain", limit_avoidance_gain);
+    throw InputError("IkOptions.max_restarts",
+                     " = " + std::to_string(max_restarts) + " must be >= 0");
+  detail::require_non_negative("IkOptions.limit_avoidance_gain", limit_avoidance_gain);
 }
 
 namespace {
@@ -221,7 +223,7 @@ IkResult solve_ik(const ArmModel& arm,
   if (distance > arm.reach()) {
     const Pose pose = arm.forward_kinematics(result.q);
     const Vector6 e = pose_error(unit_target, pose);
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::OutOfReach;
     result.position_error = e.head<3>().norm();
     result.rotation_error = e.tail<3>().norm();
     result.message = "out of reach: the target is " + format_length(distance) + " m from " +
@@ -251,7 +253,7 @@ IkResult solve_ik(const ArmModel& arm,
   if (best.converged) {
     result.status = SolveStatus::Converged;
   } else if (all_stalled) {
-    result.status = SolveStatus::Singular;
+    result.status = SolveStatus::OutOfReach;
     result.message = "out of reach: no joint positions within the limits reach the target from " +
                      std::to_string(result.restarts + 1) + " starts; the closest pose found is " +
                      format_length(result.position_error) + " m and " +
@@ -264,6 +266,25 @@ IkResult solve_ik(const ArmModel& arm,
                      " m and " + format_length(result.rotation_error) + " rad away";
   }
   return result;
+}
+
+Eigen::VectorXd default_seed(const ArmModel& arm) {
+  if (arm.joints() == 7) {
+    constexpr double pi = std::numbers::pi;
+    Eigen::VectorXd q(7);
+    q << 0.0, -pi / 4.0, 0.0, -3.0 * pi / 4.0, 0.0, pi / 2.0, pi / 4.0;
+    return arm.clamp_to_limits(q);
+  }
+  return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
+}
+
+std::string IkResult::brief() const {
+  if (!converged()) return to_string(status) + ": " + message;
+  std::ostringstream out;
+  out.precision(3);
+  out << "converged in " << iterations << " iterations (" << restarts
+      << " restarts), |Δp| = " << position_error << " m, angle " << rotation_error << " rad";
+  return out.str();
 }
 
 }  // namespace rodshape

@@ -9,6 +9,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "validation.hpp"
 
@@ -18,11 +19,12 @@ namespace rodshape {
 
 void ShootingOptions::validate() const {
   if (max_iterations < 1)
-    throw InputError("max_iterations = " + std::to_string(max_iterations) + " must be >= 1");
-  detail::require_positive("residual_tolerance", residual_tolerance);
+    throw InputError("ShootingOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_positive("ShootingOptions.residual_tolerance", residual_tolerance);
   if (max_continuation_steps < 1)
-    throw InputError("max_continuation_steps = " + std::to_string(max_continuation_steps) +
-                     " must be >= 1");
+    throw InputError("ShootingOptions.max_continuation_steps",
+                     " = " + std::to_string(max_continuation_steps) + " must be >= 1");
 }
 
 std::string ShootingSummary::brief() const {
@@ -44,11 +46,11 @@ using detail::Overloaded;
 void validate_tip(const TipCondition& tip) {
   std::visit(Overloaded{
                  [](const FreeTip& t) {
-                   detail::require_finite("tip.wrench.force", t.wrench.force);
-                   detail::require_finite("tip.wrench.moment", t.wrench.moment);
+                   detail::require_finite("FreeTip.wrench.force", t.wrench.force);
+                   detail::require_finite("FreeTip.wrench.moment", t.wrench.moment);
                  },
-                 [](const ClampedTip& t) { detail::require_pose("tip", t.pose); },
-                 [](const GraspedTip& t) { detail::require_pose("tip", t.pose); },
+                 [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
+                 [](const GraspedTip& t) { detail::require_pose("GraspedTip.pose", t.pose); },
              },
              tip);
 }
@@ -155,14 +157,6 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   int integrations_ = 0;
   int jacobian_evaluations_ = 0;
 };
-
-/// Adds the work counts of `part` (a direct solve) to `total`.
-void add_counts(ShootingSummary& total, const ShootingSummary& part) {
-  total.iterations += part.iterations;
-  total.chord_steps += part.chord_steps;
-  total.integrations += part.integrations;
-  total.jacobian_evaluations += part.jacobian_evaluations;
-}
 
 /// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point,
 /// then quasi-Newton steps whose Jacobian B starts at J(x) and takes Broyden's rank-one update
@@ -288,63 +282,90 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   return result;
 }
 
-/// The homotopy of the boundary-value problem: at t = 0 the rod is unloaded and the tip is where
-/// the unloaded rod puts it (w = 0 solves it exactly); at t = 1 it is the problem asked. A held
-/// tip moves along the screw motion T(t) = T_rest exp(t log(T_rest⁻¹ T_target)), which bends the
+/// The homotopy of the boundary-value problem: at σ = 0 the rod is unloaded and the tip is where
+/// the unloaded rod puts it (w = 0 solves it exactly); at σ = 1 it is the problem asked. A held
+/// tip moves along the screw motion T(σ) = T_rest exp(σ log(T_rest⁻¹ T_target)), which bends the
 /// rod from the start; a straight line from the rest tip would first push a straight rod along its
 /// axis, where only its stiff axial compliance answers (and a Kirchhoff rod cannot shorten at all).
-struct Homotopy {
-  const ClampedRod& rod;
-  const TipCondition& tip;
-  Pose rest_tip;
+/// A free tip's wrench and the distributed load are scaled by σ.
+EquilibriumPath continuation_path(const Pose& rest_tip, const TipCondition& tip) {
+  const auto screw = [rest_tip](const Pose& target, double t) {
+    // ξ = (ρ, φ) = log(T_rest⁻¹ T_target):  φ = log(R_restᵀ R_target),  ρ = J_l(φ)⁻¹ R_restᵀ Δp
+    const Eigen::Vector3d phi = log_so3(rest_tip.rotation.transpose() * target.rotation);
+    const Eigen::Vector3d rho =
+        left_jacobian_so3(phi).inverse() *
+        (rest_tip.rotation.transpose() * (target.position - rest_tip.position));
+    Pose pose;
+    pose.rotation = rest_tip.rotation * exp_so3(t * phi);
+    pose.position =
+        rest_tip.position + rest_tip.rotation * (left_jacobian_so3(t * phi) * (t * rho));
+    return pose;
+  };
+  return {[tip, screw](double t) {
+            return std::visit(Overloaded{
+                                  [&](const FreeTip& f) -> TipCondition {
+                                    return FreeTip{{t * f.wrench.force, t * f.wrench.moment}};
+                                  },
+                                  [&](const ClampedTip& c) -> TipCondition {
+                                    return ClampedTip{screw(c.pose, t)};
+                                  },
+                                  [&](const GraspedTip& g) -> TipCondition {
+                                    return GraspedTip{screw(g.pose, t), g.released};
+                                  },
+                              },
+                              tip);
+          },
+          true};
+}
 
-  ClampedRod rod_at(double t) const {
-    ClampedRod scaled = rod;
-    scaled.load.force *= t;
-    scaled.load.moment *= t;
-    return scaled;
+/// Continuation from the unloaded rod (adaptive steps in σ, secant predictor) after a failed
+/// direct solve; on success w is the solution.
+void continue_from_rest(const ClampedRod& rod,
+                        const TipCondition& tip,
+                        const ShootingOptions& options,
+                        ShootingSummary& summary,
+                        Vector6d& w) {
+  ClampedRod unloaded = rod;
+  unloaded.load.force *= 0.0;
+  unloaded.load.moment *= 0.0;
+  const Pose rest_tip = integrate(unloaded, BaseWrench{}).tip();
+  FollowOptions follow;
+  follow.shooting = options;
+  follow.adaptive = true;
+  follow.max_substeps = options.max_continuation_steps;
+  follow.final_derivatives = Derivatives::None;
+  const FollowResult followed =
+      follow_equilibrium(rod, continuation_path(rest_tip, tip), BaseWrench{}, follow);
+  const ShootingSummary& steps = followed.total;
+  summary.iterations += steps.iterations;
+  summary.chord_steps += steps.chord_steps;
+  summary.integrations += steps.integrations;
+  summary.jacobian_evaluations += steps.jacobian_evaluations;
+  summary.continuation_steps += steps.continuation_steps;
+  if (followed.followed()) {
+    summary.status = steps.status;
+    summary.message = steps.message;
+    summary.residual_norm = steps.residual_norm;
+    w = followed.base_wrench.to_vector();
+  } else {
+    summary.message += "; continuation stopped at t = " + detail::format_value(followed.sigma) +
+                       " (" + steps.message + ")";
   }
-
-  TipCondition tip_at(double t) const {
-    const auto blend = [&](const Pose& target) {
-      // ξ = (ρ, φ) = log(T_rest⁻¹ T_target):  φ = log(R_restᵀ R_target),  ρ = J_l(φ)⁻¹ R_restᵀ Δp
-      const Eigen::Vector3d phi = log_so3(rest_tip.rotation.transpose() * target.rotation);
-      const Eigen::Vector3d rho =
-          left_jacobian_so3(phi).inverse() *
-          (rest_tip.rotation.transpose() * (target.position - rest_tip.position));
-      Pose pose;
-      pose.rotation = rest_tip.rotation * exp_so3(t * phi);
-      pose.position =
-          rest_tip.position + rest_tip.rotation * (left_jacobian_so3(t * phi) * (t * rho));
-      return pose;
-    };
-    return std::visit(
-        Overloaded{
-            [&](const FreeTip& f) -> TipCondition {
-              return FreeTip{{t * f.wrench.force, t * f.wrench.moment}};
-            },
-            [&](const ClampedTip& c) -> TipCondition { return ClampedTip{blend(c.pose)}; },
-            [&](const GraspedTip& g) -> TipCondition {
-              return GraspedTip{blend(g.pose), g.released};
-            },
-        },
-        tip);
-  }
-};
+}
 
 }  // namespace
 
-ShootingSolution solve_equilibrium(const ClampedRod& rod,
-                                   const TipCondition& tip,
-                                   const BaseWrench& guess,
-                                   const ShootingOptions& options) {
+ShootingResult solve_equilibrium(const ClampedRod& rod,
+                                 const TipCondition& tip,
+                                 const BaseWrench& guess,
+                                 const ShootingOptions& options) {
   rod.validate();
   validate_tip(tip);
   options.validate();
-  detail::require_finite("initial_wrench.force", guess.force);
-  detail::require_finite("initial_wrench.moment", guess.moment);
+  detail::require_finite("guess.force", guess.force);
+  detail::require_finite("guess.moment", guess.moment);
 
-  ShootingSolution solution;
+  ShootingResult solution;
   ShootingSummary& summary = solution.summary;
   RodConfiguration work;
   work.resize(rod.nodes(), Derivatives::Tip);
@@ -352,45 +373,8 @@ ShootingSolution solve_equilibrium(const ClampedRod& rod,
   Vector6d w = guess.to_vector();
   summary = solve_direct(rod, tip, options, work, w);
 
-  if (!summary.converged() && options.continuation) {
-    // Continuation from the unloaded rod, with adaptive steps in t and a secant predictor.
-    Homotopy homotopy{rod, tip, {}};
-    homotopy.rest_tip = integrate(homotopy.rod_at(0.0), BaseWrench{}).tip();
-    Vector6d w_solved = Vector6d::Zero(), w_previous = Vector6d::Zero();
-    double t = 0.0, dt = 0.125, dt_previous = 0.0;
-    const double dt_min = 1.0 / options.max_continuation_steps;
-    ShootingSummary step;
-    while (t < 1.0) {
-      dt = std::min(dt, 1.0 - t);
-      const double t_next = t + dt;
-      Vector6d w_step = w_solved;
-      if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
-      const ClampedRod rod_t = homotopy.rod_at(t_next);
-      step = solve_direct(rod_t, homotopy.tip_at(t_next), options, work, w_step);
-      add_counts(summary, step);
-      ++summary.continuation_steps;
-      if (step.status == SolveStatus::Converged) {
-        w_previous = w_solved;
-        w_solved = w_step;
-        dt_previous = dt;
-        t = t_next;
-        dt *= 2.0;
-      } else if (dt * 0.5 >= dt_min) {
-        dt *= 0.5;
-      } else {
-        break;
-      }
-    }
-    if (step.converged() && t >= 1.0) {
-      summary.status = step.status;
-      summary.message = step.message;
-      summary.residual_norm = step.residual_norm;
-      w = w_solved;
-    } else {
-      summary.message +=
-          "; continuation stopped at t = " + detail::format_value(t) + " (" + step.message + ")";
-    }
-  }
+  if (!summary.converged() && options.continuation)
+    continue_from_rest(rod, tip, options, summary, w);
 
   solution.base_wrench = Wrench::from_vector(w);
   integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);

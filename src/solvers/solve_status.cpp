@@ -14,6 +14,12 @@ std::string to_string(SolveStatus status) {
       return "diverged";
     case SolveStatus::Singular:
       return "singular";
+    case SolveStatus::Infeasible:
+      return "infeasible";
+    case SolveStatus::ConstraintViolated:
+      return "constraint_violated";
+    case SolveStatus::OutOfReach:
+      return "out_of_reach";
   }
   return "unknown";
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 #include "core/rk4_step.hpp"
@@ -119,7 +120,7 @@ class JacobianBetweenNodes {
 
 }  // namespace
 
-StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
   if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
     throw InputError(
         "assess_stability needs a configuration integrated with Derivatives::AllNodes");
@@ -136,7 +137,7 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
     det[i] = J.determinant();
   }
 
-  StabilityReport report;
+  StabilityResult report;
   report.tip_singular_value = sigma[N];
   report.min_singular_value = *std::min_element(sigma.begin() + 1, sigma.end());
   int singular_nodes = 0;
@@ -215,6 +216,21 @@ StabilityReport assess_stability(const ClampedRod& rod, const RodConfiguration& 
   // stable, and not unstable either.
   if (conjugate && *conjugate >= rod.properties.length * (1.0 - 1e-9)) report.degenerate = true;
   return report;
+}
+
+std::string StabilityResult::brief() const {
+  std::ostringstream out;
+  out.precision(3);
+  if (stable) {
+    out << "stable (min σ̃ = " << min_singular_value << ", at the tip " << tip_singular_value << ")";
+  } else if (conjugate_point_s) {
+    out << "unstable: conjugate point at s = " << *conjugate_point_s << " m";
+  } else if (degenerate) {
+    out << "not shown stable: degenerate (J singular along the rod or only at the tip)";
+  } else {
+    out << "not shown stable (min σ̃ = " << min_singular_value << ")";
+  }
+  return out.str();
 }
 
 }  // namespace rodshape

@@ -10,19 +10,11 @@
 namespace rodshape {
 
 void EndEffectorLimits::validate() const {
-  detail::require_positive("trajectory.max_linear_speed", max_linear_speed);
-  detail::require_positive("trajectory.max_angular_speed", max_angular_speed);
-  detail::require_positive("trajectory.max_linear_acceleration", max_linear_acceleration);
-  detail::require_positive("trajectory.max_angular_acceleration", max_angular_acceleration);
-  detail::require_positive("trajectory.rate", sample_rate);
-}
-
-Pose interpolate(const Pose& a, const Pose& b, double sigma) {
-  Pose pose;
-  pose.position = (1.0 - sigma) * a.position + sigma * b.position;
-  const Eigen::Quaterniond qa(a.rotation), qb(b.rotation);
-  pose.rotation = qa.slerp(sigma, qb).toRotationMatrix();
-  return pose;
+  detail::require_positive("EndEffectorLimits.max_linear_speed", max_linear_speed);
+  detail::require_positive("EndEffectorLimits.max_angular_speed", max_angular_speed);
+  detail::require_positive("EndEffectorLimits.max_linear_acceleration", max_linear_acceleration);
+  detail::require_positive("EndEffectorLimits.max_angular_acceleration", max_angular_acceleration);
+  detail::require_positive("EndEffectorLimits.sample_rate", sample_rate);
 }
 
 namespace {

@@ -27,8 +27,7 @@ PointSet objective_set(const PointSet& initial, const PointSet& objective, doubl
 std::vector<PointSet> intermediate_targets(const PointSet& initial,
                                            const PointSet& objective,
                                            int n_inter) {
-  if (n_inter < 1)
-    throw InputError("trajectory.steps = " + std::to_string(n_inter) + " must be >= 1");
+  if (n_inter < 1) throw InputError("n_inter", " = " + std::to_string(n_inter) + " must be >= 1");
   std::vector<PointSet> steps;
   steps.reserve(n_inter);
   for (int i = 1; i <= n_inter; ++i)  // p^i = p_init + i (p_obj - p_init) / n_inter

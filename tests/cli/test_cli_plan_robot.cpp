@@ -222,7 +222,7 @@ TEST_F(CliPlanRobot, AnArmTooFarFromTheClampIsBadInputGivingTheWristsDistance) {
       replaced_first(example_text(), "position: [-0.45, 0, -0.2]", "position: [-3, 0, 0]"));
   const Outcome outcome = plan(task, directory_ / "out");
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
-  EXPECT_NE(outcome.err.find("far.yaml: robot: where the rod starts, the arm's wrist would be"),
+  EXPECT_NE(outcome.err.find("far.yaml:47: robot: where the rod starts, the arm's wrist would be"),
             std::string::npos)
       << outcome.err;
   EXPECT_NE(outcome.err.find("outside its reach shell"), std::string::npos) << outcome.err;

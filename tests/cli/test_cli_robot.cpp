@@ -94,7 +94,7 @@ TEST_F(CliRobot, IkOutOfReachExitsThreeWithTheJsonStillPrinted) {
   const Outcome outcome = run("ik " + quoted(kPanda) + " 2 0 0.5 0 1 0 0");
   EXPECT_EQ(outcome.exit_code, 3);
   const Json json = Json::parse(outcome.out);
-  EXPECT_EQ(json["status"], "singular");
+  EXPECT_EQ(json["status"], "out_of_reach");
   EXPECT_NE(json["message"].get<std::string>().find("out of reach"), std::string::npos);
   EXPECT_NE(outcome.err.find("out of reach"), std::string::npos) << outcome.err;
 }

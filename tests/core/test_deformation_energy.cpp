@@ -152,7 +152,7 @@ TEST(DeformationEnergy, EqualsWorkOfTipLoadAlongALoadingPath) {
     BaseWrench guess;
     for (int k = 0; k <= K; ++k) {
       const double lambda = static_cast<double>(k) / K;
-      const ShootingSolution s =
+      const ShootingResult s =
           solve_equilibrium(rod, FreeTip{{lambda * F, Eigen::Vector3d::Zero()}}, guess, options);
       ASSERT_TRUE(s.summary.converged()) << "λ = " << lambda << ": " << s.summary.brief();
       guess = s.base_wrench;

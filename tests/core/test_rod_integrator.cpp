@@ -429,7 +429,7 @@ TEST(FreeTipSolve, CantileverUnderTipLoadMatchesTheElastica) {
     for (double alpha : alphas) {
       const double P = alpha * EI / (L * L);
       const FreeTip tip{{P * Eigen::Vector3d::Unit(load_axis), Eigen::Vector3d::Zero()}};
-      const ShootingSolution solution = solve_equilibrium(rod, tip, guess, tight_options());
+      const ShootingResult solution = solve_equilibrium(rod, tip, guess, tight_options());
       ASSERT_TRUE(solution.summary.converged())
           << "alpha " << alpha << ": " << solution.summary.brief();
       guess = solution.base_wrench;  // continuation in α, as a user would do
@@ -471,7 +471,7 @@ TEST(FreeTipSolve, SmallSelfWeightMatchesLinearCantileverDeflection) {
   rod.load = DistributedLoad::gravity(w / 9.81, Eigen::Vector3d(0.0, -9.81, 0.0));  // along -y: EIx
   ShootingOptions options = tight_options();
   options.residual_tolerance = 1e-13;
-  const ShootingSolution solution = solve_equilibrium(rod, FreeTip{}, {}, options);
+  const ShootingResult solution = solve_equilibrium(rod, FreeTip{}, {}, options);
   ASSERT_TRUE(solution.summary.converged()) << solution.summary.brief();
   const double deflection = -solution.configuration.tip().position.y();
   const double linear = w * std::pow(L, 4) / (8.0 * EIx);
@@ -494,7 +494,7 @@ TEST(FreeTipSolve, BaseWrenchBalancesTheTipWrench) {
       make_rod(L, kAnisotropicBending, kShearAxial, ConstitutiveModel::Cosserat, N);
   const double kappa = 2.5 / L;
   const Eigen::Vector3d M(0.0, kappa * kAnisotropicBending.y(), 0.0);
-  const ShootingSolution arc =
+  const ShootingResult arc =
       solve_equilibrium(rod, FreeTip{{Eigen::Vector3d::Zero(), M}}, {}, tight_options());
   ASSERT_TRUE(arc.summary.converged()) << arc.summary.brief();
   EXPECT_TRUE(
@@ -504,7 +504,7 @@ TEST(FreeTipSolve, BaseWrenchBalancesTheTipWrench) {
                               rk4_error_bound(L, kappa, N) + 1e-9));
 
   const Wrench tip{{1.5, -2.0, 0.7}, {0.4, 0.9, -0.3}};
-  const ShootingSolution general = solve_equilibrium(rod, FreeTip{tip}, {}, tight_options());
+  const ShootingResult general = solve_equilibrium(rod, FreeTip{tip}, {}, tight_options());
   ASSERT_TRUE(general.summary.converged()) << general.summary.brief();
   const RodConfiguration& c = general.configuration;
   // The residual tolerance bounds the tip wrench error: 1e-10 N and N·m; the balance itself is

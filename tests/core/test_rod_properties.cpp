@@ -201,7 +201,8 @@ TEST(RodProperties, KirchhoffRodNeedsNoAxialOrShearStiffness) {
   EXPECT_EQ(p.mass_per_length, 0.0);  // no section: unknown
   // The same description for a Cosserat rod lacks GA and EA.
   d.model = ConstitutiveModel::Cosserat;
-  EXPECT_TRUE(ThrowsInputErrorNaming([&] { make_rod_properties(d); }, {"rod.stiffness."}));
+  EXPECT_TRUE(
+      ThrowsInputErrorNaming([&] { make_rod_properties(d); }, {"RodDescription.stiffness."}));
 }
 
 TEST(RodProperties, ModelNamesRoundTrip) {
@@ -210,7 +211,7 @@ TEST(RodProperties, ModelNamesRoundTrip) {
   EXPECT_EQ(to_string(ConstitutiveModel::Cosserat), "cosserat");
   EXPECT_EQ(to_string(ConstitutiveModel::Kirchhoff), "kirchhoff");
   EXPECT_TRUE(ThrowsInputErrorNaming([] { constitutive_model_from_string("elastic"); },
-                                     {"rod.model", "elastic"}));
+                                     {"RodDescription.model", "elastic"}));
   EXPECT_TRUE(ThrowsInputErrorNaming(
       [] { constitutive_model_from_string("Cosserat", "task.rod.kind"); }, {"task.rod.kind"}));
 }
@@ -220,12 +221,13 @@ TEST(RodProperties, ModelNamesRoundTrip) {
 TEST(RodPropertiesInput, NegativeLengthIsRejectedNamingFieldAndValue) {
   RodDescription d = steel_strip();
   d.length = -0.3;
-  EXPECT_TRUE(ThrowsInputErrorNaming([&] { make_rod_properties(d); }, {"rod.length", "-0.3"}));
+  EXPECT_TRUE(
+      ThrowsInputErrorNaming([&] { make_rod_properties(d); }, {"RodDescription.length", "-0.3"}));
   RodProperties p = make_rod_properties(steel_strip());
   p.length = -0.3;
-  EXPECT_TRUE(ThrowsInputErrorNaming([&] { p.validate(); }, {"rod.length", "-0.3"}));
+  EXPECT_TRUE(ThrowsInputErrorNaming([&] { p.validate(); }, {"RodProperties.length", "-0.3"}));
   p.length = 0.0;
-  EXPECT_TRUE(ThrowsInputErrorNaming([&] { p.validate(); }, {"rod.length"}));
+  EXPECT_TRUE(ThrowsInputErrorNaming([&] { p.validate(); }, {"RodProperties.length"}));
 }
 
 TEST(RodPropertiesInput, ZeroOrNaNStiffnessIsRejectedNamingTheStiffness) {
@@ -246,7 +248,7 @@ TEST(RodPropertiesInput, ZeroOrNaNStiffnessIsRejectedNamingTheStiffness) {
   }
   const RodProperties good = make_rod_properties(steel_strip());
   EXPECT_NO_THROW(good.validate());
-  const char* const rot_names[] = {"EIx", "EIy", "GJ"};
+  const char* const rot_names[] = {"K_rot[0]", "K_rot[1]", "K_rot[2]"};
   for (int i = 0; i < 3; ++i) {
     RodProperties p = good;
     p.K_rot(i) = 0.0;
@@ -254,7 +256,7 @@ TEST(RodPropertiesInput, ZeroOrNaNStiffnessIsRejectedNamingTheStiffness) {
     p.K_rot(i) = kNaN;
     EXPECT_TRUE(ThrowsInputErrorNaming([&] { p.validate(); }, {rot_names[i]}));
   }
-  const char* const tra_names[] = {"GA", "GA", "EA"};
+  const char* const tra_names[] = {"K_tra[0]", "K_tra[1]", "K_tra[2]"};
   for (int i = 0; i < 3; ++i) {
     RodProperties p = good;
     p.K_tra(i) = 0.0;
@@ -344,7 +346,7 @@ TEST(ClampedRodInput, NonFiniteLoadOrRodIsRejected) {
   EXPECT_THROW(rod.validate(), InputError);
   rod = good_clamped_rod();
   rod.properties.length = -1.0;
-  EXPECT_TRUE(ThrowsInputErrorNaming([&] { rod.validate(); }, {"rod.length"}));
+  EXPECT_TRUE(ThrowsInputErrorNaming([&] { rod.validate(); }, {"RodProperties.length"}));
   rod = good_clamped_rod();
   rod.clamp.position.x() = kNaN;
   EXPECT_THROW(rod.validate(), InputError);

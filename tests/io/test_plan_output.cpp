@@ -35,9 +35,9 @@ trajectory:
 )";
 
 /// Three steps bending the band about y by a growing end moment, as if optimised.
-ShapePlan make_plan(const PlanTask& task, int steps) {
-  const ClampedRod& rod = task.request.rod;
-  ShapePlan plan;
+PlanResult make_plan(const PlanTask& task, int steps) {
+  const ClampedRod& rod = task.problem.rod;
+  PlanResult plan;
   plan.status = steps == 3 ? PlanStatus::Complete : PlanStatus::Partial;
   plan.message = steps == 3 ? "complete: 3 steps" : "step 3 of 3 failed: <because>";
   plan.failed_step = steps == 3 ? -1 : steps;
@@ -46,11 +46,11 @@ ShapePlan make_plan(const PlanTask& task, int steps) {
   std::vector<Pose> waypoints{plan.initial_configuration.tip()};
   for (int k = 1; k <= steps; ++k) {
     PlanStep step;
-    for (const Eigen::Vector3d& p : task.request.target.points)
+    for (const Eigen::Vector3d& p : task.problem.target.points)
       step.objective_points.push_back(plan.initial_points[step.objective_points.size()] +
                                       k / 3.0 *
                                           (p - plan.initial_points[step.objective_points.size()]));
-    ShapeSolution& solution = step.solution;
+    ShapeResult& solution = step.solution;
     solution.status = SolveStatus::Converged;
     solution.message = "IPOPT Solve_Succeeded";
     solution.base_wrench = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0.05 * k, 0)};
@@ -60,7 +60,7 @@ ShapePlan make_plan(const PlanTask& task, int steps) {
     solution.cost.max_distance = 0.002;
     solution.ipopt.iterations = 10 + k;
     solution.ipopt.application_status_name = "Solve_Succeeded";
-    solution.stability = StabilityReport{};
+    solution.stability = StabilityResult{};
     solution.stability->stable = true;
     step.end_effector = solution.configuration.tip();
     step.end_effector.position += step.end_effector.rotation * Eigen::Vector3d(0, 0, 0.03);
@@ -73,7 +73,7 @@ ShapePlan make_plan(const PlanTask& task, int steps) {
 
 TEST(PlanOutput, JsonHasEveryDocumentedKey) {
   const PlanTask task = parse_plan_task(kTask, "plan.yaml");
-  const ShapePlan plan = make_plan(task, 3);
+  const PlanResult plan = make_plan(task, 3);
   const Json j = Json::parse(plan_result_json(plan, task));
   EXPECT_EQ(j["status"], "complete");
   EXPECT_EQ(j["message"], "complete: 3 steps");
@@ -109,14 +109,14 @@ TEST(PlanOutput, JsonHasEveryDocumentedKey) {
 
 TEST(PlanOutput, StepConfigurationIsWhatEquilibriumWrites) {
   const PlanTask task = parse_plan_task(kTask, "plan.yaml");
-  const ShapePlan plan = make_plan(task, 3);
+  const PlanResult plan = make_plan(task, 3);
   const Json j = Json::parse(plan_result_json(plan, task));
-  const ShapeSolution& last = plan.steps.back().solution;
-  ShootingSolution as_equilibrium;
+  const ShapeResult& last = plan.steps.back().solution;
+  ShootingResult as_equilibrium;
   as_equilibrium.base_wrench = last.base_wrench;
   as_equilibrium.configuration = last.configuration;
   const Json equilibrium =
-      Json::parse(equilibrium_result_json(as_equilibrium, last.stability, task.request.rod));
+      Json::parse(equilibrium_result_json(as_equilibrium, last.stability, task.problem.rod));
   const Json& configuration = j["steps"][2]["configuration"];
   ASSERT_FALSE(configuration.empty());
   for (const auto& [key, value] : configuration.items()) EXPECT_EQ(value, equilibrium[key]) << key;
@@ -125,7 +125,7 @@ TEST(PlanOutput, StepConfigurationIsWhatEquilibriumWrites) {
 
 TEST(PlanOutput, PartialPlanSaysWhichStepFailed) {
   const PlanTask task = parse_plan_task(kTask, "plan.yaml");
-  const ShapePlan plan = make_plan(task, 2);
+  const PlanResult plan = make_plan(task, 2);
   const Json j = Json::parse(plan_result_json(plan, task));
   EXPECT_EQ(j["status"], "partial");
   EXPECT_EQ(j["failed_step"], 3);
@@ -137,13 +137,17 @@ TEST(PlanOutput, PartialPlanSaysWhichStepFailed) {
 TEST(PlanOutput, InfeasiblePlanNamesTheOffendingPoint) {
   const PlanTask task = parse_plan_task(kTask + "# far\n", "plan.yaml");
   PlanTask far = task;
-  far.request.target.points[1] = Eigen::Vector3d(0, 0.6, 0);
-  ShapePlan plan;
+  far.problem.target.points[1] = Eigen::Vector3d(0, 0.6, 0);
+  PlanResult plan;
   plan.status = PlanStatus::Infeasible;
-  plan.message = "target.points[1] is too far";
+  plan.feasibility =
+      check_feasibility(far.problem.target, far.problem.rod);  // as plan() records it
+  plan.message = plan.feasibility.reason;
+  ASSERT_TRUE(plan.message.starts_with("ShapeTarget.points[1] ")) << plan.message;
   const Json j = Json::parse(plan_result_json(plan, far));
   EXPECT_EQ(j["status"], "infeasible");
-  EXPECT_EQ(j["reason"], "target.points[1] is too far");
+  // The library's field, said as the task file says it.
+  EXPECT_EQ(j["reason"], "target.points[1] " + plan.message.substr(22));
   EXPECT_EQ(j["feasibility"]["feasible"], false);
   EXPECT_EQ(j["feasibility"]["offending_point"], 1);
   EXPECT_EQ(j["feasibility"]["offending_position"], Json::parse("[0.0, 0.6, 0.0]"));
@@ -188,7 +192,7 @@ TEST(PlanOutput, TrajectoryCsvHasIncreasingTimesAndContinuousUnitQuaternions) {
 
 TEST(PlanOutput, SvgIsOneDocumentWithThreeProjections) {
   const PlanTask task = parse_plan_task(kTask, "a<b&c.yaml");
-  const ShapePlan plan = make_plan(task, 3);
+  const PlanResult plan = make_plan(task, 3);
   const std::string svg = plan_svg(plan, task);
   EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg", 0), 0u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
@@ -212,7 +216,7 @@ TEST(PlanOutput, SvgIsOneDocumentWithThreeProjections) {
 
 TEST(PlanOutput, SvgOfAPlanWithoutStepsStillDrawsTheInitialRod) {
   const PlanTask task = parse_plan_task(kTask, "plan.yaml");
-  ShapePlan plan = make_plan(task, 0);
+  PlanResult plan = make_plan(task, 0);
   const std::string svg = plan_svg(plan, task);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
   EXPECT_NE(svg.find("step 3 of 3 failed"), std::string::npos);

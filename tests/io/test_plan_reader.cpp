@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/trajectory/plan.hpp"
 #include "support/eigen_compare.hpp"
 #include "support/input_error.hpp"
 #include "support/task_text.hpp"
@@ -42,6 +43,22 @@ trajectory:
 /// kPlan with the first occurrence of `from` replaced by `to`.
 std::string plan_with(const std::string& from, const std::string& to) {
   return testing::replaced_first(kPlan, from, to);
+}
+
+/// The message of the InputError that plan() throws for the task `text`, located by
+/// PlanTask::locate, or "" if it plans (with one step, checked only that it throws).
+std::string plan_error_of(const std::string& text) {
+  PlanTask task = parse_plan_task(text, "plan.yaml");
+  task.options.steps = 1;
+  const std::string message = testing::input_error_message([&] {
+    try {
+      plan(task.problem, task.options);
+    } catch (const InputError& error) {
+      throw InputError(task.locate(error));
+    }
+  });
+  EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
+  return message;
 }
 
 /// The message of the InputError that reading `text` throws, or "" if it reads.
@@ -111,18 +128,29 @@ TEST(PlanReader, InvertedWorkspaceBoxIsNamed) {
 
 TEST(PlanReader, WorkspaceExcludingTheRestingTipIsNamed) {
   // The band at rest has its tip at z = 0.29, above this box.
-  const std::string message = error_of(plan_with("upper: [1, 1, 1]", "upper: [1, 1, 0.2]"));
-  EXPECT_TRUE(
-      message.starts_with("plan.yaml:15: workspace excludes the initial tip at [0, 0, 0.29]"))
-      << message;
+  // plan() finds it (the reader does not solve equilibria); PlanTask::locate says it in the file's
+  // names and at the workspace's line.
+  const std::string message = plan_error_of(plan_with("upper: [1, 1, 1]", "upper: [1, 1, 0.2]"));
+  EXPECT_EQ(message,
+            "plan.yaml:15: workspace excludes the initial tip at [0, 0, 0.29] (the rod at rest; "
+            "set initial.tip)");
 }
 
 TEST(PlanReader, WorkspaceExcludingTheInitialTipIsNamed) {
+  // A moment bending the band into a half circle (κ L = m L / EI = π) puts its tip at z ≈ 0,
+  // below the box.
   const std::string message =
-      error_of(kPlan + "initial:\n  tip: {position: [0.6, 0, 0.1], rotation: [1, 0, 0, 0]}\n");
-  EXPECT_TRUE(
-      message.starts_with("plan.yaml:15: workspace excludes the initial tip at [0.6, 0, 0.1] "
-                          "(initial.tip)"))
+      plan_error_of(kPlan + "initial:\n  base_wrench: {moment: [0, 0.4333, 0]}\n");
+  EXPECT_TRUE(message.starts_with("plan.yaml:15: workspace excludes the initial tip at ["))
+      << message;
+  EXPECT_TRUE(message.ends_with("(initial)")) << message;
+}
+
+TEST(PlanReader, AnInitialTipWithNoEquilibriumIsNamedAtItsLine) {
+  // 0.6 m from the clamp: further than the rod (0.29 m) can reach.
+  const std::string message =
+      plan_error_of(kPlan + "initial:\n  tip: {position: [0.6, 0, 0.1], rotation: [1, 0, 0, 0]}\n");
+  EXPECT_TRUE(message.starts_with("plan.yaml:22: initial.tip: no equilibrium holds the rod there"))
       << message;
 }
 
@@ -207,29 +235,29 @@ TEST(PlanReader, SectionsReadIntoTheRequestAndOptions) {
                            "optimizer: {max_iterations: 40, tolerance: 1e-7, "
                            "constraint_tolerance: 1e-8, multi_starts: 2}\n";
   const PlanTask task = parse_plan_task(text, "plan.yaml");
-  const PlanRequest& request = task.request;
+  const PlanProblem& problem = task.problem;
   EXPECT_EQ(task.source, "plan.yaml");
-  EXPECT_EQ(request.rod.intervals, 50);
-  ASSERT_EQ(request.target.points.size(), 3u);
-  EXPECT_TRUE(CompareMatrices(request.target.points[1], Eigen::Vector3d(0.047, 0, 0.101), 0.0));
-  EXPECT_EQ(request.target.energy_weight, 0.001);
-  EXPECT_EQ(request.target.distance_weight, 1.0);
-  EXPECT_FALSE(request.target.squared_distances);
-  ASSERT_TRUE(request.workspace.box.has_value());
-  EXPECT_TRUE(CompareMatrices(request.workspace.box->lower, Eigen::Vector3d(-1, -1, 0.05), 0.0));
-  ASSERT_EQ(request.workspace.inside.size(), 1u);
-  EXPECT_EQ(request.workspace.inside[0].radius, 0.5);
+  EXPECT_EQ(problem.rod.intervals, 50);
+  ASSERT_EQ(problem.target.points.size(), 3u);
+  EXPECT_TRUE(CompareMatrices(problem.target.points[1], Eigen::Vector3d(0.047, 0, 0.101), 0.0));
+  EXPECT_EQ(problem.target.energy_weight, 0.001);
+  EXPECT_EQ(problem.target.distance_weight, 1.0);
+  EXPECT_FALSE(problem.target.squared_distances);
+  ASSERT_TRUE(problem.workspace.box.has_value());
+  EXPECT_TRUE(CompareMatrices(problem.workspace.box->lower, Eigen::Vector3d(-1, -1, 0.05), 0.0));
+  ASSERT_EQ(problem.workspace.inside.size(), 1u);
+  EXPECT_EQ(problem.workspace.inside[0].radius, 0.5);
   const std::array<bool, 6> released{false, true, false, true, false, false};
-  EXPECT_EQ(request.grasp.zero_wrench, released);
-  EXPECT_TRUE(CompareMatrices(request.grasp.tip_to_end_effector.position,
+  EXPECT_EQ(problem.grasp.released, released);
+  EXPECT_TRUE(CompareMatrices(problem.grasp.tip_to_end_effector.position,
                               Eigen::Vector3d(0, 0, 0.03), 0.0));
-  ASSERT_TRUE(request.initial_tip.has_value());
-  EXPECT_TRUE(CompareMatrices(request.initial_tip->position, Eigen::Vector3d(0.05, 0, 0.28), 0.0));
-  EXPECT_EQ(request.limits.max_curvature, 12.0);
-  EXPECT_EQ(request.limits.max_axial_strain, 0.05);
-  EXPECT_EQ(request.wrench_bounds.lower(3), -1.0);
-  EXPECT_EQ(request.wrench_bounds.lower(0), -std::numeric_limits<double>::infinity());
-  EXPECT_EQ(request.wrench_bounds.upper(5), std::numeric_limits<double>::infinity());
+  ASSERT_EQ(problem.initial.kind, InitialState::Kind::HeldTip);
+  EXPECT_TRUE(CompareMatrices(problem.initial.tip.position, Eigen::Vector3d(0.05, 0, 0.28), 0.0));
+  EXPECT_EQ(problem.limits.max_curvature, 12.0);
+  EXPECT_EQ(problem.limits.max_axial_strain, 0.05);
+  EXPECT_EQ(problem.wrench_bounds.lower(3), -1.0);
+  EXPECT_EQ(problem.wrench_bounds.lower(0), -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(problem.wrench_bounds.upper(5), std::numeric_limits<double>::infinity());
 
   const PlanOptions& options = task.options;
   EXPECT_EQ(options.steps, 3);
@@ -252,12 +280,12 @@ TEST(PlanReader, DefaultsApplyWhenLeftOut) {
       "target:\n  points: [[0.01, 0, 0.1]]\n";
   const PlanTask task = parse_plan_task(text, "plan.yaml");
   const PlanOptions defaults;
-  EXPECT_EQ(task.request.target.energy_weight, 1e-3);  // the task file's default, not the library's
-  EXPECT_EQ(task.request.target.distance_weight, 1.0);
-  EXPECT_TRUE(task.request.workspace.unbounded());
-  EXPECT_FALSE(task.request.initial_tip.has_value());
-  EXPECT_FALSE(task.request.limits.max_curvature.has_value());
-  EXPECT_EQ(task.request.grasp.zero_wrench, (std::array<bool, 6>{}));
+  EXPECT_EQ(task.problem.target.energy_weight, 1e-3);  // the task file's default, not the library's
+  EXPECT_EQ(task.problem.target.distance_weight, 1.0);
+  EXPECT_TRUE(task.problem.workspace.unbounded());
+  EXPECT_EQ(task.problem.initial.kind, InitialState::Kind::Rest);
+  EXPECT_FALSE(task.problem.limits.max_curvature.has_value());
+  EXPECT_EQ(task.problem.grasp.released, (std::array<bool, 6>{}));
   EXPECT_EQ(task.options.steps, defaults.steps);
   EXPECT_EQ(task.options.optimizer.max_iterations, defaults.optimizer.max_iterations);
   EXPECT_EQ(task.options.end_effector.max_linear_speed, defaults.end_effector.max_linear_speed);
@@ -272,9 +300,9 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     if (!name.starts_with("plan_") || entry.path().extension() != ".yaml") continue;
     SCOPED_TRACE(name);
     const PlanTask task = read_plan_task(entry.path().string());
-    EXPECT_EQ(task.request.target.points.size(), 10u);
+    EXPECT_EQ(task.problem.target.points.size(), 10u);
     EXPECT_EQ(task.options.steps, 7);
-    EXPECT_EQ(task.robot.has_value(), name.starts_with("plan_panda_"));
+    EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_"));
     ++count;
   }
   EXPECT_EQ(count, 8);
@@ -290,7 +318,7 @@ std::string plan_with_robot(const std::string& fields) {
 }
 
 TEST(PlanReader, WithoutARobotSectionThereIsNoRobot) {
-  EXPECT_FALSE(parse_plan_task(kPlan, "plan.yaml").robot.has_value());
+  EXPECT_FALSE(parse_plan_task(kPlan, "plan.yaml").problem.arm.has_value());
 }
 
 TEST(PlanReader, RobotSectionReadsTheArmItsPlacementAndSeed) {
@@ -300,43 +328,43 @@ TEST(PlanReader, RobotSectionReadsTheArmItsPlacementAndSeed) {
                       "  flange_to_end_effector: {position: [0, 0, 0.1], rotation: [0, 1, 0, 0]}\n"
                       "  seed: [0, -0.5, 0, -2, 0, 1.5, 0.5]\n"),
       "plan.yaml");
-  ASSERT_TRUE(task.robot.has_value());
-  EXPECT_EQ(task.robot->arm.joints(), 7);
-  EXPECT_EQ(task.robot->arm.tip_link(), "panda_link8");
-  EXPECT_TRUE(CompareMatrices(task.robot->placement.world_T_base.position,
+  ASSERT_TRUE(task.problem.arm.has_value());
+  EXPECT_EQ(task.problem.arm->model.joints(), 7);
+  EXPECT_EQ(task.problem.arm->model.tip_link(), "panda_link8");
+  EXPECT_TRUE(CompareMatrices(task.problem.arm->placement.world_T_base.position,
                               Eigen::Vector3d(-0.45, 0, -0.2), 0.0));
-  EXPECT_TRUE(
-      CompareMatrices(task.robot->placement.flange_T_ee.position, Eigen::Vector3d(0, 0, 0.1), 0.0));
+  EXPECT_TRUE(CompareMatrices(task.problem.arm->placement.flange_T_ee.position,
+                              Eigen::Vector3d(0, 0, 0.1), 0.0));
   const Eigen::Matrix3d turn = Eigen::Vector3d(1, -1, -1).asDiagonal();  // π about x
-  EXPECT_TRUE(CompareMatrices(task.robot->placement.flange_T_ee.rotation, turn, 1e-15));
-  ASSERT_EQ(task.robot->options.joints.seed.size(), 7);
-  EXPECT_EQ(task.robot->options.joints.seed(3), -2.0);
+  EXPECT_TRUE(CompareMatrices(task.problem.arm->placement.flange_T_ee.rotation, turn, 1e-15));
+  ASSERT_EQ(task.options.arm.joints.seed.size(), 7);
+  EXPECT_EQ(task.options.arm.joints.seed(3), -2.0);
 }
 
 TEST(PlanReader, RobotDefaultsAreIdentityPlacementAndNoSeed) {
   const PlanTask task = parse_plan_task(plan_with_robot(""), "plan.yaml");
-  ASSERT_TRUE(task.robot.has_value());
-  EXPECT_TRUE(task.robot->placement.world_T_base.rotation.isIdentity(0.0));
-  EXPECT_TRUE(task.robot->placement.flange_T_ee.position.isZero(0.0));
-  EXPECT_EQ(task.robot->options.joints.seed.size(), 0);
+  ASSERT_TRUE(task.problem.arm.has_value());
+  EXPECT_TRUE(task.problem.arm->placement.world_T_base.rotation.isIdentity(0.0));
+  EXPECT_TRUE(task.problem.arm->placement.flange_T_ee.position.isZero(0.0));
+  EXPECT_EQ(task.options.arm.joints.seed.size(), 0);
 }
 
 TEST(PlanReader, RobotUrdfIsRelativeToTheTaskFile) {
   const std::string task_file = std::string(RODSHAPE_SOURCE_DIR) + "/examples/some_plan.yaml";
   const PlanTask task =
       parse_plan_task(kPlan + "robot:\n  urdf: ../data/robots/panda.urdf\n", task_file);
-  ASSERT_TRUE(task.robot.has_value());
-  EXPECT_EQ(task.robot->arm.robot_name(), "panda");
+  ASSERT_TRUE(task.problem.arm.has_value());
+  EXPECT_EQ(task.problem.arm->model.robot_name(), "panda");
 }
 
 TEST(PlanReader, RobotReachSectionReadsItsOptions) {
   const PlanTask defaults = parse_plan_task(plan_with_robot(""), "plan.yaml");
-  EXPECT_TRUE(defaults.robot->options.use_reach);
+  EXPECT_TRUE(defaults.options.arm.use_reach);
   const PlanTask task = parse_plan_task(
       plan_with_robot("  reach: {use: false, margin: 0.05, tightening: 0.01, max_replans: 5, "
                       "samples: 100}\n"),
       "plan.yaml");
-  const ArmPlanOptions& options = task.robot->options;
+  const ArmPlanOptions& options = task.options.arm;
   EXPECT_FALSE(options.use_reach);
   EXPECT_EQ(options.reach_margin, 0.05);
   EXPECT_EQ(options.replan_tightening, 0.01);

@@ -17,8 +17,8 @@ namespace {
 using Json = nlohmann::json;
 
 /// A 3-node configuration bent about y, as if integrated.
-ShootingSolution make_solution() {
-  ShootingSolution solution;
+ShootingResult make_solution() {
+  ShootingResult solution;
   solution.summary.status = SolveStatus::Converged;
   solution.summary.message = "converged";
   solution.summary.iterations = 4;
@@ -48,7 +48,7 @@ ClampedRod make_rod() {
 }
 
 TEST(ResultJson, HasEveryDocumentedKeyWithConsistentSizes) {
-  StabilityReport stability;
+  StabilityResult stability;
   stability.stable = true;
   stability.min_singular_value = 0.25;
   stability.tip_singular_value = 0.5;
@@ -88,7 +88,7 @@ TEST(ResultJson, HasEveryDocumentedKeyWithConsistentSizes) {
 }
 
 TEST(ResultJson, UnassessedStabilityAndNonFiniteNumbersAreNull) {
-  ShootingSolution solution = make_solution();
+  ShootingResult solution = make_solution();
   solution.summary.status = SolveStatus::Diverged;
   solution.summary.residual_norm = std::numeric_limits<double>::quiet_NaN();
   solution.configuration.energy = std::numeric_limits<double>::infinity();
@@ -101,7 +101,7 @@ TEST(ResultJson, UnassessedStabilityAndNonFiniteNumbersAreNull) {
 }
 
 TEST(ResultJson, NumbersRoundTripExactly) {
-  ShootingSolution solution = make_solution();
+  ShootingResult solution = make_solution();
   solution.configuration.p[1] = Eigen::Vector3d(0.1 + 0.2, 1.0 / 3.0, -2.0e-300);
   const Json j = Json::parse(equilibrium_result_json(solution, std::nullopt, make_rod()));
   EXPECT_EQ(j["nodes"]["position"][1][0].get<double>(), 0.1 + 0.2);

@@ -66,14 +66,14 @@ double max_curvature(const ClampedRod& rod, const RodConfiguration& c) {
 }
 
 /// Runs optimise_shape and reports its time and iterations in the test's XML properties.
-ShapeSolution timed_optimise(ShapeProblem& problem,
-                             const Vector6d& guess,
-                             ShapeOptimizerOptions options = {}) {
+ShapeResult timed_optimise(ShapeProblem& problem,
+                           const Vector6d& guess,
+                           ShapeOptimizerOptions options = {}) {
   // RODSHAPE_TEST_IPOPT_PRINT_LEVEL=5 shows IPOPT's iterations when a test needs diagnosing.
   if (const char* level = std::getenv("RODSHAPE_TEST_IPOPT_PRINT_LEVEL"))
     options.print_level = std::atoi(level);
   const auto start = std::chrono::steady_clock::now();
-  ShapeSolution solution = optimise_shape(problem, BaseWrench::from_vector(guess), options);
+  ShapeResult solution = optimise_shape(problem, BaseWrench::from_vector(guess), options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   ::testing::Test::RecordProperty("iterations", solution.ipopt.iterations);
@@ -106,8 +106,8 @@ TEST_F(ShapeOptimizerTest, IpoptDerivativeCheckerFindsNoErrors) {
   workspace.inside.push_back({Eigen::Vector3d(0.0, 0.0, 0.1), 0.5});
   workspace.outside.push_back({Eigen::Vector3d(0.3, 0.3, 0.0), 0.05});
   Grasp grasp;
-  grasp.zero_wrench[0] = true;  // n_x
-  grasp.zero_wrench[3] = true;  // m_x
+  grasp.released[0] = true;  // n_x
+  grasp.released[3] = true;  // m_x
   StrainLimits limits;
   limits.max_curvature = 5.0;
   limits.max_axial_strain = 0.01;
@@ -132,7 +132,7 @@ TEST_F(ShapeOptimizerTest, IpoptDerivativeCheckerFindsNoErrors) {
 
 TEST_F(ShapeOptimizerTest, RecoversAKnownEquilibriumFromAZeroGuess) {
   ShapeProblem problem(rod, target);
-  const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero());
+  const ShapeResult solution = timed_optimise(problem, Vector6d::Zero());
   ASSERT_TRUE(solution.converged()) << solution.message;
   EXPECT_EQ(solution.ipopt.application_status_name.rfind("Solve", 0), 0u);
   for (int i = 0; i < kPoints; ++i) EXPECT_LT(solution.cost.distances[i], 0.5e-3) << "point " << i;
@@ -158,10 +158,10 @@ TEST_F(ShapeOptimizerTest, MultiStartKeepsTheBestConvergedStart) {
   ShapeProblem problem(rod, target);
   const Vector6d guess = 0.3 * w_gen;
   ShapeOptimizerOptions single;
-  const ShapeSolution one = timed_optimise(problem, guess, single);
+  const ShapeResult one = timed_optimise(problem, guess, single);
   ShapeOptimizerOptions multi;
   multi.multi_starts = 3;
-  const ShapeSolution best = timed_optimise(problem, guess, multi);
+  const ShapeResult best = timed_optimise(problem, guess, multi);
   EXPECT_EQ(best.starts_tried, 4);
   ASSERT_TRUE(best.converged()) << best.message;
   // The guess's own run is among the starts (IPOPT is deterministic), so the best is no worse.
@@ -180,7 +180,7 @@ TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
   workspace.half_spaces.push_back({normal, offset});
   ShapeProblem problem(rod, target, workspace);
   ShapeOptimizerOptions options;
-  const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
+  const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
 
   const double g = normal.dot(solution.configuration.p.back());
@@ -217,10 +217,10 @@ TEST_F(ShapeOptimizerTest, GraspWithoutMomentXGivesZeroTipMomentX) {
   ASSERT_GT(std::abs(mx_gen), 1e-2);
 
   Grasp grasp;
-  grasp.zero_wrench[3] = true;
+  grasp.released[3] = true;
   ShapeProblem problem(rod, target, {}, grasp);
   ShapeOptimizerOptions options;
-  const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
+  const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
   const RodConfiguration& c = solution.configuration;
   const double mx = (c.R.back().transpose() * c.m.back()).x();
@@ -231,7 +231,7 @@ TEST_F(ShapeOptimizerTest, GraspWithoutMomentXGivesZeroTipMomentX) {
 
 TEST_F(ShapeOptimizerTest, CurvatureLimitHoldsAtEveryNode) {
   ShapeProblem free_problem(rod, target);
-  const ShapeSolution free = timed_optimise(free_problem, Vector6d::Zero());
+  const ShapeResult free = timed_optimise(free_problem, Vector6d::Zero());
   ASSERT_TRUE(free.converged()) << free.message;
   const double kappa_free = max_curvature(rod, free.configuration);
 
@@ -239,7 +239,7 @@ TEST_F(ShapeOptimizerTest, CurvatureLimitHoldsAtEveryNode) {
   limits.max_curvature = 0.8 * kappa_free;
   ShapeProblem problem(rod, target, {}, {}, limits);
   ShapeOptimizerOptions options;
-  const ShapeSolution solution = timed_optimise(problem, free.base_wrench.to_vector(), options);
+  const ShapeResult solution = timed_optimise(problem, free.base_wrench.to_vector(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
   const double kappa2 = *limits.max_curvature * *limits.max_curvature;
   double largest = 0.0;
@@ -257,7 +257,7 @@ TEST_F(ShapeOptimizerTest, IterationLimitIsReported) {
   ShapeProblem problem(rod, target);
   ShapeOptimizerOptions options;
   options.max_iterations = 2;
-  const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
+  const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   EXPECT_EQ(solution.status, SolveStatus::IterationLimit) << solution.message;
   EXPECT_EQ(solution.ipopt.application_status_name, "Maximum_Iterations_Exceeded");
   EXPECT_NE(solution.message.find("Maximum_Iterations_Exceeded"), std::string::npos);
@@ -271,7 +271,7 @@ TEST_F(ShapeOptimizerTest, UnreachableWorkspaceIsNeverConverged) {
   ShapeProblem problem(rod, target, workspace);
   ShapeOptimizerOptions options;
   options.max_iterations = 50;
-  const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
+  const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   EXPECT_NE(solution.status, SolveStatus::Converged) << solution.message;
   EXPECT_GT(solution.max_constraint_violation, options.constraint_tolerance);
   EXPECT_NE(solution.message.find(solution.ipopt.application_status_name), std::string::npos);
@@ -294,7 +294,7 @@ TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
   int converged = 0;
   for (int iterations : {3, 10, 300}) {
     options.max_iterations = iterations;
-    const ShapeSolution solution = timed_optimise(problem, Vector6d::Zero(), options);
+    const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
     if (!solution.converged()) continue;
     ++converged;
     const RodConfiguration& c = solution.configuration;
@@ -313,7 +313,7 @@ TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
 TEST_F(ShapeOptimizerTest, PrintsNothingAtPrintLevelZero) {
   ShapeProblem problem(rod, target);
   ::testing::internal::CaptureStdout();
-  const ShapeSolution solution =
+  const ShapeResult solution =
       optimise_shape(problem, BaseWrench::from_vector(Vector6d::Zero()), {});
   std::fflush(stdout);
   const std::string printed = ::testing::internal::GetCapturedStdout();
@@ -327,19 +327,20 @@ TEST(ShapeOptimizerOptions, BadOptionsNameTheField) {
   ShapeOptimizerOptions options;
   EXPECT_EQ(message_of(options), "");
   options.max_iterations = -1;
-  EXPECT_NE(message_of(options).find("optimizer.max_iterations"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.max_iterations"), std::string::npos);
   options = {};
   options.tolerance = 0.0;
-  EXPECT_NE(message_of(options).find("optimizer.tolerance"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.tolerance"), std::string::npos);
   options = {};
   options.constraint_tolerance = std::nan("");
-  EXPECT_NE(message_of(options).find("optimizer.constraint_tolerance"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.constraint_tolerance"),
+            std::string::npos);
   options = {};
   options.multi_starts = -2;
-  EXPECT_NE(message_of(options).find("optimizer.multi_starts"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.multi_starts"), std::string::npos);
   options = {};
   options.print_level = 13;
-  EXPECT_NE(message_of(options).find("optimizer.print_level"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.print_level"), std::string::npos);
 
   // optimise_shape validates before touching IPOPT.
   ShapeTarget target;

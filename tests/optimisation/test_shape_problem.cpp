@@ -78,7 +78,7 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   const ClampedRod rod = loaded_rod(model);
   const RodConfiguration c = integrate(rod, Wrench::from_vector(base_wrench(rod)));
   Grasp grasp;
-  grasp.zero_wrench = {true, false, false, true, false, false};  // fx, mx
+  grasp.released = {true, false, false, true, false, false};  // fx, mx
   StrainLimits limits;
   limits.max_curvature = 8.0;
   limits.max_axial_strain = 0.01;
@@ -301,13 +301,14 @@ TEST(ShapeProblem, BadInputThrowsInputErrorNamingTheField) {
   };
   ShapeTarget t = good;
   t.points.clear();
-  EXPECT_NE(with_target(t).find("target.points"), std::string::npos) << with_target(t);
+  EXPECT_NE(with_target(t).find("ShapeTarget.points"), std::string::npos) << with_target(t);
   t = good;
   t.points.push_back({0.0, std::nan(""), 0.1});
-  EXPECT_NE(with_target(t).find("target.points[1]"), std::string::npos) << with_target(t);
+  EXPECT_NE(with_target(t).find("ShapeTarget.points[1]"), std::string::npos) << with_target(t);
   t = good;
   t.distance_weight = -0.5;
-  EXPECT_NE(with_target(t).find("weights.distance"), std::string::npos) << with_target(t);
+  EXPECT_NE(with_target(t).find("ShapeTarget.distance_weight"), std::string::npos)
+      << with_target(t);
   t = good;
   t.energy_weight = 0.0;
   t.distance_weight = 0.0;
@@ -316,33 +317,33 @@ TEST(ShapeProblem, BadInputThrowsInputErrorNamingTheField) {
   Workspace ws;
   ws.inside.push_back({Eigen::Vector3d::Zero(), -0.2});
   const std::string radius = input_error_message([&] { ShapeProblem problem(rod, good, ws); });
-  EXPECT_NE(radius.find("workspace.inside[0].radius"), std::string::npos) << radius;
+  EXPECT_NE(radius.find("Workspace.inside[0].radius"), std::string::npos) << radius;
   const auto reach_error = [&](double inner, double outer, double x) {
     Workspace shell;
     shell.reach = Workspace::ReachShell{{x, 0.0, 0.0}, inner, outer, Eigen::Vector3d::Zero()};
     return input_error_message([&] { ShapeProblem problem(rod, good, shell); });
   };
-  EXPECT_NE(reach_error(0.0, -0.5, 0.0).find("workspace.reach.outer_radius"), std::string::npos);
-  EXPECT_NE(reach_error(-0.1, 0.5, 0.0).find("workspace.reach.inner_radius"), std::string::npos);
+  EXPECT_NE(reach_error(0.0, -0.5, 0.0).find("Workspace.reach.outer_radius"), std::string::npos);
+  EXPECT_NE(reach_error(-0.1, 0.5, 0.0).find("Workspace.reach.inner_radius"), std::string::npos);
   EXPECT_NE(reach_error(0.6, 0.5, 0.0).find("empty shell"), std::string::npos);
-  EXPECT_NE(reach_error(0.1, 0.5, std::nan("")).find("workspace.reach.center"), std::string::npos);
+  EXPECT_NE(reach_error(0.1, 0.5, std::nan("")).find("Workspace.reach.center"), std::string::npos);
   for (double bad : {0.0, -1.0}) {
     StrainLimits limits;
     limits.max_curvature = bad;
     const std::string message =
         input_error_message([&] { ShapeProblem problem(rod, good, {}, {}, limits); });
-    EXPECT_NE(message.find("limits.max_curvature"), std::string::npos) << message;
+    EXPECT_NE(message.find("StrainLimits.max_curvature"), std::string::npos) << message;
   }
   ClampedRod bad_rod = rod;
   bad_rod.properties.length = -1.0;
   const std::string length = input_error_message([&] { ShapeProblem problem(bad_rod, good); });
-  EXPECT_NE(length.find("rod.length"), std::string::npos) << length;
+  EXPECT_NE(length.find("RodProperties.length"), std::string::npos) << length;
   WrenchBounds bounds;
   bounds.lower(4) = 1.0;
   bounds.upper(4) = -1.0;
   const std::string wrench =
       input_error_message([&] { ShapeProblem problem(rod, good, {}, {}, {}, bounds); });
-  EXPECT_NE(wrench.find("wrench_bounds.moment.y"), std::string::npos) << wrench;
+  EXPECT_NE(wrench.find("WrenchBounds.moment.y"), std::string::npos) << wrench;
 }
 
 }  // namespace

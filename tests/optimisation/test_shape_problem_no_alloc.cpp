@@ -43,7 +43,7 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   ws.half_spaces.push_back({Eigen::Vector3d(0.0, 0.0, 1.0), 0.4});
   ws.reach = Workspace::ReachShell{{-0.4, 0.0, 0.3}, 0.1, 0.8, {0.0, 0.0, 0.2}};
   Grasp grasp;
-  grasp.zero_wrench = {true, false, true, true, false, false};
+  grasp.released = {true, false, true, true, false, false};
   StrainLimits limits;
   limits.max_curvature = 20.0;
   limits.max_axial_strain = 0.05;

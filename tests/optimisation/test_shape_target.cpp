@@ -34,18 +34,20 @@ using testing::input_error_message;
 
 TEST(ShapeTarget, ValidateNamesTheField) {
   ShapeTarget target;
-  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "target.points"));
+  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "ShapeTarget.points"));
   target.points = {{0.0, 0.0, 0.1}, {0.0, std::nan(""), 0.2}};
-  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "target.points[1]"));
+  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "ShapeTarget.points[1]"));
   target.points[1] = {0.0, 0.0, 0.2};
   EXPECT_NO_THROW(target.validate());
   target.energy_weight = -1.0;
-  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "weights.energy"));
+  EXPECT_TRUE(
+      Mentions(input_error_message([&] { target.validate(); }), "ShapeTarget.energy_weight"));
   target.energy_weight = 0.0;
   target.distance_weight = 0.0;
   EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "both 0"));
   target.distance_weight = std::nan("");
-  EXPECT_TRUE(Mentions(input_error_message([&] { target.validate(); }), "weights.distance"));
+  EXPECT_TRUE(
+      Mentions(input_error_message([&] { target.validate(); }), "ShapeTarget.distance_weight"));
 }
 
 TEST(ShapeTarget, PointsSampledFromARealConfigurationAreFeasible) {
@@ -55,7 +57,7 @@ TEST(ShapeTarget, PointsSampledFromARealConfigurationAreFeasible) {
     const RodConfiguration c = integrate(rod, {{0.1, 0.2, 0.0}, {0.3, -0.1, 0.05}});
     ShapeTarget target;
     for (int i : {8, 16, 24, 32, 40}) target.points.push_back(c.p[i]);  // up to the tip
-    const TargetFeasibility feasibility = check_feasibility(target, rod);
+    const FeasibilityResult feasibility = check_feasibility(target, rod);
     EXPECT_TRUE(feasibility.feasible) << feasibility.reason;
     EXPECT_TRUE(feasibility.reason.empty());
     EXPECT_EQ(feasibility.offending_point, -1);
@@ -68,10 +70,10 @@ TEST(ShapeTarget, APointBeyondReachIsInfeasibleAndNamed) {
   const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
   ShapeTarget target;
   target.points = {{0.0, 0.05, 0.1}, {0.0, 0.1, 0.2}, {0.0, 0.3, 0.28}, {0.0, 0.1, 0.25}};
-  const TargetFeasibility feasibility = check_feasibility(target, rod);
+  const FeasibilityResult feasibility = check_feasibility(target, rod);
   EXPECT_FALSE(feasibility.feasible);
   EXPECT_EQ(feasibility.offending_point, 2);
-  EXPECT_TRUE(Mentions(feasibility.reason, "target.points[2] is 0.41 m from the clamp"));
+  EXPECT_TRUE(Mentions(feasibility.reason, "ShapeTarget.points[2] is 0.41 m from the clamp"));
   EXPECT_TRUE(Mentions(feasibility.reason, "(0.29 m)"));
 }
 
@@ -80,7 +82,7 @@ TEST(ShapeTarget, AZigZagLongerThanTheRodIsInfeasibleWithItsLength) {
   ShapeTarget target;
   // Every point within 0.22 m of the clamp, but the polyline alone is 0.61 m long.
   target.points = {{0.0, 0.08, 0.08}, {0.0, -0.08, 0.12}, {0.0, 0.08, 0.16}, {0.0, -0.08, 0.2}};
-  const TargetFeasibility feasibility = check_feasibility(target, rod);
+  const FeasibilityResult feasibility = check_feasibility(target, rod);
   EXPECT_FALSE(feasibility.feasible);
   EXPECT_GT(feasibility.curve_length, 0.4);
   std::ostringstream length;
@@ -94,12 +96,12 @@ TEST(ShapeTarget, ReachIsTheLengthForKirchhoffAndStretchesForCosserat) {
   ShapeTarget target;
   target.points = {{0.0, 0.0, 0.3}};  // 0.30 m straight ahead: beyond L = 0.29, within 1.1 L
   const ClampedRod kirchhoff = testing::rubber_band(ConstitutiveModel::Kirchhoff, 20);
-  const TargetFeasibility k = check_feasibility(target, kirchhoff, 0.1);
+  const FeasibilityResult k = check_feasibility(target, kirchhoff, 0.1);
   EXPECT_EQ(k.reach, kirchhoff.properties.length);  // the model cannot stretch
   EXPECT_FALSE(k.feasible);
   EXPECT_EQ(k.offending_point, 0);
   const ClampedRod cosserat = testing::rubber_band(ConstitutiveModel::Cosserat, 20);
-  const TargetFeasibility c = check_feasibility(target, cosserat, 0.1);
+  const FeasibilityResult c = check_feasibility(target, cosserat, 0.1);
   EXPECT_TRUE(CompareScalars(c.reach, 1.1 * cosserat.properties.length, 1e-15));
   EXPECT_TRUE(c.feasible) << c.reason;
   EXPECT_FALSE(check_feasibility(target, cosserat).feasible);  // no stretch allowed by default
@@ -115,7 +117,7 @@ TEST(ShapeTarget, SplineLengthOfCollinearPointsIsTheStraightDistance) {
     ShapeTarget target;
     for (std::size_t k = 0; k < count; ++k)
       target.points.push_back(rod.clamp.position + along[k] * direction);
-    const TargetFeasibility feasibility = check_feasibility(target, rod);
+    const FeasibilityResult feasibility = check_feasibility(target, rod);
     EXPECT_TRUE(feasibility.feasible) << feasibility.reason;
     EXPECT_TRUE(
         CompareScalars(feasibility.curve_length, along[count - 1], 1e-14 * along[count - 1]))
@@ -134,7 +136,7 @@ TEST(ShapeTarget, SplineLengthOfPointsOnAnArcApproachesTheArcLength) {
     const double a = quarter * k / 12.0;
     target.points.push_back({0.0, rho * (1.0 - std::cos(a)), rho * std::sin(a)});
   }
-  const TargetFeasibility feasibility = check_feasibility(target, rod);
+  const FeasibilityResult feasibility = check_feasibility(target, rod);
   EXPECT_TRUE(feasibility.feasible) << feasibility.reason;
   EXPECT_NEAR(feasibility.curve_length, rho * quarter, 1e-3 * rho * quarter);
 }

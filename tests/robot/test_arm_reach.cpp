@@ -148,17 +148,17 @@ TEST(ArmReach, BadMarginsAndOptionsThrowInputErrorsThatSayWhy) {
   const ArmReach reach = rodshape::compute_arm_reach(arm);
   const std::string negative =
       input_error_message([&] { rodshape::reach_shell(reach, {}, {}, -0.01); });
-  EXPECT_NE(negative.find("reach.margin"), std::string::npos) << negative;
+  EXPECT_NE(negative.find("margin = -0.01 must be >= 0"), std::string::npos) << negative;
   const std::string wide = input_error_message([&] { rodshape::reach_shell(reach, {}, {}, 0.4); });
   EXPECT_NE(wide.find("leaves no shell"), std::string::npos) << wide;
   const std::string nan =
       input_error_message([&] { rodshape::reach_shell(reach, {}, {}, std::nan("")); });
-  EXPECT_NE(nan.find("reach.margin"), std::string::npos) << nan;
+  EXPECT_NE(nan.find("margin = nan"), std::string::npos) << nan;
   rodshape::ArmReachOptions options;
   options.samples = 0;
   const std::string samples =
       input_error_message([&] { rodshape::compute_arm_reach(arm, options); });
-  EXPECT_NE(samples.find("reach.samples"), std::string::npos) << samples;
+  EXPECT_NE(samples.find("ArmReachOptions.samples"), std::string::npos) << samples;
 }
 
 }  // namespace

@@ -85,7 +85,7 @@ class StraightCompressedRod : public ::testing::TestWithParam<double> {};  // pa
 TEST_P(StraightCompressedRod, StableBelowTheClampedClampedEulerLoad) {
   const ClampedRod rod = stiff_shear_band(0.04, 0.04 * GetParam());
   const double P = 0.8 * euler_load(0.04, rod.properties.length);  // EIx = min(EIx, EIy)
-  const StabilityReport report = assess_stability(rod, compressed(rod, P));
+  const StabilityResult report = assess_stability(rod, compressed(rod, P));
   EXPECT_TRUE(report.stable);
   EXPECT_FALSE(report.degenerate);
   EXPECT_FALSE(report.conjugate_point_s.has_value());
@@ -97,7 +97,7 @@ TEST_P(StraightCompressedRod, UnstableBeyondItWithTheConjugatePointWhereSqrtPOve
   const ClampedRod rod = stiff_shear_band(0.04, 0.04 * GetParam());
   const double L = rod.properties.length;
   const double P = 1.2 * euler_load(0.04, L);
-  const StabilityReport report = assess_stability(rod, compressed(rod, P));
+  const StabilityResult report = assess_stability(rod, compressed(rod, P));
   EXPECT_FALSE(report.stable);
   EXPECT_FALSE(report.degenerate);
   ASSERT_TRUE(report.conjugate_point_s.has_value());
@@ -116,7 +116,7 @@ TEST_P(StraightCompressedRod, ConjugatePointMovesAsOneOverSqrtP) {
   const ClampedRod rod = stiff_shear_band(0.04, 0.04 * GetParam());
   for (double factor : {1.5, 2.0, 3.0}) {
     const double P = factor * euler_load(0.04, rod.properties.length);
-    const StabilityReport report = assess_stability(rod, compressed(rod, P));
+    const StabilityResult report = assess_stability(rod, compressed(rod, P));
     SCOPED_TRACE("P = " + std::to_string(factor) + " P_E");
     ASSERT_TRUE(report.conjugate_point_s.has_value());
     const ConjugatePoint expected = expected_conjugate_point(rod, 0.04, P);
@@ -139,7 +139,7 @@ INSTANTIATE_TEST_SUITE_P(BendingStiffnessRatio,
 // by cond(C(h)) ≈ (L/h)² EA h² / EI... ≲ 1e6 at the first node; 1e-6 covers ε·1e6 with margin.
 TEST(Stability, UnloadedStraightCosseratRodIsStableWithUnitSingularValues) {
   const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 100);
-  const StabilityReport report = assess_stability(rod, integrate(rod, {}, Derivatives::AllNodes));
+  const StabilityResult report = assess_stability(rod, integrate(rod, {}, Derivatives::AllNodes));
   EXPECT_TRUE(report.stable);
   EXPECT_FALSE(report.degenerate);
   EXPECT_FALSE(report.conjugate_point_s.has_value());
@@ -153,7 +153,7 @@ TEST(Stability, StraightKirchhoffRodIsDegenerate) {
   const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Kirchhoff, 100);
   for (double P : {0.0, 0.5 * euler_load(testing::kBandEI, rod.properties.length)}) {
     SCOPED_TRACE("P = " + std::to_string(P));
-    const StabilityReport report = assess_stability(rod, compressed(rod, P));
+    const StabilityResult report = assess_stability(rod, compressed(rod, P));
     EXPECT_TRUE(report.degenerate);
     EXPECT_FALSE(report.stable);
   }
@@ -172,7 +172,7 @@ TEST(Stability, NeedsEveryNodesDerivatives) {
 // -------------------------------------------------------------------------------
 
 struct BuckledMode {
-  ShootingSolution solution;
+  ShootingResult solution;
   double symmetry_tolerance = 0.0;  // m
 };
 
@@ -244,7 +244,7 @@ TEST(Stability, FirstBuckledModeIsSymmetricAndStable) {
   const ClampedRod rod = buckling_band(ConstitutiveModel::Cosserat);
   const double L = rod.properties.length;
   const BuckledMode mode = first_mode(rod);
-  const ShootingSolution& solution = mode.solution;
+  const ShootingResult& solution = mode.solution;
   ASSERT_EQ(solution.summary.status, SolveStatus::Converged) << solution.summary.brief();
   std::cout << "[ buckled mode 1 ] " << solution.summary.brief()
             << ", w = " << solution.base_wrench.to_vector().transpose() << "\n";
@@ -253,7 +253,7 @@ TEST(Stability, FirstBuckledModeIsSymmetricAndStable) {
   // Buckled, not straight: the midpoint is well off the axis; no lateral force (symmetric mode).
   EXPECT_GT(std::abs(c.p[N / 2].y()), 0.05 * L);
   expect_mirror_symmetry(mode, +1.0, L);
-  const StabilityReport report = assess_stability(rod, c);
+  const StabilityResult report = assess_stability(rod, c);
   EXPECT_TRUE(report.stable);
   EXPECT_FALSE(report.degenerate);
   EXPECT_FALSE(report.conjugate_point_s.has_value());
@@ -265,7 +265,7 @@ TEST(Stability, SecondBuckledModeIsAntisymmetricAndUnstable) {
   const ClampedRod rod = buckling_band(ConstitutiveModel::Cosserat);
   const double L = rod.properties.length;
   const BuckledMode mode = second_mode(rod);
-  const ShootingSolution& solution = mode.solution;
+  const ShootingResult& solution = mode.solution;
   ASSERT_EQ(solution.summary.status, SolveStatus::Converged) << solution.summary.brief();
   std::cout << "[ buckled mode 2 ] " << solution.summary.brief()
             << ", w = " << solution.base_wrench.to_vector().transpose() << "\n";
@@ -274,7 +274,7 @@ TEST(Stability, SecondBuckledModeIsAntisymmetricAndUnstable) {
   // S-shaped: off the axis at the quarter points, on it at the middle.
   EXPECT_GT(std::abs(c.p[N / 4].y()), 0.02 * L);
   expect_mirror_symmetry(mode, -1.0, L);
-  const StabilityReport report = assess_stability(rod, c);
+  const StabilityResult report = assess_stability(rod, c);
   EXPECT_FALSE(report.stable);
   EXPECT_FALSE(report.degenerate);
   ASSERT_TRUE(report.conjugate_point_s.has_value());
@@ -293,7 +293,7 @@ TEST(Stability, FirstBuckledModeOfARoundRodIsNeutral) {
   const BuckledMode mode = first_mode(rod);
   ASSERT_EQ(mode.solution.summary.status, SolveStatus::Converged) << mode.solution.summary.brief();
   expect_mirror_symmetry(mode, +1.0, rod.properties.length);
-  const StabilityReport report = assess_stability(rod, mode.solution.configuration);
+  const StabilityResult report = assess_stability(rod, mode.solution.configuration);
   EXPECT_FALSE(report.stable);
   EXPECT_TRUE(report.degenerate);
   // `degenerate` alone may also mean "J̃ singular along the whole rod" (no conjugate point).
@@ -331,7 +331,7 @@ TEST(Stability, BuckledModesOfAKirchhoffRod) {
   ASSERT_EQ(first.solution.summary.status, SolveStatus::Converged)
       << first.solution.summary.brief();
   expect_mirror_symmetry(first, +1.0, L);
-  const StabilityReport first_report = assess_stability(rod, first.solution.configuration);
+  const StabilityResult first_report = assess_stability(rod, first.solution.configuration);
   EXPECT_TRUE(first_report.stable);
   EXPECT_FALSE(first_report.degenerate);
   EXPECT_FALSE(first_report.conjugate_point_s.has_value())
@@ -342,7 +342,7 @@ TEST(Stability, BuckledModesOfAKirchhoffRod) {
   ASSERT_EQ(second.solution.summary.status, SolveStatus::Converged)
       << second.solution.summary.brief();
   expect_mirror_symmetry(second, -1.0, L);
-  const StabilityReport second_report = assess_stability(rod, second.solution.configuration);
+  const StabilityResult second_report = assess_stability(rod, second.solution.configuration);
   EXPECT_FALSE(second_report.stable);
   ASSERT_TRUE(second_report.conjugate_point_s.has_value());
   EXPECT_GT(*second_report.conjugate_point_s, 2.0 * rod.step())

@@ -81,7 +81,7 @@ TEST(EndEffectorPath, BadLimitsNameTheField) {
     time_parameterize({Pose{}}, limits);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("trajectory.max_linear_speed"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("EndEffectorLimits.max_linear_speed"), std::string::npos);
   }
 }
 

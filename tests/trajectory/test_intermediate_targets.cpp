@@ -32,7 +32,7 @@ TEST(IntermediateTargets, FewerThanOneStepNamesTheField) {
     intermediate_targets({}, {}, 0);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("trajectory.steps"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("n_inter"), std::string::npos);
   }
 }
 

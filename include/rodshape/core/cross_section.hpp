@@ -28,7 +28,7 @@ struct CrossSection {
   double torsion_constant() const;
 
   /// Throws InputError naming `field` (e.g. "rod.section") when a dimension is not finite and > 0.
-  void validate(const std::string& field = "section") const;
+  void validate(const std::string& field = "CrossSection") const;
 };
 
 }  // namespace rodshape

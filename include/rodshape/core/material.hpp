@@ -14,7 +14,7 @@ struct Material {
   double shear_modulus() const { return young_modulus / (2.0 * (1.0 + poisson_ratio)); }
 
   /// Throws InputError naming `field` (e.g. "rod.material.young_modulus").
-  void validate(const std::string& field = "material") const;
+  void validate(const std::string& field = "Material") const;
 };
 
 }  // namespace rodshape

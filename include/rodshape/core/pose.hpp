@@ -30,4 +30,10 @@ inline Pose inverse(const Pose& a_T_b) {
   return {-(R * a_T_b.position), R};
 }
 
+/// The pose between a (σ = 0) and b (σ = 1): p = (1 - σ) p_a + σ p_b, R = slerp(R_a, R_b, σ).
+inline Pose interpolate(const Pose& a, const Pose& b, double sigma) {
+  const Eigen::Quaterniond qa(a.rotation), qb(b.rotation);
+  return {(1.0 - sigma) * a.position + sigma * b.position, qa.slerp(sigma, qb).toRotationMatrix()};
+}
+
 }  // namespace rodshape

@@ -18,7 +18,7 @@ enum class ConstitutiveModel { Cosserat, Kirchhoff };
 std::string to_string(ConstitutiveModel model);
 /// Throws InputError naming `field` for anything but "cosserat" or "kirchhoff".
 ConstitutiveModel constitutive_model_from_string(const std::string& name,
-                                                 const std::string& field = "rod.model");
+                                                 const std::string& field = "RodDescription.model");
 
 /// The constants the integrator uses. Build it with make_rod_properties() from a RodDescription,
 /// or fill it directly and call validate().

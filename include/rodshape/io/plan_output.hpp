@@ -9,10 +9,9 @@
 #include <vector>
 
 #include "rodshape/io/plan_task.hpp"
-#include "rodshape/robot/arm_plan.hpp"
-#include "rodshape/robot/joint_trajectory.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
-#include "rodshape/trajectory/shape_plan.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
+#include "rodshape/trajectory/plan_result.hpp"
 
 namespace rodshape {
 
@@ -20,16 +19,14 @@ namespace rodshape {
 /// configuration and points, one entry per step that succeeded (objective points, configuration as
 /// `equilibrium` writes it, end-effector pose, energy, distances, stability, the optimiser's
 /// account), the end-effector path's summary and the tracking report. Ends with a newline.
-/// With an arm (`arm` not null; `plan` is then arm->plan): `robot` is {status, message, reach
+/// With an arm (plan.arm): `robot` is {status, message, reach
 /// (the shell the plan was made with: center, inner_radius, outer_radius, tip_point, wrist_range,
 /// margin, and wrist_distances |w - c| where the rod starts and at each step; null when not used),
 /// replans (reason, wrist_distance and the shell that followed), waypoint_joint_positions} and
 /// `joint_trajectory` the summary {status, message, file, samples, duration, path_duration, slowed,
-/// slowdown, failed_sample, ik_restarts, max_position_error, max_rotation_error} of arm->joints;
+/// slowdown, failed_sample, ik_restarts, max_position_error, max_rotation_error} of arm.joints;
 /// both are null without an arm (a task without a robot).
-std::string plan_result_json(const ShapePlan& plan,
-                             const PlanTask& task,
-                             const ArmPlan* arm = nullptr);
+std::string plan_result_json(const PlanResult& plan, const PlanTask& task);
 
 /// "t,x,y,z,qw,qx,qy,qz" and one line per sample of `path` (s, m, unit quaternion). Consecutive
 /// quaternions lie in the same hemisphere (q and -q are one rotation; the first has qw ≥ 0), so
@@ -37,17 +34,31 @@ std::string plan_result_json(const ShapePlan& plan,
 std::string trajectory_csv(const std::vector<TimedPose>& path);
 
 /// "t,<joint names...>" and one line per sample: time (s) and joint positions (rad or m).
-std::string joint_trajectory_csv(const JointTrajectory& trajectory);
+std::string joint_trajectory_csv(const JointTrajectoryResult& trajectory);
 
 /// The joint trajectory shaped like ROS trajectory_msgs/JointTrajectory:
 /// {"joint_names": [...], "points": [{"positions": [...], "velocities": [...],
 ///  "time_from_start": {"sec": int, "nanosec": int}}, ...]}. Ends with a newline.
-std::string joint_trajectory_json(const JointTrajectory& trajectory);
+std::string joint_trajectory_json(const JointTrajectoryResult& trajectory);
 
 /// A self-contained SVG picture of the plan: three projections (x–z, y–z, x–y) at one common
 /// scale, with grids labelled in metres; the initial rod (grey), each step's rod (a colour ramp
 /// from the first step to the last, the last drawn thick), each step's objective points (small dots
 /// of the step's colour), the target points (red ×) and a legend.
-std::string plan_svg(const ShapePlan& plan, const PlanTask& task);
+std::string plan_svg(const PlanResult& plan, const PlanTask& task);
+
+/// InputError when `directory` exists but is not a directory (to check before planning, which may
+/// take a while).
+void check_output_directory(const std::string& directory);
+
+/// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
+/// plan is infeasible, trajectory.csv and plan.svg; with a complete joint trajectory,
+/// joint_trajectory.csv and joint_trajectory.json. Each file is written whole or not at all, and
+/// the files of an earlier run that this plan does not write are removed (they would not match
+/// plan.json). Returns the names written, in order. Throws InputError when the directory cannot be
+/// made or a file cannot be written.
+std::vector<std::string> write_plan(const std::string& directory,
+                                    const PlanResult& plan,
+                                    const PlanTask& task);
 
 }  // namespace rodshape

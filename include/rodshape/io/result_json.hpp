@@ -13,8 +13,8 @@ namespace rodshape {
 
 /// The whole result document, ending with a newline. `stability` is absent when it was not assessed
 /// (a free tip, or a solve that did not converge): "stable" and "stability" are then null.
-std::string equilibrium_result_json(const ShootingSolution& solution,
-                                    const std::optional<StabilityReport>& stability,
+std::string equilibrium_result_json(const ShootingResult& solution,
+                                    const std::optional<StabilityResult>& stability,
                                     const ClampedRod& rod);
 
 }  // namespace rodshape

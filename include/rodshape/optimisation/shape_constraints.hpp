@@ -17,7 +17,7 @@ namespace rodshape {
 /// How the robot holds the tip. Components of the tip wrench n(L), m(L), in the grasp frame (the
 /// tip's frame R(L)), that the grasp cannot transmit are zero: order force x, y, z, moment x, y, z.
 struct Grasp {
-  std::array<bool, 6> zero_wrench{};
+  std::array<bool, 6> released{};
   Pose tip_to_end_effector;  // tip_T_ee: the end-effector pose is world_T_tip · tip_T_ee
 };
 

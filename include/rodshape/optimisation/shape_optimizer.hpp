@@ -48,24 +48,26 @@ struct IpoptDetails {
   Vector6d upper_bound_multipliers = Vector6d::Zero();  // z_U for w
 };
 
-struct ShapeSolution {
+struct ShapeResult {
   SolveStatus status = SolveStatus::NotRun;
   std::string message = "optimise_shape() was not called";
   BaseWrench base_wrench;
   RodConfiguration configuration;  // at base_wrench, with all-node derivatives
   ShapeCostBreakdown cost;
   double max_constraint_violation = 0.0;
-  std::optional<StabilityReport> stability;
+  std::optional<StabilityResult> stability;
   IpoptDetails ipopt;
   int starts_tried = 1;
   bool converged() const { return status == SolveStatus::Converged; }
+  /// "converged: max distance 0.37 mm, energy 0.0025 J; <message>".
+  std::string brief() const;
 };
 
 /// Optimises from `guess` (and the extra starts of the options). Throws InputError for bad options;
 /// a solve that fails is reported in the status, never thrown.
-ShapeSolution optimise_shape(ShapeProblem& problem,
-                             const BaseWrench& guess,
-                             const ShapeOptimizerOptions& options = {});
+ShapeResult optimise_shape(ShapeProblem& problem,
+                           const BaseWrench& guess,
+                           const ShapeOptimizerOptions& options = {});
 
 /// Whether this build has IPOPT (always true today; kept for a build without it).
 bool ipopt_available();

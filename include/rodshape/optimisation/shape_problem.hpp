@@ -38,7 +38,7 @@ class ShapeProblem {
                WrenchBounds wrench_bounds = {});
 
   /// How many rows of g each block has; the blocks follow each other in this order (see
-  /// shape_problem.cpp): workspace (on the tip pose), grasp (one per zero_wrench entry), curvature
+  /// shape_problem.cpp): workspace (on the tip pose), grasp (one per released entry), curvature
   /// (one per node), axial strain (one per node, Cosserat only).
   struct RowBlocks {
     int workspace = 0, grasp = 0, curvature = 0, axial = 0;

@@ -28,12 +28,14 @@ struct ShapeTarget {
 
 /// Whether a rod clamped at `rod.clamp` can pass through the target's points, judged on the
 /// chord-length cubic B-spline (Eigen's Splines module) from p(0) through the points.
-struct TargetFeasibility {
+struct FeasibilityResult {
   bool feasible = true;
   std::string reason;         // empty when feasible
   int offending_point = -1;   // index into ShapeTarget::points, or -1
   double curve_length = 0.0;  // length of the fitted spline from the clamp to the last point
   double reach = 0.0;         // L times the largest stretch the model allows (Kirchhoff: L)
+  /// "feasible (spline 0.27 m of a reach of 0.29 m)" or "infeasible: <reason>".
+  std::string brief() const;
 };
 
 /// The spline is one plausible curve through the points, not the rod: its length differs from that
@@ -47,7 +49,7 @@ inline constexpr double kSplineLengthSlack = 0.01;
 /// The length is computed by Gauss–Legendre quadrature of |C'| (see shape_target.cpp for its
 /// error). `max_axial_strain` bounds the stretch of the Cosserat model (reach = L (1 +
 /// max_axial_strain)); the Kirchhoff model cannot stretch.
-TargetFeasibility check_feasibility(const ShapeTarget& target,
+FeasibilityResult check_feasibility(const ShapeTarget& target,
                                     const ClampedRod& rod,
                                     double max_axial_strain = 0.0);
 

@@ -23,7 +23,7 @@
 #include "rodshape/core/pose.hpp"
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/robot/arm_model.hpp"
-#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/robot/arm_placement.hpp"
 
 namespace rodshape {
 

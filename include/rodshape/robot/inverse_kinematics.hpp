@@ -35,7 +35,7 @@ struct IkOptions {
 };
 
 struct IkResult {
-  SolveStatus status = SolveStatus::NotRun;  // Converged, or Singular ("out of reach: ..."), or
+  SolveStatus status = SolveStatus::NotRun;  // Converged, or OutOfReach ("out of reach: ..."), or
                                              // IterationLimit
   std::string message;                       // empty when converged
   Eigen::VectorXd q;                         // best joint positions found (within limits)
@@ -44,15 +44,22 @@ struct IkResult {
   double position_error = 0.0;               // |p* - p(q)|, m
   double rotation_error = 0.0;               // angle of R* R(q)ᵀ, rad
   bool converged() const { return status == SolveStatus::Converged; }
+  /// "converged in 5 iterations (0 restarts), |Δp| = 1.8e-15 m, angle 6.2e-16 rad" or
+  /// "<status>: <message>".
+  std::string brief() const;
 };
 
 /// Joint positions with forward_kinematics(q) = `target` (to the tolerances), starting from `seed`.
 /// Throws InputError when `seed` has the wrong size, is not finite or lies outside the limits, when
 /// `target` is not finite or its rotation is not a rotation, or when `options` are invalid. A
-/// target the arm cannot reach is a status: Singular with a message "out of reach: ...".
+/// target the arm cannot reach is a status: OutOfReach with a message "out of reach: ...".
 IkResult solve_ik(const ArmModel& arm,
                   const Pose& target,
                   const Eigen::VectorXd& seed,
                   const IkOptions& options = {});
+
+/// The default seed: the Panda "ready" pose (0, -π/4, 0, -3π/4, 0, π/2, π/4) for a 7-joint arm,
+/// else zeros; clamped into the joint limits.
+Eigen::VectorXd default_seed(const ArmModel& arm);
 
 }  // namespace rodshape

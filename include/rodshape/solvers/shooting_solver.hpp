@@ -49,18 +49,19 @@ struct ShootingSummary {
   std::string brief() const;
 };
 
-struct ShootingSolution {
+struct ShootingResult {
   ShootingSummary summary;
   BaseWrench base_wrench;          // the last iterate (the solution when converged)
   RodConfiguration configuration;  // integrated at base_wrench, with options.output_derivatives
+  std::string brief() const { return summary.brief(); }
 };
 
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
 /// Throws InputError for bad input (rod, tip condition, options); a solve that does not converge is
 /// reported in the summary's status, never thrown.
-ShootingSolution solve_equilibrium(const ClampedRod& rod,
-                                   const TipCondition& tip,
-                                   const BaseWrench& guess = {},
-                                   const ShootingOptions& options = {});
+ShootingResult solve_equilibrium(const ClampedRod& rod,
+                                 const TipCondition& tip,
+                                 const BaseWrench& guess = {},
+                                 const ShootingOptions& options = {});
 
 }  // namespace rodshape

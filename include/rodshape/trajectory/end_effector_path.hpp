@@ -33,7 +33,4 @@ struct TimedPose {
 std::vector<TimedPose> time_parameterize(const std::vector<Pose>& waypoints,
                                          const EndEffectorLimits& limits);
 
-/// Pose between two waypoints at σ ∈ [0, 1]: p = (1 - σ) p_a + σ p_b, R = slerp(R_a, R_b, σ).
-Pose interpolate(const Pose& a, const Pose& b, double sigma);
-
 }  // namespace rodshape

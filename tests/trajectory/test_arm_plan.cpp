@@ -10,16 +10,18 @@
 #include <string>
 
 #include "rodshape/io/task_reader.hpp"
-#include "rodshape/robot/arm_plan.hpp"
+#include "rodshape/robot/arm_placement.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/trajectory/plan.hpp"
 #include "support/eigen_compare.hpp"
 #include "support/input_error.hpp"
 
 namespace {
 
-using rodshape::ArmPlan;
 using rodshape::ArmPlanOptions;
+using rodshape::ArmPlanResult;
 using rodshape::ArmPlanStatus;
+using rodshape::PlanResult;
 using rodshape::PlanTask;
 using rodshape::Pose;
 using rodshape::testing::input_error_message;
@@ -30,41 +32,44 @@ const std::string kExample = std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_
 /// The example's task with the arm's base moved to x = `base_x` (the example has -0.45).
 PlanTask panda_task(double base_x = -0.45) {
   PlanTask task = rodshape::read_plan_task(kExample);
-  task.robot->placement.world_T_base.position.x() = base_x;
+  task.problem.arm->placement.world_T_base.position.x() = base_x;
   return task;
 }
 
-ArmPlan plan(const PlanTask& task, const ArmPlanOptions& options) {
-  return rodshape::plan_with_arm(task.request, task.options, task.robot->arm, task.robot->placement,
-                                 options);
+/// Plans `task` with the arm options `options`.
+PlanResult plan(PlanTask task, const ArmPlanOptions& options) {
+  task.options.arm = options;
+  return rodshape::plan(task.problem, task.options);
 }
 
-double wrist_distance(const ArmPlan& arm, const Pose& tip) {
+double wrist_distance(const ArmPlanResult& arm, const Pose& tip) {
   return (arm.shell->point(tip) - arm.shell->center).norm();
 }
 
 TEST(ArmPlan, EveryPlannedPoseHasJointsThatPutTheHandThere) {
   const PlanTask task = panda_task();
-  const ArmPlan arm = plan(task, task.robot->options);
+  const PlanResult arm_plan = plan(task, task.options.arm);
+  ASSERT_TRUE(arm_plan.arm.has_value());
+  const ArmPlanResult& arm = *arm_plan.arm;
   ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
-  ASSERT_EQ(arm.plan.status, rodshape::PlanStatus::Complete) << arm.plan.message;
+  ASSERT_EQ(arm_plan.status, rodshape::PlanStatus::Complete) << arm_plan.message;
   EXPECT_TRUE(arm.replans.empty());
   ASSERT_TRUE(arm.shell.has_value());
   EXPECT_DOUBLE_EQ(arm.shell->outer_radius, arm.reach->max_distance - 0.02);  // default margin
-  ASSERT_EQ(arm.waypoint_q.size(), arm.plan.steps.size() + 1);
+  ASSERT_EQ(arm.waypoint_q.size(), arm_plan.steps.size() + 1);
   // IK converges to 1e-10 m and rad (IkOptions); the pose chain adds round-off only.
   for (std::size_t k = 1; k < arm.waypoint_q.size(); ++k) {
-    const Pose reached =
-        rodshape::end_effector_pose(task.robot->arm, task.robot->placement, arm.waypoint_q[k]);
-    const Pose& planned = arm.plan.steps[k - 1].end_effector;
+    const Pose reached = rodshape::end_effector_pose(
+        task.problem.arm->model, task.problem.arm->placement, arm.waypoint_q[k]);
+    const Pose& planned = arm_plan.steps[k - 1].end_effector;
     EXPECT_LE((reached.position - planned.position).norm(), 1e-9) << "step " << k;
     EXPECT_LE(rotation_angle(reached.rotation, planned.rotation), 1e-9) << "step " << k;
-    const Pose tip = arm.plan.steps[k - 1].solution.configuration.tip();
+    const Pose tip = arm_plan.steps[k - 1].solution.configuration.tip();
     EXPECT_LE(wrist_distance(arm, tip), arm.shell->outer_radius) << "step " << k;
     EXPECT_GE(wrist_distance(arm, tip), arm.shell->inner_radius) << "step " << k;
   }
   EXPECT_TRUE(arm.joints.complete()) << arm.joints.message;
-  EXPECT_EQ(arm.joints.t.size(), arm.plan.end_effector_path.size());
+  EXPECT_EQ(arm.joints.t.size(), arm_plan.end_effector_path.size());
 }
 
 TEST(ArmPlan, ATargetBeyondTheArmsReachStopsOnTheShell) {
@@ -72,10 +77,12 @@ TEST(ArmPlan, ATargetBeyondTheArmsReachStopsOnTheShell) {
   // beyond the shell's 0.787 m: the last step's constraint is active and the points are missed by
   // more than the unconstrained plan's sub-millimetre distances.
   const PlanTask task = panda_task(-0.58);
-  const ArmPlan arm = plan(task, task.robot->options);
+  const PlanResult arm_plan = plan(task, task.options.arm);
+  ASSERT_TRUE(arm_plan.arm.has_value());
+  const ArmPlanResult& arm = *arm_plan.arm;
   ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
-  ASSERT_EQ(arm.plan.status, rodshape::PlanStatus::Complete) << arm.plan.message;
-  const rodshape::ShapeSolution& last = arm.plan.steps.back().solution;
+  ASSERT_EQ(arm_plan.status, rodshape::PlanStatus::Complete) << arm_plan.message;
+  const rodshape::ShapeResult& last = arm_plan.steps.back().solution;
   const double tolerance = task.options.optimizer.constraint_tolerance;
   const double r = wrist_distance(arm, last.configuration.tip());
   // g = r² ≤ r_out² holds to the constraint tolerance and is active (to IPOPT's tolerance).
@@ -91,9 +98,11 @@ TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
   // shell, as above) has no IK solution; one re-plan with the shell pulled in by the tightening
   // below that pose's wrist distance succeeds.
   const PlanTask task = panda_task(-0.58);
-  ArmPlanOptions options = task.robot->options;
+  ArmPlanOptions options = task.options.arm;
   options.reach_margin = 0.0;
-  const ArmPlan arm = plan(task, options);
+  const PlanResult arm_plan = plan(task, options);
+  ASSERT_TRUE(arm_plan.arm.has_value());
+  const ArmPlanResult& arm = *arm_plan.arm;
   ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
   ASSERT_EQ(arm.replans.size(), 1u);
   const rodshape::Replan& replan = arm.replans.front();
@@ -107,7 +116,9 @@ TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
   EXPECT_NE(arm.message.find("after 1 re-plan"), std::string::npos) << arm.message;
 
   options.max_replans = 0;
-  const ArmPlan reported = plan(task, options);
+  const PlanResult reported_plan = plan(task, options);
+  ASSERT_TRUE(reported_plan.arm.has_value());
+  const ArmPlanResult& reported = *reported_plan.arm;
   EXPECT_EQ(reported.status, ArmPlanStatus::Unreachable);
   EXPECT_TRUE(reported.replans.empty());
   EXPECT_NE(reported.message.find("after 0 re-plans"), std::string::npos) << reported.message;
@@ -117,33 +128,35 @@ TEST(ArmPlan, APoseOnTheShellThatIkCannotReachIsReplannedWithATighterShell) {
 
 TEST(ArmPlan, AStartOutsideTheShellAndTwoReachShellsAreBadInput) {
   const PlanTask far = panda_task(-3.0);
-  const std::string start = input_error_message([&] { plan(far, far.robot->options); });
+  const std::string start = input_error_message([&] { plan(far, far.options.arm); });
   EXPECT_NE(start.find("the arm's wrist would be"), std::string::npos) << start;
   EXPECT_NE(start.find("outside its reach shell"), std::string::npos) << start;
 
   PlanTask twice = panda_task();
-  twice.request.workspace.reach =
+  twice.problem.workspace.reach =
       rodshape::Workspace::ReachShell{Eigen::Vector3d::Zero(), 0.0, 1.0, Eigen::Vector3d::Zero()};
-  const std::string doubled = input_error_message([&] { plan(twice, twice.robot->options); });
+  const std::string doubled = input_error_message([&] { plan(twice, twice.options.arm); });
   EXPECT_NE(doubled.find("workspace.reach"), std::string::npos) << doubled;
 
-  ArmPlanOptions options = far.robot->options;
+  ArmPlanOptions options = far.options.arm;
   options.replan_tightening = 0.0;
   const std::string tightening = input_error_message([&] { plan(far, options); });
-  EXPECT_NE(tightening.find("robot.reach.tightening"), std::string::npos) << tightening;
+  EXPECT_NE(tightening.find("ArmPlanOptions.replan_tightening"), std::string::npos) << tightening;
 }
 
 TEST(ArmPlan, WithoutTheReachAnUnreachableStartIsReportedNotThrown) {
   PlanTask far = panda_task(-3.0);
-  ArmPlanOptions options = far.robot->options;
+  ArmPlanOptions options = far.options.arm;
   options.use_reach = false;
-  const ArmPlan arm = plan(far, options);
+  const PlanResult arm_plan = plan(far, options);
+  ASSERT_TRUE(arm_plan.arm.has_value());
+  const ArmPlanResult& arm = *arm_plan.arm;
   EXPECT_EQ(arm.status, ArmPlanStatus::Unreachable);
   EXPECT_FALSE(arm.shell.has_value());
   EXPECT_NE(arm.message.find("the initial end-effector pose has no inverse kinematics solution"),
             std::string::npos)
       << arm.message;
-  EXPECT_EQ(arm.plan.status, rodshape::PlanStatus::Complete);
+  EXPECT_EQ(arm_plan.status, rodshape::PlanStatus::Complete);
 }
 
 }  // namespace

@@ -20,16 +20,11 @@
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/robot/arm_model.hpp"
+#include "rodshape/robot/arm_placement.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 
 namespace rodshape {
-
-/// Where the arm is: its base link in the world and the end effector on its tip link (flange).
-struct ArmPlacement {
-  Pose world_T_base;  // identity: the arm's base frame is the world frame
-  Pose flange_T_ee;   // identity: the end effector is the tip link's frame
-};
 
 struct JointTrajectoryOptions {
   /// The joint positions the first sample's IK starts from; empty: default_seed(arm).
@@ -46,7 +41,7 @@ enum class JointTrajectoryStatus {
 };
 std::string to_string(JointTrajectoryStatus status);  // "complete", "unreachable", "not_run"
 
-struct JointTrajectory {
+struct JointTrajectoryResult {
   JointTrajectoryStatus status = JointTrajectoryStatus::NotRun;
   std::string message;  // empty when complete
   std::vector<std::string> joint_names;
@@ -64,26 +59,16 @@ struct JointTrajectory {
   double max_rotation_error = 0.0;    // over the samples, rad
   bool complete() const { return status == JointTrajectoryStatus::Complete; }
   double duration() const { return t.empty() ? 0.0 : t.back() - t.front(); }
+  /// "complete: 812 samples over 8.1 s (slowed ×1.3)" or "<status>: <message>".
+  std::string brief() const;
 };
 
-/// The default first seed: the Panda "ready" pose (0, -π/4, 0, -3π/4, 0, π/2, π/4) for a 7-joint
-/// arm, else zeros clamped into the limits.
-Eigen::VectorXd default_seed(const ArmModel& arm);
-
-/// The joint trajectory that follows `path` (world_T_ee over time, e.g. ShapePlan's
+/// The joint trajectory that follows `path` (world_T_ee over time, e.g. PlanResult's
 /// end_effector_path). Throws InputError for a seed of the wrong size or outside the limits,
 /// invalid IK options or a non-finite pose; an unreachable pose is a status.
-JointTrajectory joint_trajectory(const ArmModel& arm,
-                                 const std::vector<TimedPose>& path,
-                                 const ArmPlacement& placement = {},
-                                 const JointTrajectoryOptions& options = {});
-
-/// base_T_flange for the end-effector pose world_T_ee (the IK target of a sample).
-Pose flange_target(const ArmPlacement& placement, const Pose& world_T_ee);
-
-/// world_T_ee of the arm at `q`: world_T_base · FK(q) · flange_T_ee.
-Pose end_effector_pose(const ArmModel& arm,
-                       const ArmPlacement& placement,
-                       const Eigen::VectorXd& q);
+JointTrajectoryResult joint_trajectory(const ArmModel& arm,
+                                       const std::vector<TimedPose>& path,
+                                       const ArmPlacement& placement = {},
+                                       const JointTrajectoryOptions& options = {});
 
 }  // namespace rodshape

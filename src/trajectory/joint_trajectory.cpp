@@ -1,10 +1,9 @@
 // joint_trajectory.cpp: IK along a timed end-effector path, finite-difference velocities and the
 // re-timing that keeps them within the joint velocity limits (see joint_trajectory.hpp).
-#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 
 #include "rodshape/error.hpp"
@@ -50,40 +49,19 @@ std::string to_string(JointTrajectoryStatus status) {
   return "unknown";
 }
 
-Eigen::VectorXd default_seed(const ArmModel& arm) {
-  if (arm.joints() == 7) {
-    constexpr double pi = std::numbers::pi;
-    Eigen::VectorXd q(7);
-    q << 0.0, -pi / 4.0, 0.0, -3.0 * pi / 4.0, 0.0, pi / 2.0, pi / 4.0;
-    return arm.clamp_to_limits(q);
-  }
-  return arm.clamp_to_limits(Eigen::VectorXd::Zero(arm.joints()));
-}
-
-Pose flange_target(const ArmPlacement& placement, const Pose& world_T_ee) {
-  return compose(compose(inverse(placement.world_T_base), world_T_ee),
-                 inverse(placement.flange_T_ee));
-}
-
-Pose end_effector_pose(const ArmModel& arm,
-                       const ArmPlacement& placement,
-                       const Eigen::VectorXd& q) {
-  return compose(compose(placement.world_T_base, arm.forward_kinematics(q)), placement.flange_T_ee);
-}
-
 Eigen::VectorXd JointTrajectoryOptions::first_seed(const ArmModel& arm) const {
   return seed.size() > 0 ? seed : default_seed(arm);
 }
 
-JointTrajectory joint_trajectory(const ArmModel& arm,
-                                 const std::vector<TimedPose>& path,
-                                 const ArmPlacement& placement,
-                                 const JointTrajectoryOptions& options) {
+JointTrajectoryResult joint_trajectory(const ArmModel& arm,
+                                       const std::vector<TimedPose>& path,
+                                       const ArmPlacement& placement,
+                                       const JointTrajectoryOptions& options) {
   options.ik.validate();
   Eigen::VectorXd seed = options.first_seed(arm);
   arm.check_joint_positions(seed, "seed");
 
-  JointTrajectory result;
+  JointTrajectoryResult result;
   result.joint_names = arm.joint_names();
   if (path.empty()) {
     result.message = "the end-effector path is empty";
@@ -137,6 +115,15 @@ JointTrajectory joint_trajectory(const ArmModel& arm,
   result.qdot = differentiate(result.t, result.q);
   result.status = JointTrajectoryStatus::Complete;
   return result;
+}
+
+std::string JointTrajectoryResult::brief() const {
+  if (!complete()) return to_string(status) + ": " + message;
+  std::ostringstream out;
+  out.precision(3);
+  out << "complete: " << t.size() << " samples over " << duration() << " s";
+  if (slowed) out << " (slowed ×" << slowdown << ")";
+  return out.str();
 }
 
 }  // namespace rodshape

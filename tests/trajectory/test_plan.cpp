@@ -10,7 +10,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
-#include "rodshape/trajectory/shape_plan.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
 namespace {
@@ -34,8 +34,8 @@ PointSet points_on_curve(const BaseWrench& w) {
   return points;
 }
 
-PlanRequest bend_request() {
-  PlanRequest request;
+PlanProblem bend_request() {
+  PlanProblem request;
   request.rod = rubber_band(50);
   request.target.points = points_on_curve({{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}});
   request.target.energy_weight = 1e-3;
@@ -43,11 +43,11 @@ PlanRequest bend_request() {
   return request;
 }
 
-TEST(ShapePlan, ReachesPointsSampledFromAnEquilibriumAndTheRodFollows) {
-  const PlanRequest request = bend_request();
+TEST(PlanResult, ReachesPointsSampledFromAnEquilibriumAndTheRodFollows) {
+  const PlanProblem request = bend_request();
   PlanOptions options;
   options.steps = 3;
-  const ShapePlan plan = plan_shape(request, options);
+  const PlanResult plan = rodshape::plan(request, options);
   ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
   ASSERT_EQ(plan.steps.size(), 3u);
   // The last step is p_obj itself, not one step short (the paper's (i - 1)).
@@ -72,42 +72,42 @@ TEST(ShapePlan, ReachesPointsSampledFromAnEquilibriumAndTheRodFollows) {
   EXPECT_LE(plan.tracking.max_deviation, 1e-6);
 }
 
-TEST(ShapePlan, PointOutOfReachIsInfeasibleNamingIt) {
-  PlanRequest request = bend_request();
+TEST(PlanResult, PointOutOfReachIsInfeasibleNamingIt) {
+  PlanProblem request = bend_request();
   request.target.points[7] = {0.0, 0.0, 2.0 * request.rod.properties.length};
-  const ShapePlan plan = plan_shape(request);
+  const PlanResult plan = rodshape::plan(request);
   EXPECT_EQ(plan.status, PlanStatus::Infeasible);
   EXPECT_TRUE(plan.steps.empty());
-  EXPECT_NE(plan.message.find("target.points[7]"), std::string::npos) << plan.message;
+  EXPECT_NE(plan.message.find("ShapeTarget.points[7]"), std::string::npos) << plan.message;
 }
 
-TEST(ShapePlan, WorkspaceThatExcludesTheInitialTipIsBadInput) {
-  PlanRequest request = bend_request();
+TEST(PlanResult, WorkspaceThatExcludesTheInitialTipIsBadInput) {
+  PlanProblem request = bend_request();
   request.workspace.box = Workspace::Box{{-1, -1, -1}, {1, 1, 0.2}};  // the rest tip is at z = 0.29
   try {
-    plan_shape(request);
+    rodshape::plan(request);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("workspace"), std::string::npos) << e.what();
   }
 }
 
-TEST(ShapePlan, BadStepCountNamesTheField) {
+TEST(PlanResult, BadStepCountNamesTheField) {
   PlanOptions options;
   options.steps = 0;
   try {
-    plan_shape(bend_request(), options);
+    rodshape::plan(bend_request(), options);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("trajectory.steps"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("PlanOptions.steps"), std::string::npos) << e.what();
   }
 }
 
 /// A rod buckled between its clamps (tip at 0.8 L): the first mode bulging towards +y or -y; the
 /// two are distinct stable equilibria for the same tip pose (EIy > EIx: no neutral turning).
 struct BuckledBranches {
-  PlanRequest request;
-  ShootingSolution up, down;
+  PlanProblem request;
+  ShootingResult up, down;
 };
 
 BuckledBranches buckled_branches() {
@@ -122,8 +122,8 @@ BuckledBranches buckled_branches() {
   return b;
 }
 
-ShapePlan one_step_plan(const ShootingSolution& from, const ShootingSolution& to) {
-  ShapePlan plan;
+PlanResult one_step_plan(const ShootingResult& from, const ShootingResult& to) {
+  PlanResult plan;
   plan.status = PlanStatus::Complete;
   plan.initial_wrench = from.base_wrench;
   plan.initial_configuration = from.configuration;
@@ -135,7 +135,7 @@ ShapePlan one_step_plan(const ShootingSolution& from, const ShootingSolution& to
   return plan;
 }
 
-TEST(ShapePlan, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
+TEST(PlanResult, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
   const BuckledBranches b = buckled_branches();
   ASSERT_TRUE(b.up.summary.converged() && b.down.summary.converged());
   // Sanity: two different shapes, bulging by several centimetres to opposite sides (a positive
@@ -149,14 +149,14 @@ TEST(ShapePlan, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
   PlanOptions options;
   // Planned: from the upward shape to the downward one with the tip not moving. The arm cannot do
   // that: the tracked rod stays up, a jump between branches the plan would hide.
-  const TrackingReport jump = track_plan(b.request, options, one_step_plan(b.up, b.down));
+  const TrackingResult jump = track_plan(b.request, options, one_step_plan(b.up, b.down));
   EXPECT_TRUE(jump.jump);
   EXPECT_EQ(jump.jump_step, 0);
   EXPECT_GT(jump.max_deviation, 0.06);  // about twice the bulge
   EXPECT_NE(jump.note.find("another equilibrium"), std::string::npos) << jump.note;
 
   // Planned: stay up. The tracked rod is the planned one.
-  const TrackingReport stay = track_plan(b.request, options, one_step_plan(b.up, b.up));
+  const TrackingResult stay = track_plan(b.request, options, one_step_plan(b.up, b.up));
   EXPECT_FALSE(stay.jump) << stay.note;
   EXPECT_LE(stay.max_deviation, 1e-6);
 }
@@ -172,12 +172,12 @@ namespace {
 // inserts steps halfway where the tracked rod would jump: every inserted step lies strictly
 // between its neighbours, and the count respects max_refinements. (Here the jump persists: the
 // optima themselves change branch, which halving the step cannot cure; the plan says so.)
-TEST(ShapePlan, RefinementInsertsHalfwayStepsUpToTheLimit) {
+TEST(PlanResult, RefinementInsertsHalfwayStepsUpToTheLimit) {
   PlanTask task =
       read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_lifted_bend.yaml");
   for (int limit : {0, 2}) {
     task.options.max_refinements = limit;
-    const ShapePlan plan = plan_shape(task.request, task.options);
+    const PlanResult plan = rodshape::plan(task.problem, task.options);
     ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
     EXPECT_LE(plan.tracking.refinements, limit);
     EXPECT_EQ(static_cast<int>(plan.steps.size()), task.options.steps + plan.tracking.refinements);
@@ -190,7 +190,7 @@ TEST(ShapePlan, RefinementInsertsHalfwayStepsUpToTheLimit) {
     }
     EXPECT_EQ(inserted, plan.tracking.refinements);
     EXPECT_EQ(plan.steps.back().fraction, 1.0);
-    EXPECT_EQ(plan.steps.back().objective_points, task.request.target.points);
+    EXPECT_EQ(plan.steps.back().objective_points, task.problem.target.points);
     if (limit == 0) {
       EXPECT_TRUE(plan.tracking.jump) << "the example was chosen because its rod jumps";
     } else {

@@ -1,7 +1,7 @@
 // Tests of joint_trajectory(): the joint path replays the end-effector path through forward
 // kinematics, respects the joint velocity limits (slowing the path down where needed) and reports
 // an unreachable pose with its time.
-#include "rodshape/robot/joint_trajectory.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ std::vector<Pose> band_waypoints() {
   return {pose({0.0, 0.0, 0.29}, 0.0), pose({0.06, 0.0, 0.27}, 0.3), pose({0.15, 0.0, 0.24}, 0.05)};
 }
 
-void expect_replays(const JointTrajectory& trajectory,
+void expect_replays(const JointTrajectoryResult& trajectory,
                     const std::vector<TimedPose>& path,
                     const ArmPlacement& placement) {
   ASSERT_EQ(trajectory.q.size(), path.size());
@@ -62,7 +62,7 @@ void expect_replays(const JointTrajectory& trajectory,
   }
 }
 
-void expect_within_velocity_limits(const JointTrajectory& trajectory) {
+void expect_within_velocity_limits(const JointTrajectoryResult& trajectory) {
   const Eigen::VectorXd limits = panda().velocity_limits();
   ASSERT_EQ(trajectory.qdot.size(), trajectory.q.size());
   for (std::size_t i = 0; i < trajectory.qdot.size(); ++i) {
@@ -74,9 +74,9 @@ void expect_within_velocity_limits(const JointTrajectory& trajectory) {
     EXPECT_GT(trajectory.t[i + 1], trajectory.t[i]);
 }
 
-TEST(JointTrajectory, ReplaysTheEndEffectorPathWithinTheVelocityLimits) {
+TEST(JointTrajectoryResult, ReplaysTheEndEffectorPathWithinTheVelocityLimits) {
   const std::vector<TimedPose> path = time_parameterize(band_waypoints(), EndEffectorLimits{});
-  const JointTrajectory trajectory = joint_trajectory(panda(), path, band_placement());
+  const JointTrajectoryResult trajectory = joint_trajectory(panda(), path, band_placement());
   ASSERT_TRUE(trajectory.complete()) << trajectory.message;
   EXPECT_EQ(trajectory.joint_names, panda().joint_names());
   EXPECT_EQ(trajectory.t.size(), path.size());
@@ -98,7 +98,7 @@ TEST(JointTrajectory, ReplaysTheEndEffectorPathWithinTheVelocityLimits) {
   EXPECT_LT((trajectory.qdot[n - 1] - last).norm(), 1e-12);
 }
 
-TEST(JointTrajectory, SlowsAPathThatIsTooFastForTheJoints) {
+TEST(JointTrajectoryResult, SlowsAPathThatIsTooFastForTheJoints) {
   EndEffectorLimits fast;  // 1000 times the quasi-static limits: a few ms for the whole path
   fast.max_linear_speed *= 1000.0;
   fast.max_angular_speed *= 1000.0;
@@ -107,7 +107,7 @@ TEST(JointTrajectory, SlowsAPathThatIsTooFastForTheJoints) {
   fast.sample_rate = 10000.0;
   const std::vector<TimedPose> path = time_parameterize(band_waypoints(), fast);
   ASSERT_GT(path.size(), 3u);
-  const JointTrajectory trajectory = joint_trajectory(panda(), path, band_placement());
+  const JointTrajectoryResult trajectory = joint_trajectory(panda(), path, band_placement());
   ASSERT_TRUE(trajectory.complete()) << trajectory.message;
   EXPECT_TRUE(trajectory.slowed);
   EXPECT_GT(trajectory.slowdown, 1.0);
@@ -125,11 +125,11 @@ TEST(JointTrajectory, SlowsAPathThatIsTooFastForTheJoints) {
   EXPECT_NEAR(highest, 1.0, 1e-9);
 }
 
-TEST(JointTrajectory, ReportsAnUnreachablePoseWithItsTime) {
+TEST(JointTrajectoryResult, ReportsAnUnreachablePoseWithItsTime) {
   std::vector<Pose> waypoints = band_waypoints();
   waypoints.push_back(pose({3.0, 0.0, 0.24}, 0.0));  // 3.5 m from the arm's base
   const std::vector<TimedPose> path = time_parameterize(waypoints, EndEffectorLimits{});
-  const JointTrajectory trajectory = joint_trajectory(panda(), path, band_placement());
+  const JointTrajectoryResult trajectory = joint_trajectory(panda(), path, band_placement());
   EXPECT_EQ(trajectory.status, JointTrajectoryStatus::Unreachable);
   EXPECT_FALSE(trajectory.complete());
   ASSERT_GT(trajectory.failed_sample, 0);
@@ -143,14 +143,14 @@ TEST(JointTrajectory, ReportsAnUnreachablePoseWithItsTime) {
   EXPECT_TRUE(trajectory.qdot.empty());
 }
 
-TEST(JointTrajectory, RejectsABadSeed) {
+TEST(JointTrajectoryResult, RejectsABadSeed) {
   const std::vector<TimedPose> path = time_parameterize(band_waypoints(), EndEffectorLimits{});
   JointTrajectoryOptions options;
   options.seed = Eigen::VectorXd::Zero(3);
   EXPECT_THROW(joint_trajectory(panda(), path, band_placement(), options), InputError);
 }
 
-TEST(JointTrajectory, DefaultSeedIsTheReadyPoseOfASevenJointArm) {
+TEST(JointTrajectoryResult, DefaultSeedIsTheReadyPoseOfASevenJointArm) {
   // The ready pose is within the Panda's limits, so default_seed() returns it unclamped.
   EXPECT_TRUE(testing::CompareMatrices(default_seed(panda()), testing::panda_ready_pose(), 0.0));
 }

@@ -1,0 +1,40 @@
+// plan_options.hpp: how a plan is made: n_inter, the optimiser, the end-effector speed limits, the
+// tracking of the held rod between waypoints and the refinement where it would jump, and (used
+// only when the problem has an arm) the reach shell and the re-plans.
+#pragma once
+
+#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/robot/arm_reach.hpp"
+#include "rodshape/trajectory/end_effector_path.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
+
+namespace rodshape {
+
+/// With an arm: its reach shell in the workspace, IK checks of every pose, re-plans.
+struct ArmPlanOptions {
+  bool use_reach = true;            // add the arm's reach shell to the workspace
+  double reach_margin = 0.02;       // m: the shell is [r_min + margin, r_max - margin]
+  double replan_tightening = 0.02;  // m: how far past an unreachable pose's wrist distance the
+                                    // tightened shell ends
+  int max_replans = 3;
+  ArmReachOptions reach;
+  JointTrajectoryOptions joints;  // the first seed and the IK options, for the checks too
+  /// Throws InputError naming the field ("ArmPlanOptions.reach_margin" etc.).
+  void validate() const;
+};
+
+struct PlanOptions {
+  int steps = 7;  // n_inter
+  ShapeOptimizerOptions optimizer;
+  EndEffectorLimits end_effector;
+  bool track_between_waypoints = true;
+  int tracking_substeps = 10;  // continuation steps from one waypoint to the next
+  /// Where the tracked rod does not arrive on the planned shape (a jump), a step is inserted
+  /// halfway between the two objective sets and the segment re-planned, at most this many times.
+  int max_refinements = 4;
+  ArmPlanOptions arm;  // used when the problem has an arm
+  /// Throws InputError naming the field ("PlanOptions.steps", "PlanOptions.max_refinements" etc.).
+  void validate() const;
+};
+
+}  // namespace rodshape

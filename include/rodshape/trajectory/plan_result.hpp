@@ -1,0 +1,97 @@
+// plan_result.hpp: what plan() returns: the initial equilibrium, one optimal shape per step with
+// its end-effector waypoint, the timed end-effector path, the tracking of the held rod along it
+// and, with an arm, the reach, the IK checks, the re-plans and the joint trajectory.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/pose.hpp"
+#include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/workspace.hpp"
+#include "rodshape/robot/arm_reach.hpp"
+#include "rodshape/trajectory/end_effector_path.hpp"
+#include "rodshape/trajectory/intermediate_targets.hpp"
+#include "rodshape/trajectory/joint_trajectory.hpp"
+
+namespace rodshape {
+
+enum class PlanStatus { Complete, Partial, Infeasible };
+std::string to_string(PlanStatus status);  // "complete", "partial", "infeasible"
+
+struct PlanStep {
+  double fraction = 1.0;  // the objective set is p_init + fraction (p_obj - p_init)
+  bool inserted = false;  // a refinement step, inserted where the tracked rod jumped
+  PointSet objective_points;
+  ShapeResult solution;  // the optimal shape of this step (configuration, cost, stability, IPOPT)
+  Pose end_effector;     // world_T_tip · tip_T_ee
+};
+
+/// The equilibrium tracked along the commanded path between waypoints, against the plan.
+struct TrackingResult {
+  bool performed = false;
+  /// Per step k: the largest distance between the tracked rod on arrival at waypoint k and the
+  /// planned shape k, over the nodes, m.
+  std::vector<double> arrival_deviation;
+  double max_deviation = 0.0;
+  /// A jump: the tracked equilibrium lost stability, the continuation failed, or the rod arrived
+  /// on another equilibrium than the planned one (snap-through).
+  bool jump = false;
+  int jump_step = -1;   // the waypoint being approached when it happened
+  int refinements = 0;  // steps inserted by plan() to avoid jumps
+  std::string note;
+  std::string brief() const { return note; }
+};
+
+enum class ArmPlanStatus {
+  Reachable,    // every planned pose and every path sample has an IK solution
+  Unreachable,  // a pose or a sample has none, after the re-plans allowed (message: which)
+  NotChecked,   // the plan has no end-effector path (infeasible target)
+};
+std::string to_string(ArmPlanStatus status);  // "reachable", "unreachable", "not_checked"
+
+/// One re-plan: which pose had no IK solution and the shell it led to.
+struct Replan {
+  std::string reason;           // the pose (step or path sample) and the IK's message
+  double wrist_distance = 0.0;  // |w - c| of that pose, m
+  Workspace::ReachShell shell;  // the shell of the next plan
+};
+
+/// The arm's part of a plan.
+struct ArmPlanResult {
+  ArmPlanStatus status = ArmPlanStatus::NotChecked;
+  std::string message;
+  std::optional<ArmReach> reach;               // the arm's reach (ArmPlanOptions::use_reach)
+  std::optional<Workspace::ReachShell> shell;  // the shell the last plan was made with
+  std::vector<Replan> replans;
+  /// Joint positions of the initial end-effector pose and then of each step's, as far as the
+  /// check got (IK seeded from the one before).
+  std::vector<Eigen::VectorXd> waypoint_q;
+  JointTrajectoryResult joints;  // along the plan's end_effector_path
+  bool reachable() const { return status == ArmPlanStatus::Reachable; }
+  std::string brief() const { return to_string(status) + ": " + message; }
+};
+
+struct PlanResult {
+  PlanStatus status = PlanStatus::Infeasible;
+  std::string message;
+  int failed_step = -1;           // the step whose optimisation failed (Partial), else -1
+  FeasibilityResult feasibility;  // of the target, for this rod (Infeasible: why not)
+  BaseWrench initial_wrench;
+  RodConfiguration initial_configuration;
+  PointSet initial_points;      // p_init: the objective points projected on the initial shape
+  std::vector<PlanStep> steps;  // the steps that succeeded
+  std::vector<TimedPose> end_effector_path;
+  TrackingResult tracking;
+  std::optional<ArmPlanResult> arm;  // when the problem has an arm
+
+  bool complete() const { return status == PlanStatus::Complete; }
+  /// One line: "complete plan, 7 steps (7 requested), final max distance 0.37 mm, energy 0.25 J"
+  /// and, where they apply, the tracking's jump, the reach shell and the joint trajectory.
+  std::string brief(int steps_requested) const;
+};
+
+}  // namespace rodshape

@@ -1,0 +1,108 @@
+// field_names.cpp: the table between the library's field names and the task file's (see
+// field_names.hpp, and docs/task-file.md for the task file's).
+#include "rodshape/io/field_names.hpp"
+
+#include <regex>
+#include <string_view>
+#include <unordered_map>
+
+namespace rodshape {
+
+namespace {
+
+const std::unordered_map<std::string_view, std::string_view>& table() {
+  static const std::unordered_map<std::string_view, std::string_view> names = {
+      // trajectory
+      {"PlanOptions.steps", "trajectory.steps"},
+      {"PlanOptions.max_refinements", "trajectory.max_refinements"},
+      {"PlanOptions.tracking_substeps", "trajectory.tracking_substeps"},
+      {"EndEffectorLimits.max_linear_speed", "trajectory.max_linear_speed"},
+      {"EndEffectorLimits.max_angular_speed", "trajectory.max_angular_speed"},
+      {"EndEffectorLimits.max_linear_acceleration", "trajectory.max_linear_acceleration"},
+      {"EndEffectorLimits.max_angular_acceleration", "trajectory.max_angular_acceleration"},
+      {"EndEffectorLimits.sample_rate", "trajectory.rate"},
+      {"PlanProblem.workspace", "workspace"},
+      {"PlanProblem.initial", "initial"},
+      {"PlanArm", "robot"},
+      {"ArmPlanOptions.use_reach", "robot.reach.use"},
+      {"ArmPlanOptions.reach_margin", "robot.reach.margin"},
+      {"ArmPlanOptions.replan_tightening", "robot.reach.tightening"},
+      {"ArmPlanOptions.max_replans", "robot.reach.max_replans"},
+      {"ArmPlanOptions.joints.seed", "robot.seed"},
+      {"ArmReachOptions.samples", "robot.reach.samples"},
+      {"ArmReachOptions.refinement_steps", "robot.reach.refinement_steps"},
+      // optimisation
+      {"ShapeOptimizerOptions", "optimizer"},
+      {"ShapeTarget.points", "target.points"},
+      {"ShapeTarget.energy_weight", "weights.energy"},
+      {"ShapeTarget.distance_weight", "weights.distance"},
+      {"ShapeTarget.distance_smoothing", "target.distance_smoothing"},
+      {"StrainLimits.max_curvature", "limits.max_curvature"},
+      {"StrainLimits.max_axial_strain", "limits.max_axial_strain"},
+      {"Workspace", "workspace"},
+      {"WrenchBounds", "wrench_bounds"},
+      {"Grasp.tip_to_end_effector", "grasp.tip_to_end_effector"},
+      {"Grasp.released", "grasp.zero_wrench"},
+      // core
+      {"RodDescription.length", "rod.length"},
+      {"RodDescription.model", "rod.model"},
+      {"RodDescription.section", "rod.section"},
+      {"RodDescription.material", "rod.material"},
+      {"RodDescription.stiffness", "rod.stiffness"},
+      {"RodDescription.rest_curvature", "rod.rest_curvature"},
+      {"RodProperties.length", "rod.length"},
+      {"RodProperties.K_tra[0]", "rod.stiffness.GA"},
+      {"RodProperties.K_tra[1]", "rod.stiffness.GA"},
+      {"RodProperties.K_tra[2]", "rod.stiffness.EA"},
+      {"RodProperties.K_rot[0]", "rod.stiffness.EIx"},
+      {"RodProperties.K_rot[1]", "rod.stiffness.EIy"},
+      {"RodProperties.K_rot[2]", "rod.stiffness.GJ"},
+      {"RodProperties.u_rest", "rod.rest_curvature"},
+      {"ClampedRod.load", "distributed_load"},
+      {"ClampedRod.clamp", "base"},
+      {"FreeTip.wrench", "tip.wrench"},
+      {"ClampedTip.pose", "tip"},
+      {"GraspedTip.pose", "tip"},
+      // solvers
+      {"ShootingOptions.max_iterations", "solver.max_iterations"},
+      {"ShootingOptions.residual_tolerance", "solver.tolerance"},
+      {"ShootingOptions.max_continuation_steps", "solver.max_continuation_steps"},
+      {"ShootingOptions.continuation", "solver.continuation"},
+  };
+  return names;
+}
+
+}  // namespace
+
+std::string task_field_name(const std::string& library_field) {
+  std::string_view head = library_field;
+  for (;;) {
+    const auto found = table().find(head);
+    if (found != table().end())
+      return std::string(found->second) + library_field.substr(head.size());
+    const std::size_t dot = head.rfind('.');
+    if (dot == std::string_view::npos) return library_field;
+    head = head.substr(0, dot);
+  }
+}
+
+std::string in_task_names(const InputError& error) {
+  if (error.field().empty()) return fields_in_task_names(error.what());
+  return task_field_name(error.field()) + fields_in_task_names(error.problem());
+}
+
+std::string fields_in_task_names(const std::string& text) {
+  // A library field is a type name (capitalised) and its members: "Grasp.released[2]".
+  static const std::regex field(R"(\b[A-Z][A-Za-z]*(\.[a-z_][A-Za-z0-9_]*)+)");
+  std::string out;
+  auto last = text.cbegin();
+  for (std::sregex_iterator it(text.begin(), text.end(), field), end; it != end; ++it) {
+    out.append(last, (*it)[0].first);
+    out += task_field_name(it->str());
+    last = (*it)[0].second;
+  }
+  out.append(last, text.cend());
+  return out;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,66 @@
+// plan_writer.cpp: which files a plan writes into its output directory (see plan_output.hpp).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "rodshape/error.hpp"
+#include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/plan_output.hpp"
+
+namespace rodshape {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Creates `directory` (and its parents) if missing; InputError when that fails or it is a file.
+void make_directory(const std::string& directory) {
+  std::error_code error;
+  fs::create_directories(directory, error);
+  if (error)
+    throw InputError(directory + ": cannot create the output directory: " + error.message());
+  if (!fs::is_directory(directory, error))
+    throw InputError(directory + ": cannot create the output directory: it is not a directory");
+}
+
+}  // namespace
+
+void check_output_directory(const std::string& directory) {
+  std::error_code error;
+  if (fs::exists(directory, error) && !fs::is_directory(directory, error))
+    throw InputError(directory + ": cannot create the output directory: it is not a directory");
+}
+
+std::vector<std::string> write_plan(const std::string& directory,
+                                    const PlanResult& plan,
+                                    const PlanTask& task) {
+  make_directory(directory);
+  const fs::path dir(directory);
+  std::vector<std::string> written;
+  const auto write = [&](const char* name, const std::string& content) {
+    write_file_atomically((dir / name).string(), content);
+    written.push_back(name);
+  };
+  const auto remove = [&](const char* name) {  // a file of an earlier run
+    std::error_code ignored;
+    fs::remove(dir / name, ignored);
+  };
+  write("plan.json", plan_result_json(plan, task));
+  if (plan.status != PlanStatus::Infeasible) {
+    write("trajectory.csv", trajectory_csv(plan.end_effector_path));
+    write("plan.svg", plan_svg(plan, task));
+  } else {
+    remove("trajectory.csv");
+    remove("plan.svg");
+  }
+  if (plan.arm && plan.arm->joints.complete()) {
+    write("joint_trajectory.csv", joint_trajectory_csv(plan.arm->joints));
+    write("joint_trajectory.json", joint_trajectory_json(plan.arm->joints));
+  } else {
+    remove("joint_trajectory.csv");
+    remove("joint_trajectory.json");
+  }
+  return written;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,258 @@
+// follow_equilibrium.cpp: continuation of the held rod's equilibrium along a path of boundary
+// conditions (see follow_equilibrium.hpp).
+#include "rodshape/solvers/follow_equilibrium.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "rodshape/error.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+void FollowOptions::validate() const {
+  if (substeps < 1)
+    throw InputError("FollowOptions.substeps", " = " + std::to_string(substeps) + " must be >= 1");
+  if (max_substeps < 1)
+    throw InputError("FollowOptions.max_substeps",
+                     " = " + std::to_string(max_substeps) + " must be >= 1");
+  detail::require_positive("FollowOptions.initial_step", initial_step);
+  if (arrival_stability && final_derivatives != Derivatives::AllNodes)
+    throw InputError("FollowOptions.arrival_stability",
+                     ": the stability test needs final_derivatives = AllNodes");
+  shooting.validate();
+}
+
+std::string to_string(FollowEvent event) {
+  switch (event) {
+    case FollowEvent::None:
+      return "none";
+    case FollowEvent::Lost:
+      return "lost";
+    case FollowEvent::Unstable:
+      return "unstable";
+    case FollowEvent::OtherBranch:
+      return "other_branch";
+  }
+  return "unknown";
+}
+
+std::string FollowResult::brief() const {
+  std::ostringstream out;
+  if (followed())
+    out << "followed to the end in " << states.size() << " substeps";
+  else
+    out << to_string(event) << " at sigma = " << sigma << ": " << message;
+  out << " (" << total.iterations << " iterations, " << total.integrations << " integrations)";
+  return out.str();
+}
+
+EquilibriumPath held_tip_path(const Pose& from,
+                              const Pose& to,
+                              const std::array<bool, 6>& released) {
+  const bool grasped = std::any_of(released.begin(), released.end(), [](bool b) { return b; });
+  return {[from, to, released, grasped](double sigma) -> TipCondition {
+            const Pose pose = interpolate(from, to, sigma);
+            if (grasped) return GraspedTip{pose, released};
+            return ClampedTip{pose};
+          },
+          false};
+}
+
+EquilibriumPath sampled_tip_path(std::vector<TipCondition> samples) {
+  if (samples.size() < 2)
+    throw InputError("samples",
+                     ": a sampled tip path needs at least 2 samples (the start and one)");
+  const double last = static_cast<double>(samples.size() - 1);
+  return {[samples = std::move(samples), last](double sigma) {
+            const auto k = static_cast<std::size_t>(
+                std::clamp(std::lround(sigma * last), 0L, static_cast<long>(last)));
+            return samples[k];
+          },
+          false};
+}
+
+double node_deviation(const RodConfiguration& a, const RodConfiguration& b) {
+  double worst = 0.0;
+  for (int i = 0; i < std::min(a.nodes(), b.nodes()); ++i)
+    worst = std::max(worst, (a.p[i] - b.p[i]).norm());
+  return worst;
+}
+
+namespace {
+
+/// Adds the work counts of one substep's solve to `total`.
+void add_counts(ShootingSummary& total, const ShootingSummary& part) {
+  total.iterations += part.iterations;
+  total.chord_steps += part.chord_steps;
+  total.integrations += part.integrations;
+  total.jacobian_evaluations += part.jacobian_evaluations;
+  ++total.continuation_steps;
+  total.status = part.status;
+  total.message = part.message;
+  total.residual_norm = part.residual_norm;
+}
+
+/// One substep: the direct solve at σ from `guess`, with the derivatives `derivatives`.
+ShootingResult solve_at(const ClampedRod& rod,
+                        const EquilibriumPath& path,
+                        double sigma,
+                        const BaseWrench& guess,
+                        ShootingOptions shooting,
+                        Derivatives derivatives) {
+  shooting.continuation = false;  // a failure here is what the caller wants to see
+  shooting.output_derivatives = derivatives;
+  if (!path.ramp_loads) return solve_equilibrium(rod, path.tip_at(sigma), guess, shooting);
+  ClampedRod scaled = rod;
+  scaled.load.force *= sigma;
+  scaled.load.moment *= sigma;
+  return solve_equilibrium(scaled, path.tip_at(sigma), guess, shooting);
+}
+
+/// Records an accepted substep; false (with the event set) when it is unstable and stability is
+/// assessed at every substep.
+bool accept(const ClampedRod& rod,
+            const FollowOptions& options,
+            double sigma,
+            ShootingResult&& solved,
+            FollowResult& result) {
+  FollowedState state{sigma,
+                      solved.base_wrench,
+                      solved.configuration.tip(),
+                      solved.configuration.tip_wrench(),
+                      solved.configuration.energy,
+                      solved.summary,
+                      std::nullopt};
+  if (options.stability_every_substep)
+    state.stability = assess_stability(rod, solved.configuration);
+  const bool unstable = state.stability && !state.stability->stable && !state.stability->degenerate;
+  result.sigma = sigma;
+  result.base_wrench = solved.base_wrench;
+  result.configuration = std::move(solved.configuration);
+  result.states.push_back(std::move(state));
+  if (unstable) {
+    result.event = FollowEvent::Unstable;
+    result.event_sigma = sigma;
+    result.message = "the equilibrium at sigma = " + detail::format_value(sigma) + " is unstable";
+  }
+  return !unstable;
+}
+
+/// σ_j = j / substeps; the first failure ends the path.
+void follow_fixed(const ClampedRod& rod,
+                  const EquilibriumPath& path,
+                  const FollowOptions& options,
+                  FollowResult& result) {
+  const Derivatives every =
+      options.stability_every_substep ? Derivatives::AllNodes : Derivatives::None;
+  for (int j = 1; j <= options.substeps; ++j) {
+    const double sigma = static_cast<double>(j) / options.substeps;
+    const Derivatives derivatives = j == options.substeps ? options.final_derivatives : every;
+    ShootingResult solved =
+        solve_at(rod, path, sigma, result.base_wrench, options.shooting, derivatives);
+    add_counts(result.total, solved.summary);
+    if (!solved.summary.converged()) {
+      result.event = FollowEvent::Lost;
+      result.event_sigma = sigma;
+      result.failed_solve = solved.summary;
+      result.message =
+          "the equilibrium could not be followed at sigma = " + detail::format_value(sigma) + " (" +
+          solved.summary.brief() + ")";
+      return;
+    }
+    if (!accept(rod, options, sigma, std::move(solved), result)) return;
+  }
+}
+
+/// Steps doubled after a success and halved after a failure, with a secant predictor.
+void follow_adaptive(const ClampedRod& rod,
+                     const EquilibriumPath& path,
+                     const FollowOptions& options,
+                     FollowResult& result) {
+  const Derivatives every =
+      options.stability_every_substep ? Derivatives::AllNodes : Derivatives::None;
+  Vector6d w_solved = result.base_wrench.to_vector(), w_previous = w_solved;
+  double t = 0.0, dt = options.initial_step, dt_previous = 0.0;
+  const double dt_min = 1.0 / options.max_substeps;
+  while (t < 1.0) {
+    dt = std::min(dt, 1.0 - t);
+    const double t_next = t + dt;
+    Vector6d w_step = w_solved;
+    if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
+    const Derivatives derivatives = t_next >= 1.0 ? options.final_derivatives : every;
+    ShootingResult solved =
+        solve_at(rod, path, t_next, Wrench::from_vector(w_step), options.shooting, derivatives);
+    add_counts(result.total, solved.summary);
+    if (solved.summary.converged()) {
+      w_previous = w_solved;
+      w_solved = solved.base_wrench.to_vector();
+      dt_previous = dt;
+      t = t_next;
+      dt *= 2.0;
+      if (!accept(rod, options, t, std::move(solved), result)) return;
+    } else if (dt * 0.5 >= dt_min) {
+      dt *= 0.5;
+    } else {
+      result.event = FollowEvent::Lost;
+      result.event_sigma = t_next;
+      result.failed_solve = solved.summary;
+      result.message =
+          "the equilibrium could not be followed beyond sigma = " + detail::format_value(t) + " (" +
+          solved.summary.message + ")";
+      return;
+    }
+  }
+}
+
+/// On arrival: the expected equilibrium (else another branch), then stable (else unstable).
+void check_arrival(const ClampedRod& rod,
+                   const FollowOptions& options,
+                   const RodConfiguration* expected,
+                   double branch_tolerance,
+                   FollowResult& result) {
+  result.event_sigma = 1.0;
+  if (expected) {
+    result.arrival_deviation = node_deviation(result.configuration, *expected);
+    if (result.arrival_deviation > branch_tolerance) {
+      result.event = FollowEvent::OtherBranch;
+      result.message = "on arrival the rod is " + detail::format_value(result.arrival_deviation) +
+                       " m from the expected equilibrium: it went over to another branch";
+      return;
+    }
+  }
+  if (!options.arrival_stability) return;
+  result.arrival_stability = assess_stability(rod, result.configuration);
+  if (!result.arrival_stability->stable && !result.arrival_stability->degenerate) {
+    result.event = FollowEvent::Unstable;
+    result.message = "the equilibrium on arrival is unstable";
+  }
+}
+
+}  // namespace
+
+FollowResult follow_equilibrium(const ClampedRod& rod,
+                                const EquilibriumPath& path,
+                                const BaseWrench& start,
+                                const FollowOptions& options,
+                                const RodConfiguration* expected,
+                                double branch_tolerance) {
+  options.validate();
+  rod.validate();
+  if (!path.tip_at) throw InputError("EquilibriumPath.tip_at", ": no tip condition is given");
+  detail::require_finite("start.force", start.force);
+  detail::require_finite("start.moment", start.moment);
+
+  FollowResult result;
+  result.base_wrench = start;
+  result.total.status = SolveStatus::Converged;
+  result.total.message = "converged";
+  result.message = "followed to the end";
+  if (options.adaptive)
+    follow_adaptive(rod, path, options, result);
+  else
+    follow_fixed(rod, path, options, result);
+  if (result.followed()) check_arrival(rod, options, expected, branch_tolerance, result);
+  return result;
+}
+
+}  // namespace rodshape

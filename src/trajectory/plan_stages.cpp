@@ -1,0 +1,218 @@
+// plan_stages.cpp: the stages of plan() (see plan_stages.hpp).
+#include "plan_stages.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+
+namespace rodshape::plan_stages {
+
+namespace {
+
+std::string format_point(const Eigen::Vector3d& p) {
+  std::ostringstream out;
+  out.precision(4);
+  out << "[" << p.x() << ", " << p.y() << ", " << p.z() << "]";
+  return out.str();
+}
+
+bool any(const std::array<bool, 6>& flags) {
+  return std::any_of(flags.begin(), flags.end(), [](bool b) { return b; });
+}
+
+/// Throws InputError when the workspace excludes the initial tip (with the reach point's distance
+/// when the reach shell is what excludes it).
+void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialState::Kind initial) {
+  if (workspace.contains(tip, 1e-9)) return;
+  std::string reason = " excludes the initial tip at " + format_point(tip.position);
+  if (const auto& reach = workspace.reach) {
+    const double r = reach->distance(tip);
+    if (r > reach->outer_radius || r < reach->inner_radius)
+      reason += " (its reach point is " + std::to_string(r) +
+                " m from the reach centre, outside [" + std::to_string(reach->inner_radius) + ", " +
+                std::to_string(reach->outer_radius) + "] m)";
+  }
+  reason += initial == InitialState::Kind::Rest ? " (the rod at rest; set PlanProblem.initial.tip)"
+                                                : " (PlanProblem.initial)";
+  throw InputError("PlanProblem.workspace", reason);
+}
+
+/// The equilibrium held at `tip`, solved from rest (with continuation).
+InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip) {
+  const ShootingResult solved = solve_equilibrium(problem.rod, held_tip(tip, problem.grasp));
+  if (!solved.summary.converged())
+    throw InputError("PlanProblem.initial.tip",
+                     ": no equilibrium holds the rod there (" + solved.summary.brief() + ")");
+  return {solved.base_wrench, solved.configuration};
+}
+
+/// The equilibrium of a given base wrench; the released grasp axes must carry no tip wrench.
+InitialEquilibrium given_equilibrium(const PlanProblem& problem, const BaseWrench& w) {
+  InitialEquilibrium initial{w, integrate(problem.rod, w, Derivatives::AllNodes)};
+  const Vector6d tip_wrench = initial.configuration.tip_wrench().to_vector();
+  const double tolerance = ShootingOptions{}.residual_tolerance;
+  for (int k = 0; k < 6; ++k) {
+    if (problem.grasp.released[k] && std::abs(tip_wrench[k]) > tolerance)
+      throw InputError("PlanProblem.initial.base_wrench",
+                       ": its tip wrench component " + std::to_string(k) + " = " +
+                           std::to_string(tip_wrench[k]) +
+                           " is one the grasp releases (Grasp.released): not an equilibrium "
+                           "of the grasped rod");
+  }
+  return initial;
+}
+
+}  // namespace
+
+TipCondition held_tip(const Pose& tip, const Grasp& grasp) {
+  if (!any(grasp.released)) return ClampedTip{tip};
+  return GraspedTip{tip, grasp.released};
+}
+
+InitialEquilibrium initial_equilibrium(const PlanProblem& problem) {
+  InitialEquilibrium initial;
+  switch (problem.initial.kind) {
+    case InitialState::Kind::Rest:
+      initial.configuration = integrate(problem.rod, BaseWrench{}, Derivatives::AllNodes);
+      break;
+    case InitialState::Kind::HeldTip:
+      initial = held_equilibrium(problem, problem.initial.tip);
+      break;
+    case InitialState::Kind::Equilibrium:
+      initial = given_equilibrium(problem, problem.initial.base_wrench);
+      break;
+  }
+  require_in_workspace(problem.workspace, initial.configuration.tip(), problem.initial.kind);
+  return initial;
+}
+
+std::vector<ObjectiveSet> objective_sets(const PointSet& initial,
+                                         const PointSet& objective,
+                                         int steps) {
+  std::vector<ObjectiveSet> sets;
+  for (int i = 1; i <= steps; ++i) {  // as intermediate_targets() makes them
+    const double f = static_cast<double>(i) / steps;
+    sets.push_back({f, objective_set(initial, objective, f), false});
+  }
+  return sets;
+}
+
+void StepHistory::push(const BaseWrench& w, double fraction) {
+  before = last;
+  f_before = f_last;
+  last = w;
+  f_last = fraction;
+  ++steps;
+}
+
+BaseWrench warm_start(ShapeProblem& unconstrained, const StepHistory& history, double fraction) {
+  if (history.steps < 2) return history.last;
+  const Vector6d w = history.last.to_vector();
+  const double ratio = (fraction - history.f_last) / (history.f_last - history.f_before);
+  const Vector6d secant = w + ratio * (w - history.before.to_vector());
+  unconstrained.evaluate(w);
+  const double cost_at_last = unconstrained.cost();
+  unconstrained.evaluate(secant);
+  return unconstrained.cost() < cost_at_last ? Wrench::from_vector(secant) : history.last;
+}
+
+ShapeResult optimise_step(const PlanProblem& problem,
+                          const ShapeTarget& target,
+                          ShapeProblem& unconstrained,
+                          const BaseWrench& start,
+                          const ShapeOptimizerOptions& options) {
+  ShapeResult solution = optimise_shape(unconstrained, start, options);
+  const bool has_inequalities = !problem.workspace.unbounded() || problem.limits.max_curvature ||
+                                problem.limits.max_axial_strain;
+  if (!has_inequalities) return solution;
+  ShapeProblem full(problem.rod, target, problem.workspace, problem.grasp, problem.limits,
+                    problem.wrench_bounds);
+  if (solution.converged()) {
+    // The inequalities hold at the unconstrained optimum: it is a local optimum of the full
+    // problem too, with multipliers 0.
+    full.evaluate(solution.base_wrench.to_vector());
+    if (full.constraint_violation() <= options.constraint_tolerance) return solution;
+  }
+  // Violated: the full problem, from the step's start (the warm start), and failing that from the
+  // unconstrained optimum.
+  ShapeResult constrained = optimise_shape(full, start, options);
+  if (!constrained.converged() && solution.converged())
+    constrained = optimise_shape(full, solution.base_wrench, options);
+  return constrained;
+}
+
+SegmentTracking track_segment(const PlanProblem& problem,
+                              const PlanOptions& options,
+                              const Pose& from,
+                              const BaseWrench& w,
+                              const PlanStep& step,
+                              int waypoint) {
+  constexpr double kJumpDeviation = 1e-3;  // m
+  FollowOptions follow;
+  follow.substeps = options.tracking_substeps;
+  follow.final_derivatives = Derivatives::AllNodes;  // for the stability test on arrival
+  follow.arrival_stability = true;
+  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
+  const Pose to = step.end_effector;
+  const Grasp& grasp = problem.grasp;
+  const EquilibriumPath path{[&](double sigma) {
+                               return held_tip(compose(interpolate(from, to, sigma), ee_T_tip),
+                                               grasp);
+                             },
+                             false};
+  const FollowResult followed = follow_equilibrium(problem.rod, path, w, follow,
+                                                   &step.solution.configuration, kJumpDeviation);
+  SegmentTracking segment;
+  segment.jump = !followed.followed();
+  if (followed.event == FollowEvent::Lost) {
+    segment.deviation = std::numeric_limits<double>::infinity();
+    segment.note = "the equilibrium could not be followed towards waypoint " +
+                   std::to_string(waypoint) + " at " + std::to_string(followed.event_sigma) +
+                   " of the way (" + followed.failed_solve.brief() + ")";
+    return segment;
+  }
+  segment.arrived = followed.base_wrench;
+  segment.deviation = followed.arrival_deviation;
+  if (followed.event == FollowEvent::OtherBranch)
+    segment.note = "on arrival at waypoint " + std::to_string(waypoint) + " the tracked rod is " +
+                   std::to_string(segment.deviation) +
+                   " m from the planned shape: it jumped to another equilibrium";
+  else if (followed.event == FollowEvent::Unstable)
+    segment.note =
+        "the tracked equilibrium at waypoint " + std::to_string(waypoint) + " is unstable";
+  return segment;
+}
+
+void record(TrackingResult& tracking, const SegmentTracking& segment, int step_index) {
+  tracking.performed = true;
+  tracking.arrival_deviation.push_back(segment.deviation);
+  tracking.max_deviation = std::max(tracking.max_deviation, segment.deviation);
+  if (segment.jump && !tracking.jump) {
+    tracking.jump = true;
+    tracking.jump_step = step_index;
+    tracking.note = segment.note;
+  }
+}
+
+ObjectiveSet halfway_set(const PointSet& initial,
+                         const PointSet& objective,
+                         double f_last,
+                         const ObjectiveSet& set) {
+  const double half = 0.5 * (f_last + set.fraction);
+  return {half, objective_set(initial, objective, half), true};
+}
+
+std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
+                                      const std::vector<PlanStep>& steps,
+                                      const EndEffectorLimits& limits) {
+  std::vector<Pose> waypoints{initial_end_effector};
+  for (const PlanStep& step : steps) waypoints.push_back(step.end_effector);
+  return time_parameterize(waypoints, limits);
+}
+
+}  // namespace rodshape::plan_stages

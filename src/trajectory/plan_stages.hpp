@@ -1,0 +1,94 @@
+// plan_stages.hpp (private): the stages of plan(), in the order it runs them, each named after what
+// the paper's "Optimal trajectory generation" does there:
+//   1. initial_equilibrium   the initial shape Γ_0 (rest, a held tip pose, or a given wrench)
+//   2. check_feasibility     (optimisation/shape_target.hpp) is the target within reach at all
+//   3. objective_sets        p^i = p_init + (i / n_inter)(p_obj - p_init), p_init on Γ_0
+//   4. warm_start, optimise_step   each step's optimal shape, warm-started from the last
+//   5. track_segment         the held rod followed from one waypoint to the next
+//   6. halfway_set           refinement: a set inserted where the tracked rod would jump
+//   7. time_waypoints        the end-effector waypoints timed for quasi-static motion
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rodshape/optimisation/shape_problem.hpp"
+#include "rodshape/solvers/tip_condition.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace rodshape::plan_stages {
+
+/// The condition the gripper imposes while it moves: the tip held at a pose, with the components
+/// the grasp cannot transmit released.
+TipCondition held_tip(const Pose& tip, const Grasp& grasp);
+
+/// 1. The equilibrium the rod starts in, with all-node derivatives. Throws InputError when no
+/// equilibrium holds the rod at the initial tip pose, when a given wrench loads a released grasp
+/// axis, or when the workspace excludes the initial tip.
+struct InitialEquilibrium {
+  BaseWrench wrench;
+  RodConfiguration configuration;
+};
+InitialEquilibrium initial_equilibrium(const PlanProblem& problem);
+
+/// 3. The objective set of fraction f: p_init + f (p_obj - p_init). `inserted` marks a refinement.
+struct ObjectiveSet {
+  double fraction = 1.0;
+  PointSet points;
+  bool inserted = false;
+};
+/// The n_inter sets, f = i / n_inter, i = 1 … n_inter (the last is p_obj itself).
+std::vector<ObjectiveSet> objective_sets(const PointSet& initial,
+                                         const PointSet& objective,
+                                         int steps);
+
+/// 4. The start of a step's optimisation: the last optimum w, or (from the third step on) the
+/// secant extrapolation of the last two optima to the new fraction when its cost is lower (the
+/// sets move on straight lines, so the optima move smoothly).
+struct StepHistory {
+  BaseWrench last, before;  // the last two optima (both the initial wrench at first)
+  double f_last = 0.0, f_before = 0.0;
+  int steps = 0;  // optima so far
+  void push(const BaseWrench& w, double fraction);
+};
+BaseWrench warm_start(ShapeProblem& unconstrained, const StepHistory& history, double fraction);
+
+/// 4. One step's optimum: first without the inequalities (workspace, strain limits), which are
+/// inactive for most steps and whose barrier terms would still bend the interior-point path; if
+/// its optimum violates them, the full problem from the warm start, then from that optimum.
+ShapeResult optimise_step(const PlanProblem& problem,
+                          const ShapeTarget& target,
+                          ShapeProblem& unconstrained,
+                          const BaseWrench& start,
+                          const ShapeOptimizerOptions& options);
+
+/// 5. The held rod followed from the end-effector pose `from` (base wrench `w`) to `step`'s
+/// waypoint, and compared on arrival with the planned shape: farther than 1 mm, unstable, or lost
+/// on the way is a jump.
+struct SegmentTracking {
+  bool jump = false;
+  double deviation = 0.0;  // on arrival, from the planned shape (∞ when lost on the way)
+  BaseWrench arrived;      // the tracked base wrench on arrival
+  std::string note;
+};
+SegmentTracking track_segment(const PlanProblem& problem,
+                              const PlanOptions& options,
+                              const Pose& from,
+                              const BaseWrench& w,
+                              const PlanStep& step,
+                              int waypoint);
+/// Adds a segment to the tracking result (its first jump is the result's).
+void record(TrackingResult& tracking, const SegmentTracking& segment, int step_index);
+
+/// 6. The set halfway between fraction f_last and `set`'s, to be planned before it.
+ObjectiveSet halfway_set(const PointSet& initial,
+                         const PointSet& objective,
+                         double f_last,
+                         const ObjectiveSet& set);
+
+/// 7. The timed end-effector path from the initial pose through every step's waypoint.
+std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
+                                      const std::vector<PlanStep>& steps,
+                                      const EndEffectorLimits& limits);
+
+}  // namespace rodshape::plan_stages
