@@ -32,11 +32,14 @@ class EquilibriumCommand final : public Command {
         ->type_name("TASK.yaml");
     command
         ->add_option("-o,--output", output_path_,
-                     "Write the JSON result to this file (whole or not at all) instead of "
-                     "standard output")
+                     "Write the JSON result to this file (whole or not at all; a device or a "
+                     "FIFO is written in place, a symbolic link is followed) instead of standard "
+                     "output; '-' is standard output")
         ->type_name("OUT.json");
     command->add_flag("-q,--quiet", quiet_,
-                      "With -o: do not print the one-line summary on standard output");
+                      "Print nothing on standard output: with -o, no one-line summary; without "
+                      "(or with -o -), no result. The exit code says the status; errors still "
+                      "go to standard error");
     return command;
   }
 
@@ -68,8 +71,8 @@ class EquilibriumCommand final : public Command {
     }
 
     const std::string json = equilibrium_result_json(solution, stability, solved_rod);
-    if (output_path_.empty()) {
-      std::cout << json << std::flush;
+    if (output_path_.empty() || output_path_ == "-") {
+      if (!quiet_) write_to_standard_output(json);
     } else {
       write_file_atomically(output_path_, json);
       if (!quiet_) {

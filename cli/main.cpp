@@ -2,6 +2,7 @@
 // exceptions into one-line messages and exit codes (exit_code.hpp).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <memory>
@@ -26,6 +27,43 @@ std::string one_line(std::string message) {
     if (c == '\n' || c == '\r') c = ' ';
   }
   return message;
+}
+
+/// Optimal-string-alignment distance: insertions, deletions, substitutions and transpositions of
+/// two neighbours ("paln" is 1 from "plan").
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+/// For a first argument that is no subcommand: "unknown command 'equilibrim'; did you mean
+/// 'equilibrium'?", or the list of commands when none is close (at most a third of the letters
+/// wrong). Empty when `word` is a subcommand or an option.
+std::string unknown_command_message(const CLI::App& app, const std::string& word) {
+  if (word.empty() || word.front() == '-') return "";
+  std::string names, closest;
+  std::size_t best = word.size() / 3 + 1;
+  for (const CLI::App* command : app.get_subcommands({})) {
+    if (command->check_name(word)) return "";
+    const std::string& name = command->get_name();
+    names += (names.empty() ? "" : ", ") + name;
+    if (const std::size_t distance = edit_distance(word, name); distance < best) {
+      best = distance;
+      closest = name;
+    }
+  }
+  if (!closest.empty()) return "unknown command '" + word + "'; did you mean '" + closest + "'?";
+  return "unknown command '" + word + "'; the commands are " + names;
 }
 
 }  // namespace
@@ -58,6 +96,12 @@ int main(int argc, char** argv) {
   add(make_fk_command());
   add(make_ik_command());
 
+  if (argc > 1) {
+    if (const std::string unknown = unknown_command_message(app, argv[1]); !unknown.empty()) {
+      std::cerr << "error: " << unknown << " (run 'rodshape --help')\n";
+      return kBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

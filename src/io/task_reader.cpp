@@ -3,14 +3,12 @@
 // gravity, distributed_load, base).
 #include "rodshape/io/task_reader.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string_view>
 #include <vector>
 
+#include "capped_file.hpp"
 #include "io/plan_sections.hpp"
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
@@ -83,17 +81,13 @@ ClampedRod read_clamped_rod(const YamlField& root) {
   return rod;
 }
 
+/// The cap on a task file's size (docs/limits.md). yaml-cpp needs about 250 MB of memory and
+/// several seconds for 1 MiB of YAML; the examples are under 5 KB, and 1 MiB holds some 40,000
+/// target points.
+constexpr detail::FileCap kTaskFileCap{detail::kMiB, "a task file", "cannot read"};
+
 std::string read_text_file(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path + ": cannot read: it is a directory");
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path + ": cannot read: " + std::strerror(errno));
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw InputError(path + ": cannot read: " + std::strerror(errno));
-  return text.str();
+  return detail::read_capped_file(path, kTaskFileCap);
 }
 
 /// Lower bounds above upper ones, in the section's own names.

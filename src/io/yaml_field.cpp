@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "io/did_you_mean.hpp"
+#include "io/yaml_document.hpp"
 
 namespace rodshape::io_detail {
 
@@ -330,13 +331,8 @@ void YamlField::fail_located(const std::string& message) const {
 // ---- parsing ------------------------------------------------------------------------------------
 
 YamlField parse_yaml(const std::string& text, const std::string& source) {
-  try {
-    return YamlField(std::make_shared<const YamlDocument>(YamlDocument{source, YAML::Load(text)}));
-  } catch (const YAML::Exception& error) {
-    const std::string location =
-        error.mark.is_null() ? source : source + ":" + std::to_string(error.mark.line + 1);
-    throw InputError(location + ": malformed YAML: " + error.msg);
-  }
+  return YamlField(std::make_shared<const YamlDocument>(
+      YamlDocument{source, load_single_document(text, source)}));
 }
 
 }  // namespace rodshape::io_detail

@@ -126,8 +126,9 @@ class YamlField {
   bool present_ = false;
 };
 
-/// Parses `text` (reported as `source`). Malformed YAML throws
-/// InputError "<source>:<line>: malformed YAML: <reason>".
+/// Parses `text` (reported as `source`), a single YAML document (yaml_document.hpp). Malformed YAML
+/// throws InputError "<source>:<line>: malformed YAML: <reason>"; text that is not UTF-8 and a
+/// second document throw with their own messages.
 YamlField parse_yaml(const std::string& text, const std::string& source);
 
 }  // namespace rodshape::io_detail

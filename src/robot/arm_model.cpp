@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -26,6 +25,8 @@
 #include <sstream>
 #include <utility>
 
+#include "capped_file.hpp"
+#include "robot/urdf_extent.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
 
@@ -43,6 +44,10 @@ struct ArmModel::Impl {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// The cap on a URDF file's size (docs/limits.md); robot descriptions are tens to hundreds of KB.
+constexpr detail::FileCap kUrdfFileCap{4 * detail::kMiB, "a URDF file",
+                                       "cannot read the URDF file"};
 
 std::string quoted(const std::string& name) { return "'" + name + "'"; }
 
@@ -62,6 +67,26 @@ class CapturingHandler final : public console_bridge::OutputHandler {
   std::string errors;
 };
 
+/// urdfdom's reason in words: its XML parser's messages ("Error document empty.") are said as what
+/// they mean for the file.
+std::string urdf_error(const std::string& urdf, const std::string& errors) {
+  if (urdf.find_first_not_of(" \t\r\n") == std::string::npos) return "the file is empty";
+  if (errors.empty()) return "not a valid URDF robot";
+  if (errors.starts_with("Error document empty"))
+    return "it is not XML (no XML element found; a URDF is an XML file with a <robot> element)";
+  if (errors.starts_with("Could not find the 'robot' element"))
+    return "no <robot> element (a URDF is an XML file with a <robot> element)";
+  if (errors.starts_with("Error ")) {
+    // TinyXML: "Error reading end tag." and the like.
+    std::string what = errors.substr(6);
+    if (const std::size_t end = what.find('.'); end != std::string::npos) what.resize(end);
+    return "malformed XML (error " + what + ")";
+  }
+  if (errors.find("No root link") != std::string::npos)
+    return errors + " (the joints form a closed loop)";
+  return errors;
+}
+
 urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& urdf, const std::string& source) {
   // console_bridge's handler is process-wide; parse one URDF at a time.
   static std::mutex mutex;
@@ -75,11 +100,8 @@ urdf::ModelInterfaceSharedPtr parse_urdf(const std::string& urdf, const std::str
     handler.errors += (handler.errors.empty() ? "" : "; ") + std::string(error.what());
   }
   console_bridge::restorePreviousOutputHandler();
-  if (!model) {
-    std::string why = handler.errors.empty() ? "not a valid URDF robot" : handler.errors;
-    if (why.find("No root link") != std::string::npos) why += " (the joints form a closed loop)";
-    throw InputError(source + ": the URDF does not parse: " + why);
-  }
+  if (!model)
+    throw InputError(source + ": the URDF does not parse: " + urdf_error(urdf, handler.errors));
   return model;
 }
 
@@ -236,18 +258,14 @@ KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
 ArmModel ArmModel::from_urdf_file(const std::string& path,
                                   const std::string& base_link,
                                   const std::string& tip_link) {
-  std::ifstream file(path);
-  if (!file) throw InputError(path + ": cannot read the URDF file");
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw InputError(path + ": cannot read the URDF file");
-  return from_urdf_string(text.str(), base_link, tip_link, path);
+  return from_urdf_string(detail::read_capped_file(path, kUrdfFileCap), base_link, tip_link, path);
 }
 
 ArmModel ArmModel::from_urdf_string(const std::string& urdf,
                                     const std::string& base_link,
                                     const std::string& tip_link,
                                     const std::string& source) {
+  robot_detail::check_urdf_extent(urdf, source);
   const urdf::ModelInterfaceSharedPtr model = parse_urdf(urdf, source);
   reject_closed_loops(*model, source);
 

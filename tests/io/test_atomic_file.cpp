@@ -1,6 +1,11 @@
-// test_atomic_file.cpp: output files are written whole or not at all, and no temporary is left.
+// test_atomic_file.cpp: output files are written whole or not at all, and no temporary is left; a
+// device or a FIFO is written in place and stays what it is; a symbolic link is followed and stays.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +14,8 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "support/device_nodes.hpp"
+#include "support/input_error.hpp"
 
 namespace rodshape {
 namespace {
@@ -60,9 +67,95 @@ TEST_F(AtomicFile, MissingDirectoryFailsNamingThePathAndLeavesNothing) {
 TEST_F(AtomicFile, DirectoryAsTargetFailsAndIsLeftAlone) {
   const fs::path target = directory_ / "taken";
   fs::create_directory(target);
-  EXPECT_THROW(write_file_atomically(target.string(), "x"), InputError);
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(target.string(), "x"); }),
+            target.string() + ": cannot write: Is a directory");
   EXPECT_TRUE(fs::is_directory(target));
   EXPECT_EQ(entries(), 1);
+}
+
+// ---- devices, FIFOs and symbolic links ----------------------------------------------------------
+
+TEST_F(AtomicFile, NullDeviceIsWrittenInPlaceAndStaysADevice) {
+  const auto null = testing::memory_device(directory_ / "null", testing::kNullMinor);
+  if (!null) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
+  write_file_atomically(null->string(), "{}\n");
+  EXPECT_TRUE(testing::is_character_device(*null)) << "the device was replaced";
+  EXPECT_EQ(entries(), 1) << "a temporary file was left behind";
+}
+
+TEST_F(AtomicFile, FullDeviceFailsWithNoSpaceAndStaysADevice) {
+  const auto full = testing::memory_device(directory_ / "full", testing::kFullMinor);
+  if (!full) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(full->string(), "{}\n"); }),
+            full->string() + ": cannot write: No space left on device");
+  EXPECT_TRUE(testing::is_character_device(*full)) << "the device was replaced";
+  EXPECT_EQ(entries(), 1);
+}
+
+TEST_F(AtomicFile, FifoIsWrittenInPlaceForItsReader) {
+  const fs::path fifo = directory_ / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // A reader is there before the write (non-blocking, so that a write that never comes cannot
+  // hang the test); the content fits in the pipe's buffer.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  write_file_atomically(fifo.string(), "through the pipe\n");
+  std::array<char, 64> buffer{};
+  const ssize_t count = ::read(reader, buffer.data(), buffer.size());
+  ::close(reader);
+  EXPECT_EQ(std::string(buffer.data(), count > 0 ? static_cast<std::size_t>(count) : 0),
+            "through the pipe\n");
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo))) << "the FIFO was replaced";
+  EXPECT_EQ(entries(), 1);
+}
+
+TEST_F(AtomicFile, SymbolicLinkIsFollowedAndStays) {
+  const fs::path real = directory_ / "real.json";
+  const fs::path link = directory_ / "link.json";
+  std::ofstream(real) << "old\n";
+  fs::create_symlink("real.json", link);  // relative, as ln -s makes them
+  write_file_atomically(link.string(), "new\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link))) << "the link was replaced";
+  EXPECT_EQ(fs::read_symlink(link), fs::path("real.json"));
+  EXPECT_EQ(contents(real), "new\n");
+  EXPECT_EQ(entries(), 2) << "a temporary file was left behind";
+}
+
+TEST_F(AtomicFile, DanglingSymbolicLinkCreatesTheFileItNames) {
+  const fs::path link = directory_ / "link.json";
+  fs::create_symlink(directory_ / "later.json", link);
+  write_file_atomically(link.string(), "made\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  EXPECT_EQ(contents(directory_ / "later.json"), "made\n");
+}
+
+TEST_F(AtomicFile, SymbolicLinkToADeviceWritesTheDevice) {
+  const auto null = testing::memory_device(directory_ / "null", testing::kNullMinor);
+  if (!null) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
+  const fs::path link = directory_ / "out.json";
+  fs::create_symlink(*null, link);
+  write_file_atomically(link.string(), "{}\n");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  EXPECT_TRUE(testing::is_character_device(*null));
+}
+
+TEST_F(AtomicFile, LoopOfSymbolicLinksFails) {
+  const fs::path a = directory_ / "a", b = directory_ / "b";
+  fs::create_symlink(b, a);
+  fs::create_symlink(a, b);
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(a.string(), "x"); }),
+            a.string() + ": cannot write: Too many levels of symbolic links");
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(a)));
+}
+
+TEST_F(AtomicFile, ReplacedFileKeepsItsPermissions) {
+  const fs::path path = directory_ / "private.json";
+  std::ofstream(path) << "old\n";
+  fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write);
+  write_file_atomically(path.string(), "new\n");
+  EXPECT_EQ(contents(path), "new\n");
+  EXPECT_EQ(fs::status(path).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write);
 }
 
 }  // namespace

@@ -59,6 +59,26 @@ class CliTest : public ::testing::Test {
     return result;
   }
 
+  /// Runs `rodshape <arguments>` with the test's directory as the working directory, and with
+  /// standard output sent to `stdout_path` (a device such as /dev/full) when it is not empty (out
+  /// is "" then).
+  CliOutcome run_in_directory(const std::string& arguments,
+                              const std::string& stdout_path = "") const {
+    const std::filesystem::path out = directory_ / "stdout.txt";
+    const std::filesystem::path err = directory_ / "stderr.txt";
+    const std::string command =
+        "cd " + quoted(directory_.string()) + " && " + quoted(cli_) + " " + arguments + " >" +
+        quoted(stdout_path.empty() ? out.string() : stdout_path) + " 2>" + quoted(err.string());
+    const int status = std::system(command.c_str());
+    CliOutcome result;
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (stdout_path.empty()) result.out = read_file(out);
+    result.err = read_file(err);
+    std::filesystem::remove(out);
+    std::filesystem::remove(err);
+    return result;
+  }
+
   /// Writes `text` to `name` in the test's directory.
   std::filesystem::path write_task(const std::string& name, const std::string& text) const {
     const std::filesystem::path path = directory_ / name;
