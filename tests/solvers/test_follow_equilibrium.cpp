@@ -605,6 +605,7 @@ TEST(FollowEquilibrium, RampedLoadStatesAreAssessedWithTheirOwnLoad) {
     SCOPED_TRACE("sigma = " + std::to_string(state.sigma));
     ClampedRod at_sigma = rod;
     at_sigma.load.force *= state.sigma;
+    at_sigma.substeps = state.solve.substeps;  // as the solve integrated it
     const StabilityResult own =
         assess_stability(at_sigma, integrate(at_sigma, state.base_wrench, Derivatives::AllNodes));
     ASSERT_TRUE(state.stability.has_value());
