@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace {
@@ -11,12 +12,7 @@ namespace {
 using namespace rodshape;
 
 ClampedRod rubber_band(int intervals) {
-  ClampedRod rod;
-  rod.properties.length = 0.29;
-  rod.properties.K_rot = {0.04, 0.04, 0.028};
-  rod.properties.K_tra = {426.67, 426.67, 1280.0};
-  rod.intervals = intervals;
-  return rod;
+  return samples::rubber_band(ConstitutiveModel::Cosserat, intervals);
 }
 
 /// Ten points at s = (i + ½) L / 10 on the rod bent by a tip load and moment in 3D (the target

@@ -15,6 +15,7 @@
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/samples/panda.hpp"
 #include "rodshape/trajectory/joint_trajectory.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -25,7 +26,7 @@ using namespace rodshape;
 const std::string kSource = RODSHAPE_SOURCE_DIR;
 
 void BM_IkWarm(benchmark::State& state) {
-  const ArmModel arm = ArmModel::from_urdf_file(kSource + "/data/robots/panda.urdf");
+  const ArmModel arm = samples::panda();
   const Eigen::VectorXd seed = default_seed(arm);
   Pose target = arm.forward_kinematics(seed);
   target.position += Eigen::Vector3d(0.0006, -0.0005, 0.0006);  // 1.0 mm away
@@ -64,7 +65,7 @@ void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
 }
 
 void BM_ArmReachPanda(benchmark::State& state) {
-  const ArmModel arm = ArmModel::from_urdf_file(kSource + "/data/robots/panda.urdf");
+  const ArmModel arm = samples::panda();
   ArmReach reach;
   for (auto _ : state) {
     reach = compute_arm_reach(arm);

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 
 namespace {
@@ -15,17 +16,7 @@ namespace {
 using namespace rodshape;
 
 ClampedRod rubber_band(int intervals) {
-  RodDescription band;
-  band.length = 0.29;
-  band.section = CrossSection::rectangle(0.02, 0.02);
-  band.material = Material{3.2e6, 0.5, 1392.0};
-  band.stiffness.EIx = 0.04;
-  band.stiffness.EIy = 0.04;
-  band.stiffness.GJ = 0.028;
-  ClampedRod rod;
-  rod.properties = make_rod_properties(band);
-  rod.intervals = intervals;
-  return rod;
+  return samples::rubber_band(ConstitutiveModel::Cosserat, intervals);
 }
 
 /// The bundled example's target: the tip 0.12 m aside, 0.22 m up, turned 90° about y.

@@ -7,25 +7,16 @@
 #include <numbers>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 
 int main() {
   using namespace rodshape;
 
-  // The rubber band: L = 0.29 m, 2 × 2 cm section, E = 3.2 MPa, ν = 0.5, and the paper's identified
-  // bending and torsional stiffness in place of E·I and G·J.
-  RodDescription band;
-  band.length = 0.29;
-  band.section = CrossSection::rectangle(0.02, 0.02);
-  band.material = Material{3.2e6, 0.5, 1392.0};
-  band.stiffness.EIx = 0.04;
-  band.stiffness.EIy = 0.04;
-  band.stiffness.GJ = 0.028;
-
-  ClampedRod rod;  // clamped at the origin, tangent along +z, 100 intervals
-  rod.properties = make_rod_properties(band);
-  rod.validate();
+  // The paper's rubber band (L = 0.29 m, 2 × 2 cm section, E = 3.2 MPa, ν = 0.5, identified EI and
+  // GJ), clamped at the origin, tangent along +z, 100 intervals.
+  const ClampedRod rod = samples::rubber_band();
 
   // Forward problem: the shape for a given internal wrench at the clamp, n(0) and m(0).
   const BaseWrench bending{{0.0, 0.0, 0.0}, {0.0, 0.05, 0.0}};  // 0.05 N·m about y

@@ -24,7 +24,7 @@ using namespace rodshape;
 using rodshape::testing::rotation_angle;
 
 const ArmModel& panda() {
-  static const ArmModel arm = ArmModel::from_urdf_file(rodshape::testing::kPandaUrdf);
+  static const ArmModel arm = samples::panda();
   return arm;
 }
 

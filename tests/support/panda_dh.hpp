@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "rodshape/samples/panda.hpp"
+
 namespace rodshape::testing {
 
 inline const std::string kPandaUrdf = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
@@ -48,12 +50,7 @@ inline std::vector<Eigen::Isometry3d> panda_dh_frames(const Eigen::VectorXd& q) 
 /// base_T_flange at q.
 inline Eigen::Isometry3d panda_dh(const Eigen::VectorXd& q) { return panda_dh_frames(q).back(); }
 
-/// The ready pose (0, -π/4, 0, -3π/4, 0, π/2, π/4).
-inline Eigen::VectorXd panda_ready_pose() {
-  constexpr double pi = std::numbers::pi;
-  Eigen::VectorXd q(7);
-  q << 0.0, -pi / 4, 0.0, -3 * pi / 4, 0.0, pi / 2, pi / 4;
-  return q;
-}
+/// The ready pose (0, -π/4, 0, -3π/4, 0, π/2, π/4): the library's sample.
+inline Eigen::VectorXd panda_ready_pose() { return samples::panda_ready_pose(); }
 
 }  // namespace rodshape::testing

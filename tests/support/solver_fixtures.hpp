@@ -20,6 +20,7 @@
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
 
@@ -32,18 +33,11 @@ inline constexpr double kBandEA = 3.2e6 * 4e-4;  // 1280 N
 inline constexpr double kBandGA = 3.2e6 / (2.0 * (1.0 + 0.5)) * 4e-4;  // 426.67 N
 inline constexpr double kBandMassPerLength = 1392.0 * 4e-4;  // ρA, kg/m (ρ of natural rubber)
 
-/// The paper's rubber band, clamped at the origin with the identity rotation, weightless.
+/// The paper's rubber band, clamped at the origin with the identity rotation, weightless (the
+/// library's sample; the constants above are its values, for the tests' oracles).
 inline ClampedRod rubber_band(ConstitutiveModel model = ConstitutiveModel::Cosserat,
                               int intervals = 100) {
-  ClampedRod rod;
-  rod.properties.length = kBandLength;
-  rod.properties.model = model;
-  rod.properties.K_rot = Eigen::Vector3d(kBandEI, kBandEI, kBandGJ);
-  rod.properties.K_tra = Eigen::Vector3d(kBandGA, kBandGA, kBandEA);
-  rod.properties.mass_per_length = kBandMassPerLength;
-  rod.intervals = intervals;
-  rod.validate();
-  return rod;
+  return samples::rubber_band(model, intervals);
 }
 
 inline double mean_bending_stiffness(const ClampedRod& rod) {

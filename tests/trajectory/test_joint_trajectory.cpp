@@ -24,7 +24,7 @@ namespace {
 using testing::rotation_angle;
 
 const ArmModel& panda() {
-  static const ArmModel arm = ArmModel::from_urdf_file(testing::kPandaUrdf);
+  static const ArmModel arm = samples::panda();
   return arm;
 }
 
