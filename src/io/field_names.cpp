@@ -32,7 +32,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"ArmReachOptions.samples", "robot.reach.samples"},
       {"ArmReachOptions.refinement_steps", "robot.reach.refinement_steps"},
       // optimisation
-      {"ShapeOptimizerOptions", "optimizer"},
+      {"ShapeOptimiserOptions", "optimizer"},
       {"ShapeTarget.points", "target.points"},
       {"ShapeTarget.energy_weight", "weights.energy"},
       {"ShapeTarget.distance_weight", "weights.distance"},

@@ -156,7 +156,7 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
   read_integer(trajectory, "max_refinements", options.max_refinements);
 }
 
-void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options) {
+void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options) {
   optimizer.expect_mapping(
       {"max_iterations", "tolerance", "constraint_tolerance", "multi_starts", "print_level"});
   read_integer(optimizer, "max_iterations", options.max_iterations);

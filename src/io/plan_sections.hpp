@@ -12,7 +12,7 @@
 #include "rodshape/core/pose.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -55,7 +55,7 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds);
 void read_trajectory_section(const YamlField& trajectory, PlanOptions& options);
 
 /// `optimizer`: max_iterations, tolerance, constraint_tolerance, multi_starts, print_level.
-void read_optimizer_section(const YamlField& optimizer, ShapeOptimizerOptions& options);
+void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options);
 
 /// `robot`: urdf (relative to `task_directory` unless absolute), base_link, tip_link, base (a
 /// pose), flange_to_end_effector (a pose), seed (joint positions). Reads the URDF; its errors are

@@ -151,7 +151,7 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
     io_detail::read_trajectory_section(trajectory, task.options);
   if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
-    io_detail::read_optimizer_section(optimizer, task.options.optimizer);
+    io_detail::read_optimiser_section(optimizer, task.options.optimiser);
   if (const YamlField robot = root.get("robot"); robot.present()) {
     io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
                                   task);

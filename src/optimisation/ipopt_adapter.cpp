@@ -74,7 +74,7 @@ struct IpoptSession::Application {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
 };
 
-IpoptSession::IpoptSession(const ShapeOptimizerOptions& options, bool finite_difference_hessian)
+IpoptSession::IpoptSession(const ShapeOptimiserOptions& options, bool finite_difference_hessian)
     : application_(std::make_unique<Application>()),
       finite_difference_hessian_(finite_difference_hessian) {
   Ipopt::IpoptApplication& app = *application_->app;

@@ -9,15 +9,15 @@
 #include <string>
 
 #include "rodshape/core/wrench.hpp"
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
 #include "rodshape/solvers/solve_status.hpp"
 
 namespace rodshape::detail {
 
 /// Whether the Hessian is differenced (eval_h) for this problem, per
-/// ShapeOptimizerOptions::hessian.
-bool uses_finite_difference_hessian(const ShapeOptimizerOptions& options,
+/// ShapeOptimiserOptions::hessian.
+bool uses_finite_difference_hessian(const ShapeOptimiserOptions& options,
                                     const ShapeProblem& problem);
 
 /// One IPOPT run from one start.
@@ -30,7 +30,7 @@ struct IpoptRun {
 class IpoptSession {
  public:
   /// Configures IPOPT with `options` (every option rodshape sets, apply_options).
-  IpoptSession(const ShapeOptimizerOptions& options, bool finite_difference_hessian);
+  IpoptSession(const ShapeOptimiserOptions& options, bool finite_difference_hessian);
   ~IpoptSession();
   IpoptSession(const IpoptSession&) = delete;
   IpoptSession& operator=(const IpoptSession&) = delete;

@@ -20,15 +20,15 @@ constexpr int kUnknowns = 6;  // w = (n(0), m(0))
 // ---- options
 // --------------------------------------------------------------------------------------
 
-bool uses_finite_difference_hessian(const ShapeOptimizerOptions& options,
+bool uses_finite_difference_hessian(const ShapeOptimiserOptions& options,
                                     const ShapeProblem& problem) {
-  using Hessian = ShapeOptimizerOptions::Hessian;
+  using Hessian = ShapeOptimiserOptions::Hessian;
   return options.hessian == Hessian::FiniteDifference ||
          (options.hessian == Hessian::Automatic && problem.constraint_count() == 0);
 }
 
 void apply_options(Ipopt::OptionsList& ipopt_options,
-                   const ShapeOptimizerOptions& options,
+                   const ShapeOptimiserOptions& options,
                    bool finite_difference_hessian) {
   bool ok = true;
   const auto set_string = [&](const char* name, const char* value) {
@@ -74,7 +74,7 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
   // (eval_h) or IPOPT's limited-memory BFGS approximation. With 6 unknowns a long L-BFGS history
   // is free, and IPOPT's default of 6 pairs forgets curvature too fast on this non-convex problem.
   // On the rubber band
-  // with the target of tests/optimisation/test_shape_optimizer.cpp, from a zero guess, history 6
+  // with the target of tests/optimisation/test_shape_optimiser.cpp, from a zero guess, history 6
   // failed 2 of 4 cases (grasp m_x = 0: max_iter 500; half-space: Infeasible_Problem_Detected
   // after wandering to |w| ~ 1e3); history 20 solved all 4 in 26–79 iterations.
   set_string("hessian_approximation", finite_difference_hessian ? "exact" : "limited-memory");
@@ -425,7 +425,7 @@ DerivativeTestReport run_derivative_test(ShapeProblem& problem,
                                          double tolerance,
                                          double perturbation) {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   options.max_iterations = 0;  // check at the start, do not optimise
   const bool differenced = uses_finite_difference_hessian(options, problem);
   apply_options(*app->Options(), options, differenced);

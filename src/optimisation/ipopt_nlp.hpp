@@ -7,7 +7,7 @@
 // with w = (n(0), m(0)) the base wrench, F the shape cost and g the workspace, grasp and strain
 // rows of ShapeProblem. First derivatives are exact (one integration with all-node derivatives);
 // the Hessian of the Lagrangian is forward differences of its exact gradient (eval_h), or IPOPT's
-// limited-memory (L-BFGS) approximation when ShapeOptimizerOptions::hessian says so.
+// limited-memory (L-BFGS) approximation when ShapeOptimiserOptions::hessian says so.
 #pragma once
 
 #include <IpIpoptApplication.hpp>
@@ -17,7 +17,7 @@
 
 #include "optimisation/ipopt_adapter.hpp"
 #include "rodshape/core/wrench.hpp"
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
 
 namespace rodshape::detail {
@@ -29,7 +29,7 @@ inline constexpr double kIpoptInfinity = 1e19;
 /// Every IPOPT option rodshape sets, in one place, each with its reason (see the .cpp). Call before
 /// IpoptApplication::Initialize(""), which applies print_level to the console journal.
 void apply_options(Ipopt::OptionsList& ipopt_options,
-                   const ShapeOptimizerOptions& options,
+                   const ShapeOptimiserOptions& options,
                    bool finite_difference_hessian);
 
 /// What IPOPT left in finalize_solution() and intermediate_callback().

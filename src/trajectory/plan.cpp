@@ -21,7 +21,7 @@ void PlanOptions::validate() const {
   if (tracking_substeps < 1)
     throw InputError("PlanOptions.tracking_substeps",
                      " = " + std::to_string(tracking_substeps) + " must be >= 1");
-  optimizer.validate();
+  optimiser.validate();
   end_effector.validate();
   arm.validate();
 }
@@ -108,7 +108,7 @@ bool plan_steps(const PlanProblem& problem,
     ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                                problem.wrench_bounds);
     const BaseWrench start = warm_start(unconstrained, loop.history, set.fraction);
-    ShapeResult solution = optimise_step(problem, target, unconstrained, start, options.optimizer);
+    ShapeResult solution = optimise_step(problem, target, unconstrained, start, options.optimiser);
     const int number = static_cast<int>(result.steps.size()) + 1;
     if (!solution.converged()) {
       result.status = PlanStatus::Partial;

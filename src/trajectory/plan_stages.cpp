@@ -130,7 +130,7 @@ ShapeResult optimise_step(const PlanProblem& problem,
                           const ShapeTarget& target,
                           ShapeProblem& unconstrained,
                           const BaseWrench& start,
-                          const ShapeOptimizerOptions& options) {
+                          const ShapeOptimiserOptions& options) {
   ShapeResult solution = optimise_shape(unconstrained, start, options);
   const bool has_inequalities = !problem.workspace.unbounded() || problem.limits.max_curvature ||
                                 problem.limits.max_axial_strain;

@@ -60,7 +60,7 @@ ShapeResult optimise_step(const PlanProblem& problem,
                           const ShapeTarget& target,
                           ShapeProblem& unconstrained,
                           const BaseWrench& start,
-                          const ShapeOptimizerOptions& options);
+                          const ShapeOptimiserOptions& options);
 
 /// 5. The held rod followed from the end-effector pose `from` (base wrench `w`) to `step`'s
 /// waypoint, and compared on arrival with the planned shape: farther than 1 mm, unstable, or lost

@@ -156,7 +156,7 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
   // g = r² ≤ outer² holds to IPOPT's constraint tolerance on g (optimizer.constraint_tolerance).
   const double tolerance =
       rodshape::read_plan_task((kSource / "examples" / GetParam().file).string())
-          .options.optimizer.constraint_tolerance;
+          .options.optimiser.constraint_tolerance;
   for (const Json& r : wrist) {
     const double distance = r.get<double>();
     EXPECT_LE(distance * distance, outer * outer + tolerance) << distance;

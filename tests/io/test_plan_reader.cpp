@@ -268,10 +268,10 @@ TEST(PlanReader, SectionsReadIntoTheRequestAndOptions) {
   EXPECT_EQ(options.end_effector.sample_rate, 50.0);
   EXPECT_FALSE(options.track_between_waypoints);
   EXPECT_EQ(options.tracking_substeps, 4);
-  EXPECT_EQ(options.optimizer.max_iterations, 40);
-  EXPECT_EQ(options.optimizer.tolerance, 1e-7);
-  EXPECT_EQ(options.optimizer.constraint_tolerance, 1e-8);
-  EXPECT_EQ(options.optimizer.multi_starts, 2);
+  EXPECT_EQ(options.optimiser.max_iterations, 40);
+  EXPECT_EQ(options.optimiser.tolerance, 1e-7);
+  EXPECT_EQ(options.optimiser.constraint_tolerance, 1e-8);
+  EXPECT_EQ(options.optimiser.multi_starts, 2);
 }
 
 TEST(PlanReader, DefaultsApplyWhenLeftOut) {
@@ -287,7 +287,7 @@ TEST(PlanReader, DefaultsApplyWhenLeftOut) {
   EXPECT_FALSE(task.problem.limits.max_curvature.has_value());
   EXPECT_EQ(task.problem.grasp.released, (std::array<bool, 6>{}));
   EXPECT_EQ(task.options.steps, defaults.steps);
-  EXPECT_EQ(task.options.optimizer.max_iterations, defaults.optimizer.max_iterations);
+  EXPECT_EQ(task.options.optimiser.max_iterations, defaults.optimiser.max_iterations);
   EXPECT_EQ(task.options.end_effector.max_linear_speed, defaults.end_effector.max_linear_speed);
   EXPECT_EQ(task.options.track_between_waypoints, defaults.track_between_waypoints);
 }

@@ -83,7 +83,7 @@ TEST(ArmPlan, ATargetBeyondTheArmsReachStopsOnTheShell) {
   ASSERT_EQ(arm.status, ArmPlanStatus::Reachable) << arm.message;
   ASSERT_EQ(arm_plan.status, rodshape::PlanStatus::Complete) << arm_plan.message;
   const rodshape::ShapeResult& last = arm_plan.steps.back().solution;
-  const double tolerance = task.options.optimizer.constraint_tolerance;
+  const double tolerance = task.options.optimiser.constraint_tolerance;
   const double r = wrist_distance(arm, last.configuration.tip());
   // g = r² ≤ r_out² holds to the constraint tolerance and is active (to IPOPT's tolerance).
   EXPECT_LE(r * r, arm.shell->outer_radius * arm.shell->outer_radius + tolerance);

@@ -3,7 +3,7 @@
 // only when the problem has an arm) the reach shell and the re-plans.
 #pragma once
 
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/joint_trajectory.hpp"
@@ -25,7 +25,7 @@ struct ArmPlanOptions {
 
 struct PlanOptions {
   int steps = 7;  // n_inter
-  ShapeOptimizerOptions optimizer;
+  ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;
   bool track_between_waypoints = true;
   int tracking_substeps = 10;  // continuation steps from one waypoint to the next

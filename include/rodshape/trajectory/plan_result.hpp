@@ -10,7 +10,7 @@
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"

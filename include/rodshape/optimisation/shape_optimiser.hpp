@@ -1,4 +1,4 @@
-// shape_optimizer.hpp: solve a ShapeProblem with IPOPT (interior point, as in the paper), exact
+// shape_optimiser.hpp: solve a ShapeProblem with IPOPT (interior point, as in the paper), exact
 // first derivatives and a Hessian by differences of them (or IPOPT's limited-memory one), from one
 // or several initial base wrenches. IPOPT stays behind this header: no IPOPT type appears in
 // rodshape's public API.
@@ -16,7 +16,7 @@
 
 namespace rodshape {
 
-struct ShapeOptimizerOptions {
+struct ShapeOptimiserOptions {
   int max_iterations = 500;            // IPOPT max_iter
   double tolerance = 1e-8;             // IPOPT tol (scaled NLP error)
   double constraint_tolerance = 1e-9;  // IPOPT constr_viol_tol, in the constraints' units
@@ -67,7 +67,7 @@ struct ShapeResult {
 /// a solve that fails is reported in the status, never thrown.
 ShapeResult optimise_shape(ShapeProblem& problem,
                            const BaseWrench& guess,
-                           const ShapeOptimizerOptions& options = {});
+                           const ShapeOptimiserOptions& options = {});
 
 /// Whether this build has IPOPT (always true today; kept for a build without it).
 bool ipopt_available();

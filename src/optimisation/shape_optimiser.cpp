@@ -1,4 +1,4 @@
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,17 +11,17 @@
 
 namespace rodshape {
 
-void ShapeOptimizerOptions::validate() const {
+void ShapeOptimiserOptions::validate() const {
   if (max_iterations < 0)
-    throw InputError("ShapeOptimizerOptions.max_iterations",
+    throw InputError("ShapeOptimiserOptions.max_iterations",
                      " = " + std::to_string(max_iterations) + " must be >= 0");
-  detail::require_positive("ShapeOptimizerOptions.tolerance", tolerance);
-  detail::require_positive("ShapeOptimizerOptions.constraint_tolerance", constraint_tolerance);
+  detail::require_positive("ShapeOptimiserOptions.tolerance", tolerance);
+  detail::require_positive("ShapeOptimiserOptions.constraint_tolerance", constraint_tolerance);
   if (multi_starts < 0)
-    throw InputError("ShapeOptimizerOptions.multi_starts",
+    throw InputError("ShapeOptimiserOptions.multi_starts",
                      " = " + std::to_string(multi_starts) + " must be >= 0");
   if (print_level < 0 || print_level > 12)
-    throw InputError("ShapeOptimizerOptions.print_level",
+    throw InputError("ShapeOptimiserOptions.print_level",
                      " = " + std::to_string(print_level) + " must be in [0, 12]");
 }
 
@@ -93,7 +93,7 @@ struct StartResult {
 StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
-                      const ShapeOptimizerOptions& options) {
+                      const ShapeOptimiserOptions& options) {
   StartResult result;
   result.run = session.run(problem, start);
   // Judge the final iterate ourselves, on the problem as posed.
@@ -135,7 +135,7 @@ std::size_t pick_best(const std::vector<StartResult>& results) {
   return best;
 }
 
-std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptions& options) {
+std::string describe(const StartResult& r, int starts, const ShapeOptimiserOptions& options) {
   std::ostringstream out;
   out.precision(3);
   out << "IPOPT " << r.run.details.application_status_name << " after " << r.run.details.iterations
@@ -143,7 +143,7 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
   if (starts > 1) out << " (start " << r.start_index + 1 << " of " << starts << ")";
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
   if (r.status == SolveStatus::ConstraintViolated)
-    out << " exceeds ShapeOptimizerOptions.constraint_tolerance = " << options.constraint_tolerance;
+    out << " exceeds ShapeOptimiserOptions.constraint_tolerance = " << options.constraint_tolerance;
   if (r.status == SolveStatus::NonFinite)
     out << "; the shape is not finite (NaN or infinite values)";
   return out.str();
@@ -153,7 +153,7 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimizerOptio
 
 ShapeResult optimise_shape(ShapeProblem& problem,
                            const BaseWrench& guess,
-                           const ShapeOptimizerOptions& options) {
+                           const ShapeOptimiserOptions& options) {
   options.validate();
   const Vector6d w0 = guess.to_vector();
   detail::require_finite("guess", w0);

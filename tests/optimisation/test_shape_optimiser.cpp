@@ -1,4 +1,4 @@
-// test_shape_optimizer.cpp: optimise_shape() with IPOPT on the paper's rubber band.
+// test_shape_optimiser.cpp: optimise_shape() with IPOPT on the paper's rubber band.
 //
 // The oracle is a known equilibrium: integrate the band at a base wrench w_gen and take objective
 // points on it, at s = (i + ½) L / 10 (between the nodes of the optimiser's grid). That shape
@@ -16,7 +16,7 @@
 #include "optimisation_fixtures.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
-#include "rodshape/optimisation/shape_optimizer.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
 #include "support/input_error.hpp"
 
 namespace rodshape {
@@ -68,7 +68,7 @@ double max_curvature(const ClampedRod& rod, const RodConfiguration& c) {
 /// Runs optimise_shape and reports its time and iterations in the test's XML properties.
 ShapeResult timed_optimise(ShapeProblem& problem,
                            const Vector6d& guess,
-                           ShapeOptimizerOptions options = {}) {
+                           ShapeOptimiserOptions options = {}) {
   // RODSHAPE_TEST_IPOPT_PRINT_LEVEL=5 shows IPOPT's iterations when a test needs diagnosing.
   if (const char* level = std::getenv("RODSHAPE_TEST_IPOPT_PRINT_LEVEL"))
     options.print_level = std::atoi(level);
@@ -83,7 +83,7 @@ ShapeResult timed_optimise(ShapeProblem& problem,
   return solution;
 }
 
-class ShapeOptimizerTest : public ::testing::Test {
+class ShapeOptimiserTest : public ::testing::Test {
  protected:
   ClampedRod rod = rubber_band(ConstitutiveModel::Cosserat, kIntervals);
   Vector6d w_gen = generating_wrench();
@@ -100,7 +100,7 @@ class ShapeOptimizerTest : public ::testing::Test {
 // |f| ≲ 30: ≲ 1e-4 + 1e-5 in the worst row, far less in most. tol = 1e-3 keeps a margin of 10 while
 // a wrong term (a sign, a missing envelope term, a transposed block) errs by O(1) in relative
 // terms.
-TEST_F(ShapeOptimizerTest, IpoptDerivativeCheckerFindsNoErrors) {
+TEST_F(ShapeOptimiserTest, IpoptDerivativeCheckerFindsNoErrors) {
   Workspace workspace;
   workspace.half_spaces.push_back({Eigen::Vector3d(1.0, 0.0, 0.0), 0.5});
   workspace.inside.push_back({Eigen::Vector3d(0.0, 0.0, 0.1), 0.5});
@@ -130,7 +130,7 @@ TEST_F(ShapeOptimizerTest, IpoptDerivativeCheckerFindsNoErrors) {
 
 // ---- (b) the known equilibrium ------------------------------------------------------------------
 
-TEST_F(ShapeOptimizerTest, RecoversAKnownEquilibriumFromAZeroGuess) {
+TEST_F(ShapeOptimiserTest, RecoversAKnownEquilibriumFromAZeroGuess) {
   ShapeProblem problem(rod, target);
   const ShapeResult solution = timed_optimise(problem, Vector6d::Zero());
   ASSERT_TRUE(solution.converged()) << solution.message;
@@ -154,12 +154,12 @@ TEST_F(ShapeOptimizerTest, RecoversAKnownEquilibriumFromAZeroGuess) {
   EXPECT_EQ(solution.starts_tried, 1);
 }
 
-TEST_F(ShapeOptimizerTest, MultiStartKeepsTheBestConvergedStart) {
+TEST_F(ShapeOptimiserTest, MultiStartKeepsTheBestConvergedStart) {
   ShapeProblem problem(rod, target);
   const Vector6d guess = 0.3 * w_gen;
-  ShapeOptimizerOptions single;
+  ShapeOptimiserOptions single;
   const ShapeResult one = timed_optimise(problem, guess, single);
-  ShapeOptimizerOptions multi;
+  ShapeOptimiserOptions multi;
   multi.multi_starts = 3;
   const ShapeResult best = timed_optimise(problem, guess, multi);
   EXPECT_EQ(best.starts_tried, 4);
@@ -171,7 +171,7 @@ TEST_F(ShapeOptimizerTest, MultiStartKeepsTheBestConvergedStart) {
 
 // ---- (c) an active workspace constraint ---------------------------------------------------------
 
-TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
+TEST_F(ShapeOptimiserTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
   // Cut 1 cm off the unconstrained optimum's tip along the clamp-to-tip direction: nᵀ p ≤ offset.
   const Eigen::Vector3d tip = generated.p.back();
   const Eigen::Vector3d normal = tip.normalized();
@@ -179,7 +179,7 @@ TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
   Workspace workspace;
   workspace.half_spaces.push_back({normal, offset});
   ShapeProblem problem(rod, target, workspace);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
 
@@ -211,7 +211,7 @@ TEST_F(ShapeOptimizerTest, ActiveHalfSpaceHoldsWithAPositiveMultiplier) {
 
 // ---- (d) a grasp that cannot transmit m_x -------------------------------------------------------
 
-TEST_F(ShapeOptimizerTest, GraspWithoutMomentXGivesZeroTipMomentX) {
+TEST_F(ShapeOptimiserTest, GraspWithoutMomentXGivesZeroTipMomentX) {
   // The generating shape has a non-zero tip moment about its own x axis, so the constraint bites.
   const double mx_gen = (generated.R.back().transpose() * generated.m.back()).x();
   ASSERT_GT(std::abs(mx_gen), 1e-2);
@@ -219,7 +219,7 @@ TEST_F(ShapeOptimizerTest, GraspWithoutMomentXGivesZeroTipMomentX) {
   Grasp grasp;
   grasp.released[3] = true;
   ShapeProblem problem(rod, target, {}, grasp);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
   const RodConfiguration& c = solution.configuration;
@@ -229,7 +229,7 @@ TEST_F(ShapeOptimizerTest, GraspWithoutMomentXGivesZeroTipMomentX) {
 
 // ---- (e) a curvature limit ----------------------------------------------------------------------
 
-TEST_F(ShapeOptimizerTest, CurvatureLimitHoldsAtEveryNode) {
+TEST_F(ShapeOptimiserTest, CurvatureLimitHoldsAtEveryNode) {
   ShapeProblem free_problem(rod, target);
   const ShapeResult free = timed_optimise(free_problem, Vector6d::Zero());
   ASSERT_TRUE(free.converged()) << free.message;
@@ -238,7 +238,7 @@ TEST_F(ShapeOptimizerTest, CurvatureLimitHoldsAtEveryNode) {
   StrainLimits limits;
   limits.max_curvature = 0.8 * kappa_free;
   ShapeProblem problem(rod, target, {}, {}, limits);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   const ShapeResult solution = timed_optimise(problem, free.base_wrench.to_vector(), options);
   ASSERT_TRUE(solution.converged()) << solution.message;
   const double kappa2 = *limits.max_curvature * *limits.max_curvature;
@@ -253,9 +253,9 @@ TEST_F(ShapeOptimizerTest, CurvatureLimitHoldsAtEveryNode) {
 
 // ---- (f) statuses and options -------------------------------------------------------------------
 
-TEST_F(ShapeOptimizerTest, IterationLimitIsReported) {
+TEST_F(ShapeOptimiserTest, IterationLimitIsReported) {
   ShapeProblem problem(rod, target);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   options.max_iterations = 2;
   const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   EXPECT_EQ(solution.status, SolveStatus::IterationLimit) << solution.message;
@@ -264,12 +264,12 @@ TEST_F(ShapeOptimizerTest, IterationLimitIsReported) {
   EXPECT_EQ(solution.ipopt.iterations, 2);
 }
 
-TEST_F(ShapeOptimizerTest, UnreachableWorkspaceIsNeverConverged) {
+TEST_F(ShapeOptimiserTest, UnreachableWorkspaceIsNeverConverged) {
   // The tip must lie in a ball 1 m away: the 0.29 m band cannot reach it.
   Workspace workspace;
   workspace.inside.push_back({Eigen::Vector3d(0.0, 0.0, 1.0), 0.1});
   ShapeProblem problem(rod, target, workspace);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   options.max_iterations = 50;
   const ShapeResult solution = timed_optimise(problem, Vector6d::Zero(), options);
   EXPECT_NE(solution.status, SolveStatus::Converged) << solution.message;
@@ -277,7 +277,7 @@ TEST_F(ShapeOptimizerTest, UnreachableWorkspaceIsNeverConverged) {
   EXPECT_NE(solution.message.find(solution.ipopt.application_status_name), std::string::npos);
 }
 
-TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
+TEST_F(ShapeOptimiserTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
   // A box of ±2 cm around the generating tip and a curvature limit the generating shape nearly
   // meets: feasible, so some runs converge; cut short, others do not. Whatever the outcome,
   // "converged" must mean "feasible to constraint_tolerance", checked here on the returned
@@ -290,7 +290,7 @@ TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
   StrainLimits limits;
   limits.max_curvature = 0.9 * max_curvature(rod, generated);
   ShapeProblem problem(rod, target, workspace, {}, limits);
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   int converged = 0;
   for (int iterations : {3, 10, 300}) {
     options.max_iterations = iterations;
@@ -310,7 +310,7 @@ TEST_F(ShapeOptimizerTest, ConvergedImpliesFeasibleAcrossStartsAndLimits) {
   EXPECT_GE(converged, 1);
 }
 
-TEST_F(ShapeOptimizerTest, PrintsNothingAtPrintLevelZero) {
+TEST_F(ShapeOptimiserTest, PrintsNothingAtPrintLevelZero) {
   ShapeProblem problem(rod, target);
   ::testing::internal::CaptureStdout();
   const ShapeResult solution =
@@ -320,27 +320,27 @@ TEST_F(ShapeOptimizerTest, PrintsNothingAtPrintLevelZero) {
   EXPECT_EQ(printed, "");
 }
 
-TEST(ShapeOptimizerOptions, BadOptionsNameTheField) {
-  const auto message_of = [](const ShapeOptimizerOptions& options) {
+TEST(ShapeOptimiserOptions, BadOptionsNameTheField) {
+  const auto message_of = [](const ShapeOptimiserOptions& options) {
     return testing::input_error_message([&] { options.validate(); });
   };
-  ShapeOptimizerOptions options;
+  ShapeOptimiserOptions options;
   EXPECT_EQ(message_of(options), "");
   options.max_iterations = -1;
-  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.max_iterations"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimiserOptions.max_iterations"), std::string::npos);
   options = {};
   options.tolerance = 0.0;
-  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.tolerance"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimiserOptions.tolerance"), std::string::npos);
   options = {};
   options.constraint_tolerance = std::nan("");
-  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.constraint_tolerance"),
+  EXPECT_NE(message_of(options).find("ShapeOptimiserOptions.constraint_tolerance"),
             std::string::npos);
   options = {};
   options.multi_starts = -2;
-  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.multi_starts"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimiserOptions.multi_starts"), std::string::npos);
   options = {};
   options.print_level = 13;
-  EXPECT_NE(message_of(options).find("ShapeOptimizerOptions.print_level"), std::string::npos);
+  EXPECT_NE(message_of(options).find("ShapeOptimiserOptions.print_level"), std::string::npos);
 
   // optimise_shape validates before touching IPOPT.
   ShapeTarget target;
