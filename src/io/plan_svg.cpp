@@ -232,13 +232,8 @@ std::string millimetres(double metres) {
   return out.str();
 }
 
-}  // namespace
-
-std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
-  const PlanProblem& request = task.problem;
-  const int n = static_cast<int>(plan.steps.size());
-
-  // Everything drawn decides the view.
+/// Everything drawn decides the view.
+std::vector<Eigen::Vector3d> drawn_points(const PlanResult& plan, const PlanProblem& request) {
   std::vector<Eigen::Vector3d> all = request.target.points;
   all.push_back(request.rod.clamp.position);
   all.insert(all.end(), plan.initial_configuration.p.begin(), plan.initial_configuration.p.end());
@@ -247,16 +242,12 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
                step.solution.configuration.p.end());
     all.insert(all.end(), step.objective_points.begin(), step.objective_points.end());
   }
-  Canvas canvas(fit_view(all));
-  std::ostringstream& out = canvas.out();
+  return all;
+}
 
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(kWidth)
-      << "\" height=\"" << px(kHeight) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(kHeight)
-      << "\">\n";
-  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-
-  // Title: what, and how it went.
+/// Title: what, and how it went.
+void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask& task) {
+  const int n = static_cast<int>(plan.steps.size());
   std::ostringstream title;
   title << "rodshape plan: " << task.source << " \u2014 " << to_string(plan.status) << ", " << n
         << " steps (" << task.options.steps << " requested";
@@ -275,7 +266,13 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
         << "font-size=\"12\" fill=\"" << kTargetColour << "\">" << escaped(plan.message)
         << "</text>\n";
   }
+}
 
+/// Three orthographic projections: the initial rod, every step's rod and objective points, the
+/// target points and the clamp.
+void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& request) {
+  std::ostringstream& out = canvas.out();
+  const int n = static_cast<int>(plan.steps.size());
   const std::array<Panel, 3> panels = {{
       {0, 2, kLeft, kTop, "front: x\u2013z"},
       {1, 2, kLeft + kPanel + kGap, kTop, "side: y\u2013z"},
@@ -298,8 +295,10 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
     canvas.clamp(panel, request.rod.clamp.position);
     out << "</g>\n";
   }
+}
 
-  // Legend.
+void draw_legend(Canvas& canvas, int n) {
+  std::ostringstream& out = canvas.out();
   const double top = kTop + kPanel + 52;
   const double left = kLeft;
   out << "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#222\">\n";
@@ -338,6 +337,21 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
   out << "<text x=\"" << px(left) << "\" y=\"" << px(row3 + 4) << "\" fill=\"#555\">"
       << "Orthographic projections, one scale in all panels; grid and labels in metres.</text>\n";
   out << "</g>\n";
+}
+
+}  // namespace
+
+std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
+  Canvas canvas(fit_view(drawn_points(plan, task.problem)));
+  std::ostringstream& out = canvas.out();
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(kWidth)
+      << "\" height=\"" << px(kHeight) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(kHeight)
+      << "\">\n";
+  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  draw_title(out, plan, task);
+  draw_panels(canvas, plan, task.problem);
+  draw_legend(canvas, static_cast<int>(plan.steps.size()));
   out << "</svg>\n";
   return out.str();
 }

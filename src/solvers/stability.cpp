@@ -94,50 +94,49 @@ class JacobianBetweenNodes {
   const ScaledJacobian& scaled_;
 };
 
-}  // namespace
-
-StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+void check_configuration(const ClampedRod& rod, const RodConfiguration& c) {
   if (c.derivatives != Derivatives::AllNodes || static_cast<int>(c.dp_dw.size()) != c.nodes())
     throw InputError(
         "assess_stability needs a configuration integrated with Derivatives::AllNodes");
   if (c.nodes() != rod.nodes())
     throw InputError("assess_stability: the configuration has " + std::to_string(c.nodes()) +
                      " nodes, the rod " + std::to_string(rod.nodes()));
+}
 
-  const ScaledJacobian scaled_jacobian(rod.properties, c.R[0]);
+/// σ_min and det of the scaled Jacobian J̃(s_i) at every node (index 0 unused: J̃(0) = 0).
+struct NodeJacobians {
+  std::vector<double> sigma, det;
+};
+
+NodeJacobians node_jacobians(const RodConfiguration& c, const ScaledJacobian& scaled_jacobian) {
   const int N = c.nodes() - 1;
-  std::vector<double> sigma(N + 1, 0.0), det(N + 1, 0.0);
+  NodeJacobians nodes{std::vector<double>(N + 1, 0.0), std::vector<double>(N + 1, 0.0)};
   for (int i = 1; i <= N; ++i) {
     const Matrix6d J = scaled_jacobian(c.dp_dw[i], c.dtheta_dw[i], c.R[i], c.s[i]);
-    sigma[i] = smallest_singular_value(J);
-    det[i] = J.determinant();
+    nodes.sigma[i] = smallest_singular_value(J);
+    nodes.det[i] = J.determinant();
   }
+  return nodes;
+}
 
-  StabilityResult report;
-  report.tip_singular_value = sigma[N];
-  report.min_singular_value = *std::min_element(sigma.begin() + 1, sigma.end());
-  int singular_nodes = 0;
-  for (int i = 1; i <= N; ++i) singular_nodes += sigma[i] <= kConjugateTolerance;
-  if (2 * singular_nodes > N) {
-    report.degenerate = true;  // (stable stays false)
-    return report;
-  }
-
-  const JacobianBetweenNodes between(rod, c, scaled_jacobian);
-  const auto sigma_at = [&](int i, double s) { return smallest_singular_value(between.at(i, s)); };
-  std::optional<double> conjugate;
-
-  // 1. det J̃ > 0 near s = 0 (J̃ → I for a Cosserat rod); a change from positive to non-positive
-  //    between nodes i-1 and i is a conjugate point: bisect on the sign. Near s = 0 the det of a
-  //    curved Kirchhoff rod is of high order in s (its axial compliance vanishes) and one step may
-  //    not resolve its sign, so the test is armed only once det J̃ has been positive at a node.
-  int armed_at = 0;  // the first node with det J̃ > 0
+/// 1. det J̃ > 0 near s = 0 (J̃ → I for a Cosserat rod); a change from positive to non-positive
+///    between nodes i-1 and i is a conjugate point: bisect on the sign. Near s = 0 the det of a
+///    curved Kirchhoff rod is of high order in s (its axial compliance vanishes) and one step may
+///    not resolve its sign, so the test is armed only once det J̃ has been positive at a node.
+///    Returns the first node with det J̃ > 0 (0: never, the test cannot decide).
+int sign_change_test(const ClampedRod& rod,
+                     const RodConfiguration& c,
+                     const NodeJacobians& nodes,
+                     const JacobianBetweenNodes& between,
+                     std::optional<double>& conjugate) {
+  const int N = c.nodes() - 1;
+  int armed_at = 0;
   for (int i = 1; i <= N && !conjugate; ++i) {
     if (armed_at == 0) {
-      if (det[i] > 0.0) armed_at = i;
+      if (nodes.det[i] > 0.0) armed_at = i;
       continue;
     }
-    if (det[i] > 0.0) continue;
+    if (nodes.det[i] > 0.0) continue;
     double a = c.s[i - 1], b = c.s[i];
     for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
       const double mid = 0.5 * (a + b);
@@ -145,15 +144,44 @@ StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& 
     }
     conjugate = 0.5 * (a + b);
   }
-  if (armed_at == 0) {         // det J̃ never positive: the test cannot decide
-    report.degenerate = true;  // (stable stays false)
-    return report;
-  }
+  return armed_at;
+}
 
-  // 2. A local minimum of σ_min at a node: golden-section search on (s_{i-1}, s_{i+1}) for a root
-  //    that keeps the sign of det (a double root, as when EIx = EIy), or two roots within one
-  //    interval.
-  //    Only after the test is armed: before, J̃ is not resolved (and σ_min may grow from 0).
+/// Golden-section search for the least σ_min of J̃ on (a, b), interpolated from node `from`.
+/// Returns (s, σ) at the least value found.
+std::pair<double, double> least_sigma(
+    const ClampedRod& rod, const JacobianBetweenNodes& between, int from, double a, double b) {
+  const auto sigma_at = [&](double s) { return smallest_singular_value(between.at(from, s)); };
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+  double f1 = sigma_at(x1), f2 = sigma_at(x2);
+  for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
+    if (f1 < f2) {
+      b = x2, x2 = x1, f2 = f1;
+      x1 = b - golden * (b - a);
+      f1 = sigma_at(x1);
+    } else {
+      a = x1, x1 = x2, f1 = f2;
+      x2 = a + golden * (b - a);
+      f2 = sigma_at(x2);
+    }
+  }
+  return f1 < f2 ? std::pair{x1, f1} : std::pair{x2, f2};
+}
+
+/// 2. A local minimum of σ_min at a node: golden-section search on (s_{i-1}, s_{i+1}) for a root
+///    that keeps the sign of det (a double root, as when EIx = EIy), or two roots within one
+///    interval. Only after the test is armed: before, J̃ is not resolved (and σ_min may grow
+///    from 0).
+void minimum_test(const ClampedRod& rod,
+                  const RodConfiguration& c,
+                  const NodeJacobians& nodes,
+                  const JacobianBetweenNodes& between,
+                  int armed_at,
+                  StabilityResult& report,
+                  std::optional<double>& conjugate) {
+  const int N = c.nodes() - 1;
+  const std::vector<double>& sigma = nodes.sigma;
   for (int i = armed_at + 1; i <= N && !conjugate; ++i) {
     const bool left_ok = sigma[i] <= sigma[i - 1];
     const bool right_ok = i == N || sigma[i] <= sigma[i + 1];
@@ -166,27 +194,39 @@ StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& 
       conjugate = c.s[i];
       break;
     }
-    const int from = i - 1;
-    double a = c.s[i - 1];
-    double b = i == N ? c.s[N] : c.s[i + 1];
-    const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-    double f1 = sigma_at(from, x1), f2 = sigma_at(from, x2);
-    for (int k = 0; k < 60 && b - a > 1e-12 * rod.properties.length; ++k) {
-      if (f1 < f2) {
-        b = x2, x2 = x1, f2 = f1;
-        x1 = b - golden * (b - a);
-        f1 = sigma_at(from, x1);
-      } else {
-        a = x1, x1 = x2, f1 = f2;
-        x2 = a + golden * (b - a);
-        f2 = sigma_at(from, x2);
-      }
-    }
-    const double f_min = std::min(f1, f2);
+    const auto [s_min, f_min] =
+        least_sigma(rod, between, i - 1, c.s[i - 1], i == N ? c.s[N] : c.s[i + 1]);
     report.min_singular_value = std::min(report.min_singular_value, f_min);
-    if (f_min <= kConjugateTolerance * scale) conjugate = f1 < f2 ? x1 : x2;
+    if (f_min <= kConjugateTolerance * scale) conjugate = s_min;
   }
+}
+
+}  // namespace
+
+StabilityResult assess_stability(const ClampedRod& rod, const RodConfiguration& c) {
+  check_configuration(rod, c);
+  const ScaledJacobian scaled_jacobian(rod.properties, c.R[0]);
+  const NodeJacobians nodes = node_jacobians(c, scaled_jacobian);
+  const int N = c.nodes() - 1;
+
+  StabilityResult report;
+  report.tip_singular_value = nodes.sigma[N];
+  report.min_singular_value = *std::min_element(nodes.sigma.begin() + 1, nodes.sigma.end());
+  int singular_nodes = 0;
+  for (int i = 1; i <= N; ++i) singular_nodes += nodes.sigma[i] <= kConjugateTolerance;
+  if (2 * singular_nodes > N) {
+    report.degenerate = true;  // (stable stays false)
+    return report;
+  }
+
+  const JacobianBetweenNodes between(rod, c, scaled_jacobian);
+  std::optional<double> conjugate;
+  const int armed_at = sign_change_test(rod, c, nodes, between, conjugate);
+  if (armed_at == 0) {         // det J̃ never positive: the test cannot decide
+    report.degenerate = true;  // (stable stays false)
+    return report;
+  }
+  minimum_test(rod, c, nodes, between, armed_at, report, conjugate);
 
   report.conjugate_point_s = conjugate;
   report.stable = !conjugate.has_value();
