@@ -34,6 +34,10 @@ int report_status(const std::string& task_path, const PlanResult& result) {
       std::cerr << "error: " << task_path
                 << ": infeasible target: " << fields_in_task_names(result.message) << "\n";
       return kBadInput;
+    case PlanStatus::SnapThrough:
+      std::cerr << "error: " << task_path
+                << ": snap-through: " << fields_in_task_names(result.message) << "\n";
+      return kPartialPlan;
     case PlanStatus::Partial:
       std::cerr << "error: " << task_path
                 << ": partial plan: " << fields_in_task_names(result.message) << "; wrote the "

@@ -128,6 +128,10 @@ Json tracking_object(const TrackingResult& tracking) {
       {"jump", tracking.jump},
       {"jump_step", tracking.jump_step >= 0 ? Json(tracking.jump_step + 1) : Json(nullptr)},
       {"refinements", tracking.refinements},
+      {"energy_released",
+       tracking.energy_released ? json_number(*tracking.energy_released) : Json(nullptr)},
+      {"peak_energy", json_number(tracking.peak_energy)},
+      {"peak_curvature", json_number(tracking.peak_curvature)},
       {"note", tracking.note},
   };
 }

@@ -138,11 +138,21 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
   return result;
 }
 
+namespace {
+
+ObjectiveInterpolation read_interpolation(const YamlField& field) {
+  const std::string name = field.choice({"shape", "arc_length", "projection"});
+  if (name == "projection") return ObjectiveInterpolation::Projection;
+  return name == "arc_length" ? ObjectiveInterpolation::ArcLength : ObjectiveInterpolation::Shape;
+}
+
+}  // namespace
+
 void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) {
-  trajectory.expect_mapping(
-      {"steps", "max_linear_speed", "max_angular_speed", "max_linear_acceleration",
-       "max_angular_acceleration", "rate", "track", "tracking_substeps", "max_refinements"},
-      {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
+  trajectory.expect_mapping({"steps", "max_linear_speed", "max_angular_speed",
+                             "max_linear_acceleration", "max_angular_acceleration", "rate", "track",
+                             "tracking_substeps", "max_refinements", "interpolation"},
+                            {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
   read_integer(trajectory, "steps", options.steps);
   EndEffectorLimits& limits = options.end_effector;
   read_number(trajectory, "max_linear_speed", limits.max_linear_speed);
@@ -154,6 +164,8 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
     options.track_between_waypoints = track.boolean();
   read_integer(trajectory, "tracking_substeps", options.tracking_substeps);
   read_integer(trajectory, "max_refinements", options.max_refinements);
+  if (const YamlField interpolation = trajectory.get("interpolation"); interpolation.present())
+    options.interpolation = read_interpolation(interpolation);
 }
 
 void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options) {

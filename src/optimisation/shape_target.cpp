@@ -114,6 +114,7 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
     }
   }
   const int n = static_cast<int>(data.size());
+  result.arc_lengths.assign(target.points.size(), 0.0);
   if (n < 2) return result;  // every point is at the clamp: length 0
   Eigen::Matrix3Xd points(3, n);
   for (int j = 0; j < n; ++j) points.col(j) = data[j];
@@ -137,12 +138,17 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
     if (c <= a) continue;
     length += spline_length(spline, a, c);
     while (next_data < n && parameters(next_data) <= c) {
+      result.arc_lengths[static_cast<std::size_t>(owner[next_data])] = length;
       if (first_beyond < 0 && length > result.reach * (1.0 + kSplineLengthSlack))
         first_beyond = owner[next_data];
       ++next_data;
     }
   }
   result.curve_length = length;
+  // A point that repeats the one before it (dropped from the spline) is where that one is.
+  for (std::size_t i = 1; i < target.points.size(); ++i)
+    if ((target.points[i] - target.points[i - 1]).norm() <= repeat)
+      result.arc_lengths[i] = result.arc_lengths[i - 1];
   if (result.feasible && first_beyond >= 0) {
     result.feasible = false;
     result.offending_point = first_beyond;

@@ -2,6 +2,8 @@
 // conditions (see follow_equilibrium.hpp).
 #include "rodshape/solvers/follow_equilibrium.hpp"
 
+#include "rodshape/core/strain_extremes.hpp"
+
 #include <algorithm>
 #include <sstream>
 
@@ -136,6 +138,7 @@ bool accept(const ClampedRod& rod,
                       solved.configuration.tip(),
                       solved.configuration.tip_wrench(),
                       solved.configuration.energy,
+                      strain_extremes(rod.properties, solved.configuration).max_curvature,
                       solved.summary,
                       std::nullopt};
   if (options.stability_every_substep)

@@ -2,6 +2,7 @@
 // (plan_stages.hpp) and, with an arm, the re-plan loop around them (arm_replanning.hpp).
 #include "rodshape/trajectory/plan.hpp"
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -40,10 +41,24 @@ void PlanProblem::validate() const {
   }
 }
 
+std::string to_string(ObjectiveInterpolation interpolation) {
+  switch (interpolation) {
+    case ObjectiveInterpolation::Shape:
+      return "shape";
+    case ObjectiveInterpolation::ArcLength:
+      return "arc_length";
+    case ObjectiveInterpolation::Projection:
+      return "projection";
+  }
+  return "unknown";
+}
+
 std::string to_string(PlanStatus status) {
   switch (status) {
     case PlanStatus::Complete:
       return "complete";
+    case PlanStatus::SnapThrough:
+      return "snap_through";
     case PlanStatus::Partial:
       return "partial";
     case PlanStatus::Infeasible:
@@ -65,7 +80,17 @@ std::string PlanResult::brief(int steps_requested) const {
     out << ", final max distance " << std::setprecision(3) << cost.max_distance * 1e3
         << " mm, energy " << std::setprecision(3) << cost.energy << " J";
   }
-  if (tracking.performed && tracking.jump) out << "; tracking: " << tracking.note;
+  if (tracking.performed) {
+    out << "; tracked peak energy " << std::setprecision(3) << tracking.peak_energy << " J";
+    if (completed > 0) {
+      const double initial = initial_configuration.energy;
+      const double final = steps.back().solution.configuration.energy;
+      const double larger = std::max(initial, final);
+      if (larger > 0.0)
+        out << " (" << std::setprecision(3) << tracking.peak_energy / larger << "×)";
+    }
+    if (tracking.jump) out << "; tracking: " << tracking.note;
+  }
   if (arm && arm->shell) {
     out << "; reach shell " << std::setprecision(3) << arm->shell->inner_radius << "–"
         << arm->shell->outer_radius << " m";
@@ -87,6 +112,7 @@ using namespace plan_stages;
 
 /// Where the steps loop stands: the sets to plan, the tracked rod, the warm-start history.
 struct StepLoop {
+  ObjectivePath path;
   std::vector<ObjectiveSet> pending;
   StepHistory history;
   Pose from;             // the last waypoint (the tracked rod's end-effector pose)
@@ -124,8 +150,7 @@ bool plan_steps(const PlanProblem& problem,
       const SegmentTracking segment =
           track_segment(problem, options, loop.from, loop.tracked, step, number);
       if (segment.jump && result.tracking.refinements < options.max_refinements) {
-        const ObjectiveSet half =
-            halfway_set(result.initial_points, problem.target.points, loop.history.f_last, set);
+        const ObjectiveSet half = halfway_set(loop.path, loop.history.f_last, set);
         loop.pending.insert(loop.pending.begin() + static_cast<std::ptrdiff_t>(next), half);
         ++result.tracking.refinements;
         continue;
@@ -168,9 +193,12 @@ PlanResult plan_rod(const PlanProblem& problem,
     return result;
   }
   // 3. p_init on the initial shape, and the sets.
-  result.initial_points = project_onto_initial_shape(initial.configuration, problem.target.points);
+  result.initial_points =
+      plan_stages::initial_points(problem, options, initial, result.feasibility);
   StepLoop loop;
-  loop.pending = objective_sets(result.initial_points, problem.target.points, options.steps);
+  loop.path = {problem.rod.clamp.position, result.initial_points, problem.target.points,
+               options.interpolation};
+  loop.pending = objective_sets(loop.path, options.steps);
   loop.history.last = loop.history.before = initial.wrench;
   loop.from = initial_end_effector;
   loop.tracked = initial.wrench;
@@ -181,6 +209,11 @@ PlanResult plan_rod(const PlanProblem& problem,
     result.message = "complete: " + std::to_string(result.steps.size()) + " steps";
   if (result.tracking.performed && !result.tracking.jump)
     result.tracking.note = tracking_note(result.tracking);
+  if (result.status == PlanStatus::Complete && result.tracking.jump) {
+    result.status = PlanStatus::SnapThrough;
+    result.message = "the rod would not follow the plan towards waypoint " +
+                     std::to_string(result.tracking.jump_step + 1) + ": " + result.tracking.note;
+  }
   // 7. The timed end-effector path through the waypoints.
   result.end_effector_path =
       time_waypoints(initial_end_effector, result.steps, options.end_effector);

@@ -96,13 +96,30 @@ InitialEquilibrium initial_equilibrium(const PlanProblem& problem) {
   return initial;
 }
 
-std::vector<ObjectiveSet> objective_sets(const PointSet& initial,
-                                         const PointSet& objective,
-                                         int steps) {
+PointSet initial_points(const PlanProblem& problem,
+                        const PlanOptions& options,
+                        const InitialEquilibrium& initial,
+                        const FeasibilityResult& feasibility) {
+  if (options.interpolation == ObjectiveInterpolation::Projection)
+    return project_onto_initial_shape(initial.configuration, problem.target.points);
+  if (initial.configuration.derivatives == Derivatives::AllNodes)
+    return points_at_arc_lengths(problem.rod, initial.configuration, feasibility.arc_lengths);
+  return points_at_arc_lengths(problem.rod,
+                               integrate(problem.rod, initial.wrench, Derivatives::AllNodes),
+                               feasibility.arc_lengths);
+}
+
+PointSet ObjectivePath::at(double fraction) const {
+  if (interpolation == ObjectiveInterpolation::Shape)
+    return turned_objective_set(clamp, initial, objective, fraction);
+  return objective_set(initial, objective, fraction);
+}
+
+std::vector<ObjectiveSet> objective_sets(const ObjectivePath& path, int steps) {
   std::vector<ObjectiveSet> sets;
-  for (int i = 1; i <= steps; ++i) {  // as intermediate_targets() makes them
+  for (int i = 1; i <= steps; ++i) {
     const double f = static_cast<double>(i) / steps;
-    sets.push_back({f, objective_set(initial, objective, f), false});
+    sets.push_back({f, path.at(f), false});
   }
   return sets;
 }
@@ -174,6 +191,10 @@ SegmentTracking track_segment(const PlanProblem& problem,
                                                    &step.solution.configuration, kJumpDeviation);
   SegmentTracking segment;
   segment.jump = !followed.followed();
+  for (const FollowedState& state : followed.states) {
+    segment.peak_energy = std::max(segment.peak_energy, state.energy);
+    segment.peak_curvature = std::max(segment.peak_curvature, state.max_curvature);
+  }
   if (followed.event == FollowEvent::Lost) {
     segment.deviation = std::numeric_limits<double>::infinity();
     segment.note = "the equilibrium could not be followed towards waypoint " +
@@ -183,11 +204,13 @@ SegmentTracking track_segment(const PlanProblem& problem,
   }
   segment.arrived = followed.base_wrench;
   segment.deviation = followed.arrival_deviation;
-  if (followed.event == FollowEvent::OtherBranch)
+  if (followed.event == FollowEvent::OtherBranch) {
+    segment.energy_released = step.solution.configuration.energy - followed.configuration.energy;
     segment.note = "on arrival at waypoint " + std::to_string(waypoint) + " the tracked rod is " +
                    std::to_string(segment.deviation) +
-                   " m from the planned shape: it jumped to another equilibrium";
-  else if (followed.event == FollowEvent::Unstable)
+                   " m from the planned shape: it jumped to another equilibrium (" +
+                   std::to_string(*segment.energy_released) + " J released)";
+  } else if (followed.event == FollowEvent::Unstable)
     segment.note =
         "the tracked equilibrium at waypoint " + std::to_string(waypoint) + " is unstable";
   return segment;
@@ -197,19 +220,19 @@ void record(TrackingResult& tracking, const SegmentTracking& segment, int step_i
   tracking.performed = true;
   tracking.arrival_deviation.push_back(segment.deviation);
   tracking.max_deviation = std::max(tracking.max_deviation, segment.deviation);
+  tracking.peak_energy = std::max(tracking.peak_energy, segment.peak_energy);
+  tracking.peak_curvature = std::max(tracking.peak_curvature, segment.peak_curvature);
   if (segment.jump && !tracking.jump) {
     tracking.jump = true;
     tracking.jump_step = step_index;
+    tracking.energy_released = segment.energy_released;
     tracking.note = segment.note;
   }
 }
 
-ObjectiveSet halfway_set(const PointSet& initial,
-                         const PointSet& objective,
-                         double f_last,
-                         const ObjectiveSet& set) {
+ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const ObjectiveSet& set) {
   const double half = 0.5 * (f_last + set.fraction);
-  return {half, objective_set(initial, objective, half), true};
+  return {half, path.at(half), true};
 }
 
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,

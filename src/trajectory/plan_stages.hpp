@@ -9,6 +9,7 @@
 //   7. time_waypoints        the end-effector waypoints timed for quasi-static motion
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,21 @@ struct ObjectiveSet {
   PointSet points;
   bool inserted = false;
 };
+/// p_init: the objective points' starts on the initial shape (PlanOptions::interpolation).
+PointSet initial_points(const PlanProblem& problem,
+                        const PlanOptions& options,
+                        const InitialEquilibrium& initial,
+                        const FeasibilityResult& feasibility);
+/// The way the objective points go from p_init (f = 0) to p_obj (f = 1).
+struct ObjectivePath {
+  Eigen::Vector3d clamp = Eigen::Vector3d::Zero();
+  PointSet initial, objective;
+  ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
+  /// Shape: turned_objective_set; else objective_set (straight lines).
+  PointSet at(double fraction) const;
+};
 /// The n_inter sets, f = i / n_inter, i = 1 … n_inter (the last is p_obj itself).
-std::vector<ObjectiveSet> objective_sets(const PointSet& initial,
-                                         const PointSet& objective,
-                                         int steps);
+std::vector<ObjectiveSet> objective_sets(const ObjectivePath& path, int steps);
 
 /// 4. The start of a step's optimisation: the last optimum w, or (from the third step on) the
 /// secant extrapolation of the last two optima to the new fraction when its cost is lower (the
@@ -67,8 +79,11 @@ ShapeResult optimise_step(const PlanProblem& problem,
 /// on the way is a jump.
 struct SegmentTracking {
   bool jump = false;
-  double deviation = 0.0;  // on arrival, from the planned shape (∞ when lost on the way)
-  BaseWrench arrived;      // the tracked base wrench on arrival
+  double deviation = 0.0;       // on arrival, from the planned shape (∞ when lost on the way)
+  BaseWrench arrived;           // the tracked base wrench on arrival
+  double peak_energy = 0.0;     // over the followed substeps, J
+  double peak_curvature = 0.0;  // over the followed substeps, 1/m
+  std::optional<double> energy_released;  // on another branch: planned minus arrived energy, J
   std::string note;
 };
 SegmentTracking track_segment(const PlanProblem& problem,
@@ -81,10 +96,7 @@ SegmentTracking track_segment(const PlanProblem& problem,
 void record(TrackingResult& tracking, const SegmentTracking& segment, int step_index);
 
 /// 6. The set halfway between fraction f_last and `set`'s, to be planned before it.
-ObjectiveSet halfway_set(const PointSet& initial,
-                         const PointSet& objective,
-                         double f_last,
-                         const ObjectiveSet& set);
+ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const ObjectiveSet& set);
 
 /// 7. The timed end-effector path from the initial pose through every step's waypoint.
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,

@@ -162,7 +162,8 @@ TEST_F(CliPlan, CompletePlanWritesPlanTrajectoryAndPicture) {
   EXPECT_EQ(path["waypoints"].size(), 2u);
   const Json& tracking = j["tracking"];
   for (const char* key :
-       {"performed", "arrival_deviation", "max_deviation", "jump", "jump_step", "note"})
+       {"performed", "arrival_deviation", "max_deviation", "jump", "jump_step", "refinements",
+        "energy_released", "peak_energy", "peak_curvature", "note"})
     EXPECT_TRUE(tracking.contains(key)) << key;
   EXPECT_EQ(tracking["performed"], true);
 
@@ -286,6 +287,31 @@ TEST_F(CliPlan, FailedStepExitsThreeAndWritesAPartialPlan) {
   EXPECT_TRUE(fs::exists(outdir / "trajectory.csv"));
   EXPECT_TRUE(fs::exists(outdir / "plan.svg"));
   expect_configuration(j["initial"], 51);
+}
+
+// The C arc with the paper's objective sets (projection): every step succeeds, but the tracked rod
+// would jump even after the refinements. That is a defect with its own status and exit code 3.
+TEST_F(CliPlan, SnapThroughExitsThreeWithItsOwnStatus) {
+  std::string text = read_file(fs::path(RODSHAPE_SOURCE_DIR) / "examples" / "plan_c_arc.yaml");
+  const std::string steps = "  steps: 7";
+  const std::size_t at = text.find(steps);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at, "  interpolation: projection\n");
+  const fs::path task = write_task("c_arc_projection.yaml", text);
+  const fs::path outdir = directory_ / "snap";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  expect_one_line(result.err);
+  EXPECT_EQ(result.err.rfind("error: " + task.string() + ": snap-through: ", 0), 0u) << result.err;
+  EXPECT_NE(result.err.find("towards waypoint"), std::string::npos) << result.err;
+  const Json j = Json::parse(read_file(outdir / "plan.json"));
+  EXPECT_EQ(j["status"], "snap_through");
+  EXPECT_TRUE(j["tracking"]["jump"].get<bool>());
+  EXPECT_TRUE(j["tracking"]["jump_step"].is_number_integer());
+  EXPECT_GT(j["tracking"]["peak_energy"].get<double>(), 0.0);
+  EXPECT_GT(j["tracking"]["peak_curvature"].get<double>(), 0.0);
+  EXPECT_TRUE(j["reason"].is_string());
+  EXPECT_TRUE(fs::exists(outdir / "trajectory.csv"));  // the plan is still written, to be looked at
 }
 
 TEST_F(CliPlan, OutputDirectoryThatIsAFileIsBadInput) {

@@ -300,12 +300,13 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     if (!name.starts_with("plan_") || entry.path().extension() != ".yaml") continue;
     SCOPED_TRACE(name);
     const PlanTask task = read_plan_task(entry.path().string());
-    EXPECT_EQ(task.problem.target.points.size(), 10u);
+    // Ten points, as the paper's markers, except the hook over part of the band.
+    EXPECT_EQ(task.problem.target.points.size(), name == "plan_partial_hook.yaml" ? 5u : 10u);
     EXPECT_EQ(task.options.steps, 7);
     EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_"));
     ++count;
   }
-  EXPECT_EQ(count, 8);
+  EXPECT_EQ(count, 9);
 }
 
 // ---- the robot section --------------------------------------------------------------------------

@@ -175,10 +175,13 @@ namespace {
 TEST(PlanResult, RefinementInsertsHalfwayStepsUpToTheLimit) {
   PlanTask task =
       read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_lifted_bend.yaml");
+  // The paper's objective sets: with them this rod jumps (test_gentle_plan.cpp: not by default).
+  task.options.interpolation = ObjectiveInterpolation::Projection;
   for (int limit : {0, 2}) {
     task.options.max_refinements = limit;
     const PlanResult plan = rodshape::plan(task.problem, task.options);
-    ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+    // It still jumps after the refinements: every step succeeded, but the plan is a defect.
+    ASSERT_EQ(plan.status, PlanStatus::SnapThrough) << plan.message;
     EXPECT_LE(plan.tracking.refinements, limit);
     EXPECT_EQ(static_cast<int>(plan.steps.size()), task.options.steps + plan.tracking.refinements);
     double previous = 0.0;

@@ -34,6 +34,9 @@ struct FeasibilityResult {
   int offending_point = -1;   // index into ShapeTarget::points, or -1
   double curve_length = 0.0;  // length of the fitted spline from the clamp to the last point
   double reach = 0.0;         // L times the largest stretch the model allows (Kirchhoff: L)
+  /// Per target point, the spline's length from the clamp to it, m: the arc length the point has
+  /// on the target curve (0 for points at the clamp; computed also when infeasible).
+  std::vector<double> arc_lengths;
   /// "feasible (spline 0.27 m of a reach of 0.29 m)" or "infeasible: <reason>".
   std::string brief() const;
 };

@@ -69,6 +69,7 @@ struct FollowedState {
   Pose tip;                                  // the rod's tip pose
   Wrench tip_wrench;                         // n(L), m(L)
   double energy = 0.0;                       // J
+  double max_curvature = 0.0;                // max over nodes of |(u_x, u_y)|, 1/m
   ShootingSummary solve;                     // this substep's direct solve
   std::optional<StabilityResult> stability;  // when stability_every_substep
 };

@@ -8,11 +8,21 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 
 namespace rodshape {
 
 using PointSet = std::vector<Eigen::Vector3d>;
+
+/// The initial rod's point at each arc length (clamped to [0, L]): p_init by arc length, the
+/// point of the initial rod that is the same material point as the objective point is on the
+/// target (its arc length on the target curve, FeasibilityResult::arc_lengths). Between nodes,
+/// the rod is integrated from the node before (pose_between_nodes), so `initial` must carry
+/// Derivatives::AllNodes; throws InputError otherwise.
+PointSet points_at_arc_lengths(const ClampedRod& rod,
+                               const RodConfiguration& initial,
+                               const std::vector<double>& arc_lengths);
 
 /// The closest point of the initial curve Γ_0 to each objective point (continuous in s).
 PointSet project_onto_initial_shape(const RodConfiguration& initial, const PointSet& objective);
@@ -20,6 +30,17 @@ PointSet project_onto_initial_shape(const RodConfiguration& initial, const Point
 /// p_init + fraction (p_obj - p_init); exactly p_obj when fraction is 1. Throws InputError when
 /// the two sets differ in size.
 PointSet objective_set(const PointSet& initial, const PointSet& objective, double fraction);
+
+/// The chain clamp → p_1 → … → p_n bent from `initial` to `objective`: link j (from the point
+/// before, the clamp for j = 1) keeps its direction turned by `fraction` of the rotation that
+/// takes its initial direction to its target one (the least rotation, slerp), and its length is
+/// interpolated linearly; the points are the chain's joints. Exactly `objective` when fraction is
+/// 1, `initial` when 0. A link of zero length at either end is interpolated linearly. Throws
+/// InputError when the two sets differ in size.
+PointSet turned_objective_set(const Eigen::Vector3d& clamp,
+                              const PointSet& initial,
+                              const PointSet& objective,
+                              double fraction);
 
 /// The n_inter intermediate sets, objective_set(i / n_inter) for i = 1 … n_inter; throws InputError
 /// ("trajectory.steps") when n_inter < 1 and when the two sets differ in size.

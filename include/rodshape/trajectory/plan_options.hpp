@@ -3,6 +3,8 @@
 // only when the problem has an arm) the reach shell and the re-plans.
 #pragma once
 
+#include <string>
+
 #include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
@@ -23,8 +25,27 @@ struct ArmPlanOptions {
   void validate() const;
 };
 
+/// Where each objective point starts (p_init), from which the sets move in straight lines to p_obj.
+enum class ObjectiveInterpolation {
+  /// p_init is the initial rod's point at the arc length the objective point has on the target
+  /// curve (FeasibilityResult::arc_lengths), so each point is carried by the same material
+  /// point; the chain clamp → p_1 → … → p_n is bent from its initial to its target shape, each
+  /// link turned by a fraction of its rotation and its length interpolated
+  /// (turned_objective_set): every set is a chain of about the rod's length, and the bending
+  /// grows steadily instead of crowding the points together on the way.
+  Shape,
+  /// p_init by arc length as for Shape, then straight lines to p_obj.
+  ArcLength,
+  /// The paper's: p_init is the objective point's projection on the initial shape, then straight
+  /// lines to p_obj.
+  Projection,
+};
+/// "shape", "arc_length", "projection"
+std::string to_string(ObjectiveInterpolation interpolation);
+
 struct PlanOptions {
   int steps = 7;  // n_inter
+  ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
   ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;
   bool track_between_waypoints = true;

@@ -19,8 +19,12 @@
 
 namespace rodshape {
 
-enum class PlanStatus { Complete, Partial, Infeasible };
-std::string to_string(PlanStatus status);  // "complete", "partial", "infeasible"
+/// Complete: every step succeeded and the tracked rod follows the plan (when tracked).
+/// SnapThrough: every step succeeded, but the tracked rod would jump between two waypoints even
+/// after the refinements allowed (TrackingResult says where and the energy released): a plan
+/// defect, not a success. Partial: a step's optimisation failed. Infeasible: no step was tried.
+enum class PlanStatus { Complete, SnapThrough, Partial, Infeasible };
+std::string to_string(PlanStatus status);  // "complete", "snap_through", "partial", "infeasible"
 
 struct PlanStep {
   double fraction = 1.0;  // the objective set is p_init + fraction (p_obj - p_init)
@@ -42,6 +46,14 @@ struct TrackingResult {
   bool jump = false;
   int jump_step = -1;   // the waypoint being approached when it happened
   int refinements = 0;  // steps inserted by plan() to avoid jumps
+  /// At the jump: the energy of the planned shape at the waypoint minus that of the equilibrium
+  /// the rod went to (J; > 0: released in the snap). Unknown (nullopt) when the rod was lost on the
+  /// way, or without a jump.
+  std::optional<double> energy_released;
+  /// Gentleness: the largest elastic energy (J) and bending curvature |(u_x, u_y)| (1/m) of the
+  /// tracked rod over every substep of every segment (0 when not tracked).
+  double peak_energy = 0.0;
+  double peak_curvature = 0.0;
   std::string note;
   std::string brief() const { return note; }
 };
