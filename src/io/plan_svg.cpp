@@ -258,6 +258,8 @@ void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask&
     title << "; final max distance " << millimetres(last.cost.max_distance) << ", energy "
           << std::setprecision(3) << last.cost.energy << " J";
   }
+  if (plan.tracking.performed)
+    title << "; tracked peak energy " << std::setprecision(3) << plan.tracking.peak_energy << " J";
   out << "<text x=\"" << px(kLeft - 40) << "\" y=\"24\" font-family=\"sans-serif\" "
       << "font-size=\"15\" font-weight=\"bold\" fill=\"#111\">" << escaped(title.str())
       << "</text>\n";

@@ -87,7 +87,8 @@ std::string PlanResult::brief(int steps_requested) const {
       const double final = steps.back().solution.configuration.energy;
       const double larger = std::max(initial, final);
       if (larger > 0.0)
-        out << " (" << std::setprecision(3) << tracking.peak_energy / larger << "×)";
+        out << " (" << std::fixed << std::setprecision(2) << tracking.peak_energy / larger
+            << std::defaultfloat << "× the larger end energy)";
     }
     if (tracking.jump) out << "; tracking: " << tracking.note;
   }
