@@ -1,20 +1,16 @@
 // equilibrium_command.cpp: solve the rod a task file describes and write the result as JSON.
-//   task file -> EquilibriumTask (io) -> solve_equilibrium, assess_stability (solvers) -> JSON (io)
+//   task file -> EquilibriumTask (io) -> analyse_equilibrium (solvers) -> JSON (io)
 #include "equilibrium_command.hpp"
 
 #include <iostream>
-#include <optional>
 #include <string>
-#include <variant>
 
 #include "exit_code.hpp"
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
-#include "rodshape/solvers/model_validity.hpp"
-#include "rodshape/solvers/shooting_solver.hpp"
-#include "rodshape/solvers/stability.hpp"
+#include "rodshape/solvers/equilibrium_analysis.hpp"
 
 namespace rodshape::cli {
 
@@ -46,39 +42,20 @@ class EquilibriumCommand final : public Command {
   int run() override {
     const EquilibriumTask task = read_equilibrium_task(task_path_);
 
-    // The stability test needs the derivatives at every node.
-    ShootingOptions options = task.options;
-    options.output_derivatives = Derivatives::AllNodes;
-
-    const ShootingResult solution =
-        solve_equilibrium(task.rod, task.tip, task.initial_wrench, options);
-    const ShootingSummary& summary = solution.summary;
-    ClampedRod solved_rod = task.rod;  // with the sub-steps the solver needed
-    solved_rod.substeps = summary.substeps;
-
-    std::optional<StabilityResult> stability;
-    if (summary.converged()) {
-      // A pose the user holds the tip at must not ask the model for more than it can say.
-      if (!std::holds_alternative<FreeTip>(task.tip)) {
-        try {
-          check_model_validity(solved_rod.properties, solution.configuration, options.strain_limits,
-                               "ClampedTip.pose", "ShootingOptions.strain_limits");
-        } catch (const InputError& error) {
-          throw InputError(task_path_ + ": " + in_task_names(error));
-        }
-      }
-      stability = assess_stability(solved_rod, solution.configuration, task.tip);
+    EquilibriumAnalysis analysis;
+    try {
+      analysis = analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options);
+    } catch (const InputError& error) {  // a held pose beyond the model's validity
+      throw InputError(task_path_ + ": " + in_task_names(error));
     }
-
-    const std::string json = equilibrium_result_json(solution, stability, solved_rod);
+    const ShootingSummary& summary = analysis.solution.summary;
+    const std::string json = equilibrium_result_json(analysis);
     if (output_path_.empty() || output_path_ == "-") {
       if (!quiet_) write_to_standard_output(json);
     } else {
       write_file_atomically(output_path_, json);
       if (!quiet_) {
-        std::cout << task_path_ << ": " << summary.brief();
-        if (stability) std::cout << (stability->stable ? ", stable" : ", unstable");
-        std::cout << "; wrote " << output_path_ << "\n";
+        std::cout << task_path_ << ": " << analysis.brief() << "; wrote " << output_path_ << "\n";
       }
     }
 

@@ -234,6 +234,8 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
           ? io_detail::configuration_json(plan.initial_configuration, plan.initial_wrench,
                                           std::nullopt, properties)
           : Json(nullptr);
+  result["initial_stable_search"] =
+      plan.initial_stable_search ? Json(*plan.initial_stable_search) : Json(nullptr);
   result["initial_points"] = json_vectors(plan.initial_points);
   Json steps = Json::array();
   for (std::size_t k = 0; k < plan.steps.size(); ++k)

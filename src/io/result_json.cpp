@@ -10,10 +10,13 @@
 
 namespace rodshape {
 
-std::string equilibrium_result_json(const ShootingResult& solution,
-                                    const std::optional<StabilityResult>& stability,
-                                    const ClampedRod& rod) {
-  using io_detail::Json;
+namespace {
+
+using io_detail::Json;
+
+Json result_document(const ShootingResult& solution,
+                     const std::optional<StabilityResult>& stability,
+                     const ClampedRod& rod) {
   const ShootingSummary& summary = solution.summary;
 
   Json result;
@@ -29,6 +32,31 @@ std::string equilibrium_result_json(const ShootingResult& solution,
   result["substeps"] = summary.substeps;
   result.update(io_detail::configuration_json(solution.configuration, solution.base_wrench,
                                               stability, rod.properties));
+  return result;
+}
+
+Json stable_search_json(const std::optional<StableEquilibriumResult>& search,
+                        double solved_energy) {
+  if (!search) return nullptr;
+  Json j;
+  j["found"] = search->found;
+  j["solves"] = search->solves;
+  j["message"] = search->message;
+  j["solved_energy"] = io_detail::json_number(solved_energy);
+  return j;
+}
+
+}  // namespace
+
+std::string equilibrium_result_json(const ShootingResult& solution,
+                                    const std::optional<StabilityResult>& stability,
+                                    const ClampedRod& rod) {
+  return io_detail::format_json(result_document(solution, stability, rod));
+}
+
+std::string equilibrium_result_json(const EquilibriumAnalysis& analysis) {
+  Json result = result_document(analysis.solution, analysis.stability, analysis.rod);
+  result["stable_search"] = stable_search_json(analysis.stable_search, analysis.solved_energy);
   return io_detail::format_json(result);
 }
 

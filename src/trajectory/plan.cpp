@@ -183,6 +183,7 @@ PlanResult plan_rod(const PlanProblem& problem,
   PlanResult result;
   result.initial_wrench = initial.wrench;
   result.initial_configuration = initial.configuration;
+  result.initial_stable_search = initial.stable_search;
   const Pose initial_end_effector =
       compose(initial.configuration.tip(), problem.grasp.tip_to_end_effector);
   // 2. Is the target within reach at all?

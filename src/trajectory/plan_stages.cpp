@@ -10,6 +10,8 @@
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
+#include "rodshape/solvers/stability.hpp"
+#include "rodshape/solvers/stable_equilibrium.hpp"
 
 namespace rodshape::plan_stages {
 
@@ -45,18 +47,29 @@ void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialSt
 
 /// The equilibrium held at `tip`, solved from rest (with continuation).
 InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip) {
-  const ShootingResult solved = solve_equilibrium(problem.rod, held_tip(tip, problem.grasp));
+  const TipCondition held = held_tip(tip, problem.grasp);
+  ShootingOptions options;
+  options.output_derivatives = Derivatives::AllNodes;  // for the stability test
+  ShootingResult solved = solve_equilibrium(problem.rod, held, BaseWrench{}, options);
   if (!solved.summary.converged())
     throw InputError("PlanProblem.initial.tip",
                      ": no equilibrium holds the rod there (" + solved.summary.brief() + ")");
   check_model_validity(problem.rod.properties, solved.configuration, problem.validity,
                        "PlanProblem.initial.tip", "PlanProblem.validity");
-  return {solved.base_wrench, solved.configuration};
+  // A cold solve may land on an unstable equilibrium the real rod would not rest in.
+  ClampedRod at = problem.rod;
+  at.substeps = solved.summary.substeps;
+  const StabilityResult verdict = assess_stability(at, solved.configuration, held);
+  if (verdict.stable) return {solved.base_wrench, solved.configuration, std::nullopt};
+  StableEquilibriumResult search =
+      seek_stable_equilibrium(problem.rod, held, solved, verdict, options);
+  if (search.found) solved = std::move(search.solution);
+  return {solved.base_wrench, solved.configuration, search.message};
 }
 
 /// The equilibrium of a given base wrench; the released grasp axes must carry no tip wrench.
 InitialEquilibrium given_equilibrium(const PlanProblem& problem, const BaseWrench& w) {
-  InitialEquilibrium initial{w, integrate(problem.rod, w, Derivatives::AllNodes)};
+  InitialEquilibrium initial{w, integrate(problem.rod, w, Derivatives::AllNodes), std::nullopt};
   const Vector6d tip_wrench = initial.configuration.tip_wrench().to_vector();
   const double tolerance = ShootingOptions{}.residual_tolerance;
   for (int k = 0; k < 6; ++k) {

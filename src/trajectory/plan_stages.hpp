@@ -29,6 +29,8 @@ TipCondition held_tip(const Pose& tip, const Grasp& grasp);
 struct InitialEquilibrium {
   BaseWrench wrench;
   RodConfiguration configuration;
+  /// For a held tip whose cold solve was unstable: what the search for a stable one did.
+  std::optional<std::string> stable_search;
 };
 InitialEquilibrium initial_equilibrium(const PlanProblem& problem);
 

@@ -9,6 +9,7 @@
 #include "support/cli_runner.hpp"
 #include "support/task_text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -202,6 +203,38 @@ TEST_F(Cli, FreeTipHasAStabilityVerdict) {
   // The wire sags: its tip is below the clamp, and the tip carries no load.
   EXPECT_LT(j["tip"]["position"][2].get<double>(), 1.0);
   for (const Json& c : j["tip_wrench"]["force"]) EXPECT_NEAR(c.get<double>(), 0.0, 1e-9);
+}
+
+TEST_F(Cli, AnUnstableHeldEquilibriumIsReplacedByAStableOne) {
+  // Issue 9: the band with its tip 0.204 m from the clamp, not turned. The cold solve converges to
+  // the planar S, which is unstable; the command seeks a stable equilibrium with the same ends and
+  // returns it, saying what it did.
+  const Outcome result = run("equilibrium " + quoted(kExamples + "/compressed_band.yaml"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const Json j = Json::parse(result.out);
+  EXPECT_EQ(j["status"], "converged");
+  EXPECT_EQ(j["stable"], true);
+  const Json& search = j["stable_search"];
+  ASSERT_TRUE(search.is_object());
+  EXPECT_EQ(search["found"], true);
+  EXPECT_GT(search["solves"].get<int>(), 0);
+  EXPECT_NE(search["message"].get<std::string>().find("stable one"), std::string::npos);
+  EXPECT_LT(j["energy"].get<double>(), search["solved_energy"].get<double>());
+  // The held ends are those of the task, to the solver's tolerance.
+  EXPECT_NEAR(j["tip"]["position"][0].get<double>(), 0.04, 1e-8);
+  EXPECT_NEAR(j["tip"]["position"][2].get<double>(), 0.20, 1e-8);
+  double lateral = 0.0;
+  for (const Json& p : j["nodes"]["position"])
+    lateral = std::max(lateral, std::abs(p[1].get<double>()));
+  EXPECT_GT(lateral, 1e-3);  // out of the plane of the S
+}
+
+TEST_F(Cli, AStableEquilibriumHasNoStableSearch) {
+  const Outcome result = run("equilibrium " + quoted(kExamples + "/rubber_band.yaml"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const Json j = Json::parse(result.out);
+  EXPECT_EQ(j["stable"], true);
+  EXPECT_TRUE(j["stable_search"].is_null());
 }
 
 TEST_F(Cli, NonConvergenceExitsThreeAndStillWritesTheWholeResult) {

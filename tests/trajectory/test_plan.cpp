@@ -3,6 +3,7 @@
 // plan in a benign case and a jump to another branch is detected in a case built to have one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -70,6 +71,37 @@ TEST(PlanResult, ReachesPointsSampledFromAnEquilibriumAndTheRodFollows) {
   EXPECT_FALSE(plan.tracking.jump) << plan.tracking.note;
   EXPECT_EQ(plan.tracking.arrival_deviation.size(), plan.steps.size());
   EXPECT_LE(plan.tracking.max_deviation, 1e-6);
+}
+
+TEST(PlanResult, AHeldStartThatIsUnstableBecomesAStableOne) {
+  // Issue 9: a plan that starts with the band held 0.204 m from the clamp, not turned. The cold
+  // solve lands on the planar, unstable S; the plan starts from the stable, out-of-plane
+  // equilibrium with the same ends, and says so.
+  PlanProblem request = bend_request();
+  Pose held;
+  held.position = {0.04, 0.0, 0.20};
+  request.initial = InitialState::held_at(held);
+  PlanOptions options;
+  options.steps = 1;
+  const PlanResult plan = rodshape::plan(request, options);
+  ASSERT_TRUE(plan.initial_stable_search.has_value());
+  EXPECT_NE(plan.initial_stable_search->find("stable one"), std::string::npos)
+      << *plan.initial_stable_search;
+  EXPECT_LE((plan.initial_configuration.tip().position - held.position).norm(), 1e-9);
+  double lateral = 0.0;
+  for (const Eigen::Vector3d& p : plan.initial_configuration.p)
+    lateral = std::max(lateral, std::abs(p.y()));
+  EXPECT_GT(lateral, 1e-3);
+}
+
+TEST(PlanResult, AStableHeldStartIsKept) {
+  PlanProblem request = bend_request();
+  request.initial =
+      InitialState::held_at(integrate(request.rod, {{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}}).tip());
+  PlanOptions options;
+  options.steps = 1;
+  const PlanResult plan = rodshape::plan(request, options);
+  EXPECT_FALSE(plan.initial_stable_search.has_value()) << *plan.initial_stable_search;
 }
 
 TEST(PlanResult, PointOutOfReachIsInfeasibleNamingIt) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/solvers/equilibrium_analysis.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 
@@ -16,5 +17,9 @@ namespace rodshape {
 std::string equilibrium_result_json(const ShootingResult& solution,
                                     const std::optional<StabilityResult>& stability,
                                     const ClampedRod& rod);
+/// The document for an analysed equilibrium (what `rodshape equilibrium` writes): as above, plus
+/// `stable_search`: null when no search was made, else {found, solves, message, solved_energy}
+/// (the energy of the solve's own, unstable equilibrium, J).
+std::string equilibrium_result_json(const EquilibriumAnalysis& analysis);
 
 }  // namespace rodshape

@@ -94,6 +94,10 @@ struct PlanResult {
   FeasibilityResult feasibility;  // of the target, for this rod (Infeasible: why not)
   BaseWrench initial_wrench;
   RodConfiguration initial_configuration;
+  /// When the rod starts held at a tip pose whose cold solve was unstable: what the search for a
+  /// stable equilibrium did (seek_stable_equilibrium's message); the plan starts from the stable
+  /// one when found.
+  std::optional<std::string> initial_stable_search;
   PointSet initial_points;      // p_init: the objective points projected on the initial shape
   std::vector<PlanStep> steps;  // the steps that succeeded
   std::vector<TimedPose> end_effector_path;
