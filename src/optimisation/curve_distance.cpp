@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -46,16 +47,23 @@ HermiteSegment segment_of(const RodConfiguration& c, int i) {
   return HermiteSegment(c.p[i], c.p[i + 1], h * (c.R[i] * c.v[i]), h * (c.R[i + 1] * c.v[i + 1]));
 }
 
-/// A lower bound on min_t |H(t) - p|: the distance to the bounding ball of the control points.
-double distance_lower_bound(const RodConfiguration& c, int i, const Eigen::Vector3d& point) {
+/// The ball around the control points b0 = p_i, b1 = p_i + h p'_i/3, b2 = p_{i+1} - h p'_{i+1}/3,
+/// b3 = p_{i+1}: centred at their mean, through the farthest.
+IntervalBall ball_of(const RodConfiguration& c, int i) {
   const double h = c.s[i + 1] - c.s[i];
   const std::array<Eigen::Vector3d, 4> b = {c.p[i], c.p[i] + (h / 3.0) * (c.R[i] * c.v[i]),
                                             c.p[i + 1] - (h / 3.0) * (c.R[i + 1] * c.v[i + 1]),
                                             c.p[i + 1]};
-  const Eigen::Vector3d center = 0.25 * (b[0] + b[1] + b[2] + b[3]);
-  double radius = 0.0;
-  for (const Eigen::Vector3d& corner : b) radius = std::max(radius, (corner - center).norm());
-  return std::max(0.0, (point - center).norm() - radius);
+  IntervalBall ball;
+  ball.center = 0.25 * (b[0] + b[1] + b[2] + b[3]);
+  for (const Eigen::Vector3d& corner : b)
+    ball.radius = std::max(ball.radius, (corner - ball.center).norm());
+  return ball;
+}
+
+/// A lower bound on min_t |H(t) - p|: the distance to the interval's ball.
+double distance_lower_bound(const IntervalBall& ball, const Eigen::Vector3d& point) {
+  return std::max(0.0, (point - ball.center).norm() - ball.radius);
 }
 
 struct LocalMinimum {
@@ -99,43 +107,69 @@ LocalMinimum minimise_on_segment(const HermiteSegment& H, const Eigen::Vector3d&
 
 }  // namespace
 
-CurveProjection project_onto_curve(const RodConfiguration& configuration,
-                                   const Eigen::Vector3d& point) {
-  const RodConfiguration& c = configuration;
+void interval_balls(const RodConfiguration& configuration, std::vector<IntervalBall>& balls) {
+  const int intervals = std::max(configuration.nodes() - 1, 0);
+  balls.resize(static_cast<std::size_t>(intervals));
+  for (int i = 0; i < intervals; ++i)
+    balls[static_cast<std::size_t>(i)] = ball_of(configuration, i);
+}
+
+namespace {
+
+/// Upper bound: the nearest node, as a projection with t = 0 (or 1 at the tip).
+CurveProjection nearest_node(const RodConfiguration& c, const Eigen::Vector3d& point) {
   const int intervals = c.nodes() - 1;
   CurveProjection result;
-  // Upper bound: the nearest node.
-  double best = std::numeric_limits<double>::infinity();
+  result.distance = std::numeric_limits<double>::infinity();
   for (int i = 0; i < c.nodes(); ++i) {
     const double d = (c.p[i] - point).norm();
-    if (d < best) {
-      best = d;
+    if (d < result.distance) {
+      result.distance = d;
       result.interval = std::min(i, std::max(intervals - 1, 0));
       result.t = i > result.interval ? 1.0 : 0.0;
       result.closest = c.p[i];
     }
   }
-  if (intervals < 1) {
-    result.distance = best;
-    return result;
-  }
-  // Every interval whose bounding ball comes closer than the best distance so far.
+  return result;
+}
+
+/// Every interval whose ball (from `ball_at`) comes closer than the best distance so far is
+/// searched.
+template <typename BallAt>
+CurveProjection project(const RodConfiguration& c, const Eigen::Vector3d& point, BallAt ball_at) {
+  const int intervals = c.nodes() - 1;
+  CurveProjection result = nearest_node(c, point);
+  if (intervals < 1) return result;
   for (int i = 0; i < intervals; ++i) {
-    if (distance_lower_bound(c, i, point) >= best) continue;
+    if (distance_lower_bound(ball_at(i), point) >= result.distance) continue;
     const HermiteSegment H = segment_of(c, i);
     const LocalMinimum local = minimise_on_segment(H, point);
     const double d = std::sqrt(local.squared);
-    if (d < best) {
-      best = d;
+    if (d < result.distance) {
+      result.distance = d;
       result.interval = i;
       result.t = local.t;
       result.closest = H.value(local.t);
     }
   }
-  result.distance = best;
   const int i = result.interval;
   result.s = c.s[i] + result.t * (c.s[i + 1] - c.s[i]);
   return result;
+}
+
+}  // namespace
+
+CurveProjection project_onto_curve(const RodConfiguration& configuration,
+                                   const Eigen::Vector3d& point) {
+  return project(configuration, point, [&](int i) { return ball_of(configuration, i); });
+}
+
+CurveProjection project_onto_curve(const RodConfiguration& configuration,
+                                   const Eigen::Vector3d& point,
+                                   const std::vector<IntervalBall>& balls) {
+  assert(balls.size() + 1 == static_cast<std::size_t>(std::max(configuration.nodes(), 1)));
+  return project(configuration, point,
+                 [&](int i) -> const IntervalBall& { return balls[static_cast<std::size_t>(i)]; });
 }
 
 namespace {

@@ -103,6 +103,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   configuration_.resize(nodes, Derivatives::AllNodes);
   const std::size_t points = target_.points.size();
   projections_.resize(points);
+  balls_.resize(static_cast<std::size_t>(rod_.intervals));
   breakdown_.distances.assign(points, 0.0);
   g_ = Eigen::VectorXd::Zero(constraint_count_);
   dg_dw_ = Eigen::MatrixXd::Zero(constraint_count_, 6);
@@ -140,9 +141,10 @@ void ShapeProblem::evaluate_cost() {
   cost_gradient_ = (W1 / L) * c.denergy_dw.transpose();
   double distance_term = 0.0;
   breakdown_.max_distance = 0.0;
+  interval_balls(c, balls_);  // once for all the points
   for (std::size_t k = 0; k < target_.points.size(); ++k) {
     const Eigen::Vector3d& point = target_.points[k];
-    projections_[k] = project_onto_curve(c, point);
+    projections_[k] = project_onto_curve(c, point, balls_);
     const double d = projections_[k].distance;
     breakdown_.distances[k] = d;
     breakdown_.max_distance = std::max(breakdown_.max_distance, d);

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <vector>
 
 #include "optimisation/optimisation_fixtures.hpp"
 #include "rodshape/core/rod_integrator.hpp"
@@ -159,6 +160,33 @@ TEST(CurveDistance, FindsTheGlobalMinimumNearARodThatCurlsBack) {
     EXPECT_GE(found.distance, reference - sampling) << "point " << q.transpose();
     EXPECT_TRUE(CompareMatrices(found.closest,
                                 testing::hermite_point(helix, found.interval, found.t), 1e-15));
+  }
+}
+
+TEST(CurveDistance, PrecomputedBallsGiveTheSameProjection) {
+  // The balls computed once per configuration (the optimiser's path) must change nothing: the
+  // same intervals are searched, so the projections are bit for bit those computed point by point.
+  ClampedRod rod;
+  const RodConfiguration helix = make_helix(rod);
+  std::vector<IntervalBall> balls;
+  interval_balls(helix, balls);
+  ASSERT_EQ(balls.size(), static_cast<std::size_t>(rod.intervals));
+  std::mt19937 rng(20261125);
+  std::uniform_real_distribution<double> box(-0.12, 0.12), up(-0.05, 0.2);
+  for (int k = 0; k < 200; ++k) {
+    const Eigen::Vector3d q(box(rng), box(rng), up(rng));
+    const CurveProjection one = project_onto_curve(helix, q);
+    const CurveProjection shared = project_onto_curve(helix, q, balls);
+    EXPECT_EQ(one.distance, shared.distance);
+    EXPECT_EQ(one.interval, shared.interval);
+    EXPECT_EQ(one.t, shared.t);
+    EXPECT_EQ(one.s, shared.s);
+  }
+  // Every node lies in its intervals' balls (the segment's ends are control points).
+  for (int i = 0; i < rod.intervals; ++i) {
+    const IntervalBall& ball = balls[static_cast<std::size_t>(i)];
+    EXPECT_LE((helix.p[i] - ball.center).norm(), ball.radius * (1 + 1e-15));
+    EXPECT_LE((helix.p[i + 1] - ball.center).norm(), ball.radius * (1 + 1e-15));
   }
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
@@ -18,9 +19,23 @@ struct CurveProjection {
   double distance = 0.0;                              // |Γ(s) - p|
 };
 
+/// The bounding ball of one interval's Bézier control points: the segment of Γ lies inside it.
+struct IntervalBall {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+
+/// The ball of every interval of `configuration`, into `balls` (resized to the intervals; no
+/// allocation when its capacity suffices). Computed once per configuration, they serve every point.
+void interval_balls(const RodConfiguration& configuration, std::vector<IntervalBall>& balls);
+
 /// The global minimiser of |Γ(s) - p| over s ∈ [0, L].
 CurveProjection project_onto_curve(const RodConfiguration& configuration,
                                    const Eigen::Vector3d& point);
+/// The same, with the balls of interval_balls(configuration) given (several points, one curve).
+CurveProjection project_onto_curve(const RodConfiguration& configuration,
+                                   const Eigen::Vector3d& point,
+                                   const std::vector<IntervalBall>& balls);
 
 /// d dist(Γ, p) / dw by the envelope argument: the closest point moves with the curve, but at an
 /// interior minimum (Γ(s) - p) ⟂ Γ'(s), so d dist/dw = (Γ(s) - p)ᵀ/dist · dΓ(s)/dw at fixed s,

@@ -90,6 +90,7 @@ class ShapeProblem {
   Vector6d w_ = Vector6d::Zero();
   RodConfiguration configuration_;
   std::vector<CurveProjection> projections_;
+  std::vector<IntervalBall> balls_;  // of the current configuration
   ShapeCostBreakdown breakdown_;
   Vector6d cost_gradient_ = Vector6d::Zero();
   Eigen::VectorXd g_;
