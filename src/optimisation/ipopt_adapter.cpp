@@ -6,6 +6,9 @@
 
 #include "optimisation/ipopt_nlp.hpp"
 
+#include <memory>
+#include <optional>
+
 namespace rodshape::detail {
 
 namespace {
@@ -88,6 +91,28 @@ IpoptSession::IpoptSession(const ShapeOptimiserOptions& options, bool finite_dif
 }
 
 IpoptSession::~IpoptSession() = default;
+
+IpoptSession& IpoptSession::for_this_thread(const ShapeOptimiserOptions& options,
+                                            bool finite_difference_hessian) {
+  struct Cached {
+    ShapeOptimiserOptions options;
+    bool finite_difference_hessian;
+    std::unique_ptr<IpoptSession> session;
+  };
+  thread_local std::optional<Cached> cached;
+  // What apply_options() reads.
+  const auto same = [&](const Cached& c) {
+    return c.finite_difference_hessian == finite_difference_hessian &&
+           c.options.max_iterations == options.max_iterations &&
+           c.options.tolerance == options.tolerance &&
+           c.options.constraint_tolerance == options.constraint_tolerance &&
+           c.options.print_level == options.print_level;
+  };
+  if (!cached || !same(*cached))
+    cached = Cached{options, finite_difference_hessian,
+                    std::make_unique<IpoptSession>(options, finite_difference_hessian)};
+  return *cached->session;
+}
 
 IpoptRun IpoptSession::run(ShapeProblem& problem, const Vector6d& start) {
   Ipopt::IpoptApplication& app = *application_->app;

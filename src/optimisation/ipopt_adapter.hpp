@@ -35,6 +35,13 @@ class IpoptSession {
   IpoptSession(const IpoptSession&) = delete;
   IpoptSession& operator=(const IpoptSession&) = delete;
 
+  /// This thread's session for `options` (a plan's steps share one): made anew when the options
+  /// IPOPT sees differ from the last call's. An IpoptApplication costs ~150 µs to make (it
+  /// registers several hundred options), a tenth of a typical step; one run does not change what
+  /// the next computes (OptimizeTNLP builds its algorithm afresh).
+  static IpoptSession& for_this_thread(const ShapeOptimiserOptions& options,
+                                       bool finite_difference_hessian);
+
   /// Set when IPOPT could not be initialised (run() must not be called then): its status.
   const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 

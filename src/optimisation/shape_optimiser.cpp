@@ -159,7 +159,8 @@ ShapeResult optimise_shape(ShapeProblem& problem,
   detail::require_finite("guess", w0);
 
   ShapeResult solution;
-  IpoptSession session(options, uses_finite_difference_hessian(options, problem));
+  IpoptSession& session =
+      IpoptSession::for_this_thread(options, uses_finite_difference_hessian(options, problem));
   if (const auto& failure = session.initialisation_failure()) {
     solution.status = failure->status;
     solution.message = "IPOPT initialisation failed: " + failure->details.application_status_name;

@@ -154,6 +154,26 @@ TEST_F(ShapeOptimiserTest, RecoversAKnownEquilibriumFromAZeroGuess) {
   EXPECT_EQ(solution.starts_tried, 1);
 }
 
+TEST_F(ShapeOptimiserTest, ARunDoesNotChangeTheNext) {
+  // The thread's IPOPT session is reused while the options stay the same: a solve after another,
+  // different one (constrained, other options in between) is bit for bit a first solve.
+  ShapeProblem problem(rod, target);
+  const ShapeResult first = optimise_shape(problem, BaseWrench{});
+  ShapeOptimiserOptions other;
+  other.tolerance = 1e-6;
+  StrainLimits limits;
+  limits.max_curvature = 5.0;
+  ShapeProblem constrained(rod, target, {}, {}, limits);
+  (void)optimise_shape(constrained, BaseWrench::from_vector(0.5 * w_gen));
+  (void)optimise_shape(constrained, BaseWrench::from_vector(0.5 * w_gen), other);
+  (void)optimise_shape(problem, BaseWrench::from_vector(0.5 * w_gen));
+  ShapeProblem fresh(rod, target);
+  const ShapeResult again = optimise_shape(fresh, BaseWrench{});
+  EXPECT_EQ(again.ipopt.iterations, first.ipopt.iterations);
+  EXPECT_EQ(again.base_wrench.to_vector(), first.base_wrench.to_vector());
+  EXPECT_EQ(again.cost.cost, first.cost.cost);
+}
+
 TEST_F(ShapeOptimiserTest, MultiStartKeepsTheBestConvergedStart) {
   ShapeProblem problem(rod, target);
   const Vector6d guess = 0.3 * w_gen;
