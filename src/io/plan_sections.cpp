@@ -169,13 +169,15 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
 }
 
 void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options) {
-  optimizer.expect_mapping(
-      {"max_iterations", "tolerance", "constraint_tolerance", "multi_starts", "print_level"});
+  optimizer.expect_mapping({"max_iterations", "tolerance", "constraint_tolerance", "multi_starts",
+                            "print_level", "confine_to_scale"});
   read_integer(optimizer, "max_iterations", options.max_iterations);
   read_number(optimizer, "tolerance", options.tolerance);
   read_number(optimizer, "constraint_tolerance", options.constraint_tolerance);
   read_integer(optimizer, "multi_starts", options.multi_starts);
   read_integer(optimizer, "print_level", options.print_level);
+  if (const YamlField confine = optimizer.get("confine_to_scale"); confine.present())
+    options.confine_to_scale = confine.boolean();
 }
 
 void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {

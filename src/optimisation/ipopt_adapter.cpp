@@ -114,9 +114,11 @@ IpoptSession& IpoptSession::for_this_thread(const ShapeOptimiserOptions& options
   return *cached->session;
 }
 
-IpoptRun IpoptSession::run(ShapeProblem& problem, const Vector6d& start) {
+IpoptRun IpoptSession::run(ShapeProblem& problem,
+                           const Vector6d& start,
+                           const std::optional<WrenchBounds>& admissible) {
   Ipopt::IpoptApplication& app = *application_->app;
-  auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_);
+  auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_, admissible);
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
   IpoptRun run = with_status(app.OptimizeTNLP(owner));
   const NlpOutcome& outcome = nlp->outcome();
@@ -128,6 +130,7 @@ IpoptRun IpoptSession::run(ShapeProblem& problem, const Vector6d& start) {
   run.details.constraint_multipliers = outcome.constraint_multipliers;
   run.details.lower_bound_multipliers = outcome.lower_bound_multipliers;
   run.details.upper_bound_multipliers = outcome.upper_bound_multipliers;
+  run.details.beyond_scale = outcome.stopped_beyond_scale();
   return run;
 }
 

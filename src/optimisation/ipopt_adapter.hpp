@@ -45,8 +45,11 @@ class IpoptSession {
   /// Set when IPOPT could not be initialised (run() must not be called then): its status.
   const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 
-  /// Optimises `problem` from `start`; the problem is left evaluated at some iterate.
-  IpoptRun run(ShapeProblem& problem, const Vector6d& start);
+  /// Optimises `problem` from `start` (F not evaluated outside `admissible`, when given); the
+  /// problem is left evaluated at some iterate.
+  IpoptRun run(ShapeProblem& problem,
+               const Vector6d& start,
+               const std::optional<WrenchBounds>& admissible = std::nullopt);
 
  private:
   struct Application;

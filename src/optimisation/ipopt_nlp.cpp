@@ -106,11 +106,15 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
 
 // ---- the NLP ------------------------------------------------------------------------------------
 
-ShapeNlp::ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian)
+ShapeNlp::ShapeNlp(ShapeProblem& problem,
+                   const Vector6d& start,
+                   bool finite_difference_hessian,
+                   const std::optional<WrenchBounds>& admissible)
     : problem_(problem),
       start_(start),
       rows_(problem.constraint_count()),
-      finite_difference_hessian_(finite_difference_hessian) {
+      finite_difference_hessian_(finite_difference_hessian),
+      admissible_(admissible) {
   outcome_.w = start;
   outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
 }
@@ -170,11 +174,21 @@ bool ShapeNlp::get_starting_point(Ipopt::Index n,
   return true;
 }
 
+bool ShapeNlp::admissible(const Vector6d& w) const {
+  if (!admissible_) return true;
+  return (w.array() >= admissible_->lower.array()).all() &&
+         (w.array() <= admissible_->upper.array()).all();
+}
+
 bool ShapeNlp::evaluate_at(const Ipopt::Number* x) {
   // IPOPT's new_x says whether x changed since the last call; ShapeProblem::evaluate() is a no-op
   // at the last w anyway, so it is called every time: one 6-vector comparison buys independence
   // from the hint (the derivative checker, for one, moves x between calls).
   const Vector6d w = Eigen::Map<const Vector6d>(x);
+  if (!admissible(w)) {
+    ++outcome_.refusals;
+    return false;
+  }
   problem_.evaluate(w);
   return std::isfinite(problem_.cost()) && problem_.cost_gradient().allFinite() &&
          problem_.constraints().allFinite() && problem_.constraint_jacobian().allFinite();
@@ -311,7 +325,9 @@ bool ShapeNlp::intermediate_callback(Ipopt::AlgorithmMode /*mode*/,
                                      const Ipopt::IpoptData* /*ip_data*/,
                                      Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) {
   outcome_.iterations = iter;
-  return true;  // never ask IPOPT to stop
+  // Steps cut back at the admissible box again and again: the optimum lies beyond it, and IPOPT
+  // would spend its iteration limit creeping towards the box's face.
+  return !outcome_.stopped_beyond_scale();
 }
 
 void ShapeNlp::finalize_solution(Ipopt::SolverReturn status,

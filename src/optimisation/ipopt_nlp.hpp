@@ -10,6 +10,8 @@
 // limited-memory (L-BFGS) approximation when ShapeOptimiserOptions::hessian says so.
 #pragma once
 
+#include <optional>
+
 #include <IpIpoptApplication.hpp>
 #include <IpTNLP.hpp>
 #include <string>
@@ -44,13 +46,23 @@ struct NlpOutcome {
   Vector6d lower_bound_multipliers = Vector6d::Zero();  // z_L ≥ 0
   Vector6d upper_bound_multipliers = Vector6d::Zero();  // z_U ≥ 0
   int iterations = 0;  // last iteration number reported by intermediate_callback()
+  /// Trial points refused for lying outside the admissible box; at kMaxRefusals IPOPT is asked to
+  /// stop (User_Requested_Stop): the optimum lies beyond the rod's scale.
+  int refusals = 0;
+  static constexpr int kMaxRefusals = 20;
+  bool stopped_beyond_scale() const { return refusals >= kMaxRefusals; }
 };
 
 class ShapeNlp final : public Ipopt::TNLP {
  public:
   /// Infinite bounds are given to IPOPT as ±kIpoptInfinity (apply_options sets its
   /// nlp_lower/upper_bound_inf to that).
-  ShapeNlp(ShapeProblem& problem, const Vector6d& start, bool finite_difference_hessian);
+  /// With `admissible`, F is not evaluated outside it (eval_* return false: IPOPT cuts the step
+  /// back); `start` must lie inside.
+  ShapeNlp(ShapeProblem& problem,
+           const Vector6d& start,
+           bool finite_difference_hessian,
+           const std::optional<WrenchBounds>& admissible = std::nullopt);
 
   const NlpOutcome& outcome() const { return outcome_; }
 
@@ -139,12 +151,15 @@ class ShapeNlp final : public Ipopt::TNLP {
   /// Evaluates the problem at x; false when F, ∇F, g or dg/dw is not finite (IPOPT then cuts the
   /// step back instead of using the numbers).
   bool evaluate_at(const Ipopt::Number* x);
+  /// Whether w lies in the admissible box (always, without one).
+  bool admissible(const Vector6d& w) const;
 
   ShapeProblem& problem_;
   Vector6d start_;
   int rows_;  // m, fixed at construction
   bool finite_difference_hessian_;
   NlpOutcome outcome_;
+  std::optional<WrenchBounds> admissible_;
 };
 
 /// The name of an ApplicationReturnStatus, e.g. "Solve_Succeeded".

@@ -90,12 +90,24 @@ struct StartResult {
   int start_index = 0;
 };
 
+/// The box F is evaluated in (ShapeOptimiserOptions::confine_to_scale): the rod's scale, widened
+/// to twice the start where the start lies outside it.
+std::optional<WrenchBounds> admissible_box(const ShapeProblem& problem,
+                                           const Vector6d& start,
+                                           const ShapeOptimiserOptions& options) {
+  if (!options.confine_to_scale) return std::nullopt;
+  WrenchBounds box = WrenchBounds::from_scale(problem.rod());
+  box.upper = box.upper.cwiseMax(2.0 * start.cwiseAbs());
+  box.lower = -box.upper;
+  return box;
+}
+
 StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
                       const ShapeOptimiserOptions& options) {
   StartResult result;
-  result.run = session.run(problem, start);
+  result.run = session.run(problem, start, admissible_box(problem, start, options));
   // Judge the final iterate ourselves, on the problem as posed.
   problem.evaluate(result.run.w);
   result.violation = problem.constraint_violation();  // ours, not IPOPT's (scaled, relaxed)
@@ -146,6 +158,10 @@ std::string describe(const StartResult& r, int starts, const ShapeOptimiserOptio
     out << " exceeds ShapeOptimiserOptions.constraint_tolerance = " << options.constraint_tolerance;
   if (r.status == SolveStatus::NonFinite)
     out << "; the shape is not finite (NaN or infinite values)";
+  if (r.run.details.beyond_scale)
+    out << "; stopped: the optimum lies beyond the rod's scale (a base moment over 4π EI/L, two "
+           "full turns, or a force over half the axial or shear stiffness: "
+           "ShapeOptimiserOptions.confine_to_scale)";
   return out.str();
 }
 

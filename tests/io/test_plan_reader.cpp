@@ -223,17 +223,18 @@ TEST(PlanReader, EquilibriumTaskRejectsPlanSectionsWithTheReason) {
 // ---- good input ---------------------------------------------------------------------------------
 
 TEST(PlanReader, SectionsReadIntoTheRequestAndOptions) {
-  const std::string text = kPlan +
-                           "  max_linear_speed: 0.05\n  max_angular_speed: 0.3\n"
-                           "  max_linear_acceleration: 0.2\n  max_angular_acceleration: 2\n"
-                           "  rate: 50\n  track: false\n  tracking_substeps: 4\n"
-                           "grasp:\n  zero_wrench: [mx, fy]\n"
-                           "  tip_to_end_effector: {position: [0, 0, 0.03]}\n"
-                           "initial:\n  tip: {position: [0.05, 0, 0.28]}\n"
-                           "limits: {max_curvature: 12, max_axial_strain: 0.05}\n"
-                           "wrench_bounds:\n  lower: {moment: [-1, -1, -1]}\n"
-                           "optimizer: {max_iterations: 40, tolerance: 1e-7, "
-                           "constraint_tolerance: 1e-8, multi_starts: 2}\n";
+  const std::string text =
+      kPlan +
+      "  max_linear_speed: 0.05\n  max_angular_speed: 0.3\n"
+      "  max_linear_acceleration: 0.2\n  max_angular_acceleration: 2\n"
+      "  rate: 50\n  track: false\n  tracking_substeps: 4\n"
+      "grasp:\n  zero_wrench: [mx, fy]\n"
+      "  tip_to_end_effector: {position: [0, 0, 0.03]}\n"
+      "initial:\n  tip: {position: [0.05, 0, 0.28]}\n"
+      "limits: {max_curvature: 12, max_axial_strain: 0.05}\n"
+      "wrench_bounds:\n  lower: {moment: [-1, -1, -1]}\n"
+      "optimizer: {max_iterations: 40, tolerance: 1e-7, "
+      "constraint_tolerance: 1e-8, multi_starts: 2, confine_to_scale: false}\n";
   const PlanTask task = parse_plan_task(text, "plan.yaml");
   const PlanProblem& problem = task.problem;
   EXPECT_EQ(task.source, "plan.yaml");
@@ -272,6 +273,7 @@ TEST(PlanReader, SectionsReadIntoTheRequestAndOptions) {
   EXPECT_EQ(options.optimiser.tolerance, 1e-7);
   EXPECT_EQ(options.optimiser.constraint_tolerance, 1e-8);
   EXPECT_EQ(options.optimiser.multi_starts, 2);
+  EXPECT_FALSE(options.optimiser.confine_to_scale);
 }
 
 TEST(PlanReader, DefaultsApplyWhenLeftOut) {

@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/wrench.hpp"
 
@@ -31,6 +32,16 @@ struct StrainLimits {
 struct WrenchBounds {
   Vector6d lower = Vector6d::Constant(-std::numeric_limits<double>::infinity());
   Vector6d upper = Vector6d::Constant(std::numeric_limits<double>::infinity());
+
+  /// Bounds from the rod's scale, |n_i(0)| ≤ F and |m_i(0)| ≤ M with
+  ///   M = 4π max(EIx, EIy, GJ) / L + |f| L² / 2,  F = ½ max(K_tra) + |f| L:
+  /// a base moment of M bends (or twists) the rod at the clamp by two full turns over its length,
+  /// and a force of F strains it by 50 % (the model's validity limit), both plus what the
+  /// distributed load f can add. Every shape the model can say anything about lies well inside;
+  /// a bad start cannot wander to coiled shapes of |w| ~ 10³.
+  static WrenchBounds from_scale(const ClampedRod& rod);
+  /// These bounds where they are finite, `fallback`'s where they are infinite.
+  WrenchBounds or_else(const WrenchBounds& fallback) const;
 };
 
 }  // namespace rodshape

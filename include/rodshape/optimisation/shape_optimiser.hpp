@@ -33,6 +33,11 @@ struct ShapeOptimiserOptions {
   enum class Hessian { Automatic, FiniteDifference, LimitedMemory };
   Hessian hessian = Hessian::Automatic;
   bool assess_stability = true;  // run assess_stability() on the optimum
+  /// Refuse to evaluate F beyond WrenchBounds::from_scale(rod) (widened to twice a start that lies
+  /// outside): IPOPT then cuts such a step back, as after a failed evaluation. Unlike bounds given
+  /// to IPOPT, this adds no barrier term, so an optimisation that stays in the box runs exactly as
+  /// without it, while one that would wander to coiled shapes of |w| ~ 10³ cannot.
+  bool confine_to_scale = true;
   /// Throws InputError naming the field.
   void validate() const;
 };
@@ -46,6 +51,8 @@ struct IpoptDetails {
   std::vector<double> constraint_multipliers;           // λ, one per row of g
   Vector6d lower_bound_multipliers = Vector6d::Zero();  // z_L for w
   Vector6d upper_bound_multipliers = Vector6d::Zero();  // z_U for w
+  /// Stopped because steps kept reaching beyond WrenchBounds::from_scale (confine_to_scale).
+  bool beyond_scale = false;
 };
 
 struct ShapeResult {
