@@ -107,6 +107,17 @@ LocalMinimum minimise_on_segment(const HermiteSegment& H, const Eigen::Vector3d&
 
 }  // namespace
 
+Eigen::Vector3d curve_point(const RodConfiguration& configuration, double s) {
+  const RodConfiguration& c = configuration;
+  if (c.nodes() < 2) return c.p.empty() ? Eigen::Vector3d::Zero() : c.p.front();
+  s = std::clamp(s, c.s.front(), c.s.back());
+  // The interval [s_i, s_{i+1}] holding s.
+  const auto upper = std::upper_bound(c.s.begin(), c.s.end(), s);
+  const int i = std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+  const double t = (s - c.s[i]) / (c.s[i + 1] - c.s[i]);
+  return segment_of(c, i).value(t);
+}
+
 void interval_balls(const RodConfiguration& configuration, std::vector<IntervalBall>& balls) {
   const int intervals = std::max(configuration.nodes() - 1, 0);
   balls.resize(static_cast<std::size_t>(intervals));

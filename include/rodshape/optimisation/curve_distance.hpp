@@ -19,6 +19,10 @@ struct CurveProjection {
   double distance = 0.0;                              // |Γ(s) - p|
 };
 
+/// Γ(s), s clamped to [0, L]: the cubic Hermite interpolant of the nodes (the curve the distances
+/// are measured to).
+Eigen::Vector3d curve_point(const RodConfiguration& configuration, double s);
+
 /// The bounding ball of one interval's Bézier control points: the segment of Γ lies inside it.
 struct IntervalBall {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();

@@ -1,0 +1,70 @@
+// plan_validation.hpp: the paper's experiment in simulation. The plan's commanded end-effector path
+// drives the plant (the real rod, drive_plant); the sensor sees it at its frame rate; at every
+// frame the paper's error (mean distance from the objective points to the measured curve, in 3D and
+// in the image plane) and the true error (to the plant's own curve) are computed. Repeats differ in
+// the sensor's noise only (run k uses seed + k): the plant is deterministic.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/sim/plant.hpp"
+#include "rodshape/sim/plant_model.hpp"
+#include "rodshape/sim/shape_error.hpp"
+#include "rodshape/trajectory/plan_problem.hpp"
+#include "rodshape/trajectory/plan_result.hpp"
+
+namespace rodshape {
+
+struct ValidationOptions {
+  static constexpr int kMaxRuns = 1000;
+  static constexpr double kMaxFrames = 1e6;  // frames per run (duration × frame rate)
+  int runs = 1;                              // 1 ≤ runs ≤ kMaxRuns
+  std::uint64_t seed = 1;                    // run k's sensor is seeded with seed + k
+  PlantOptions plant;
+  /// Throws InputError naming the field.
+  void validate() const;
+};
+
+/// One run: the errors at each frame, and after the last waypoint.
+struct ValidationRun {
+  std::uint64_t seed = 0;
+  std::vector<double> time, error_3d, error_2d, true_error;  // s, m, m, m
+  std::vector<int> visible_markers;
+  std::vector<SensorFrame> frames;  // what the sensor saw
+  ShapeError final;                 // at the last frame
+};
+
+enum class ValidationStatus {
+  Complete,     // the plant followed the whole path
+  SnapThrough,  // it did, but snapped between samples (see plant.events)
+  Lost,         // no equilibrium at some sample: the run stops there
+};
+std::string to_string(ValidationStatus status);  // "complete", "snap_through", "lost"
+
+struct ValidationResult {
+  ValidationStatus status = ValidationStatus::Lost;
+  std::string message;
+  ClampedRod real_rod;  // the plant's rod (PlantModel::real_rod of the planner's)
+  PlantRun plant;       // its frames, events and last equilibrium
+  std::vector<ValidationRun> runs;
+  /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run".
+  std::string brief() const;
+};
+
+/// The frame times of a path from t0 to t1 at `rate`: t0 + k / rate, and t1 if not among them.
+std::vector<double> frame_times(double t0, double t1, double rate);
+
+/// Validates `plan` (of `problem`, with a non-empty end-effector path) on `plant` seen by
+/// `sensor`. Throws InputError for bad input (a plan without a path, a plant that cannot be held
+/// at the start is a status, not an error).
+ValidationResult validate_plan(const PlanProblem& problem,
+                               const PlanResult& plan,
+                               const PlantModel& plant,
+                               const MarkerSensorModel& sensor,
+                               const ValidationOptions& options = {});
+
+}  // namespace rodshape

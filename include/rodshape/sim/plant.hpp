@@ -1,0 +1,80 @@
+// plant.hpp: the simulated plant: the real rod driven by the commanded end-effector path. At each
+// sample of the path the held equilibrium is solved directly from the last one (quasi-static, as
+// the paper assumes: the rod stays on its branch while the gripper moves slowly). A snap-through
+// (the rod jumps to another equilibrium between two samples) and a lost equilibrium are events
+// with their time, never a crash. The direct solves would follow a branch past the point where it
+// loses stability; the state's stability is checked at every camera frame and, where it is lost,
+// the rod snaps to a stable equilibrium with the same ends (seek_stable_equilibrium).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/pose.hpp"
+#include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/wrench.hpp"
+#include "rodshape/optimisation/shape_constraints.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+#include "rodshape/trajectory/end_effector_path.hpp"
+
+namespace rodshape {
+
+struct PlantEvent {
+  enum class Kind {
+    SnapThrough,  // the rod jumped to another equilibrium, releasing energy
+    Lost,         // no equilibrium was found at a sample: the run stops there
+  };
+  Kind kind = Kind::Lost;
+  double t = 0.0;                // s: the sample where it happened
+  double energy_released = 0.0;  // J (SnapThrough)
+  std::string message;
+};
+std::string to_string(PlantEvent::Kind kind);  // "snap_through", "lost"
+
+/// The plant as a camera frame sees it.
+struct PlantFrame {
+  double t = 0.0;                  // s
+  Pose end_effector;               // the commanded end-effector pose the rod is held by
+  BaseWrench base_wrench;          // n(0), m(0)
+  RodConfiguration configuration;  // without derivatives
+};
+
+struct PlantOptions {
+  /// A step between samples releases energy when the gripper's work exceeds the rise of the elastic
+  /// and load potential energy: more than energy_tolerance × the larger elastic energy (plus
+  /// 1e-9 J) is a snap-through. On a followed path the balance holds to the trapezoid rule's
+  /// O(Δ²) relative error (Δ the step over the rod's length: ~1e-6 at the paper's speeds).
+  double energy_tolerance = 1e-3;
+  /// Check the state's stability at every camera frame: a direct solve follows a branch past the
+  /// point where it loses stability, the real rod snaps to a stable equilibrium (sought as
+  /// seek_stable_equilibrium does; an event with the energy released). One stability test per
+  /// frame (~0.2 ms on the band at N = 100).
+  bool check_stability = true;
+  /// Each sample's direct solve (continuation is not used past the start).
+  ShootingOptions shooting;
+  void validate() const;
+};
+
+struct PlantRun {
+  std::vector<PlantFrame> frames;  // one per frame time reached
+  std::vector<PlantEvent> events;
+  bool lost = false;  // a Lost event ended the run
+  PlantFrame last;    // the last equilibrium (at the path's end unless lost)
+  int solves = 0;     // samples solved
+  std::string brief() const;
+};
+
+/// Drives `rod` (the real one) held by `grasp` (released axes, tip_T_ee) with the tip where
+/// `grasp_offset` puts it in the commanded tip frame, along `path` (at least one sample), from the
+/// equilibrium at path[0] solved from `guess`. Frames are taken at `frame_times` (increasing,
+/// within the path's span; zero-order hold: the state of the last sample at or before each).
+PlantRun drive_plant(const ClampedRod& rod,
+                     const Grasp& grasp,
+                     const Pose& grasp_offset,
+                     const std::vector<TimedPose>& path,
+                     const BaseWrench& guess,
+                     const std::vector<double>& frame_times,
+                     const PlantOptions& options = {});
+
+}  // namespace rodshape

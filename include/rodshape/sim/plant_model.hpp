@@ -1,0 +1,39 @@
+// plant_model.hpp: the "real" rod of a simulated experiment, whose parameters may differ from the
+// planner's model: a stiffness scale (one factor for all, and one per stiffness), its length, its
+// mass per length and gravity (the paper's planner neglects gravity; the real band weighs 1.6 N
+// over 0.29 m), a rest curvature, and where the gripper really holds it (the actual tip pose in the
+// commanded tip frame).
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/pose.hpp"
+
+namespace rodshape {
+
+/// Factors on the planner's stiffnesses, each > 0.
+struct StiffnessFactors {
+  double EA = 1.0, GA = 1.0, EIx = 1.0, EIy = 1.0, GJ = 1.0;
+};
+
+struct PlantModel {
+  double stiffness_scale = 1.0;           // on every stiffness, > 0
+  StiffnessFactors factors;               // on each one, after the scale
+  std::optional<double> length;           // m, > 0; the planner's when absent
+  std::optional<double> mass_per_length;  // ρA, kg/m, ≥ 0; the planner's rod's when absent
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s², world frame; its weight is added
+  std::optional<Eigen::Vector3d> rest_curvature;      // ũ, 1/m; the planner's when absent
+  /// The tip's actual pose in the commanded tip frame (commanded_T_actual): a grasp that slipped
+  /// or was placed a little off.
+  Pose grasp_offset;
+
+  /// Throws InputError naming the field ("PlantModel.stiffness_scale = 0 must be > 0", …).
+  void validate() const;
+  /// The planner's rod as the plant has it: stiffnesses scaled, its length (the nodes keep their
+  /// count), its rest curvature, and the planner's loads plus the plant's weight ρA g.
+  ClampedRod real_rod(const ClampedRod& planned) const;
+};
+
+}  // namespace rodshape

@@ -1,0 +1,91 @@
+// marker_sensor.cpp: markers on the plant's curve, seen with noise in the camera's frame.
+#include "rodshape/sim/marker_sensor.hpp"
+
+#include <string>
+
+#include "rodshape/error.hpp"
+#include "rodshape/optimisation/curve_distance.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+void MarkerSensorModel::validate() const {
+  if (markers < 2 || markers > kMaxMarkers)
+    throw InputError(
+        "MarkerSensorModel.markers",
+        " = " + std::to_string(markers) + " must be in [2, " + std::to_string(kMaxMarkers) + "]");
+  detail::require_non_negative("MarkerSensorModel.in_plane_noise", in_plane_noise);
+  detail::require_non_negative("MarkerSensorModel.depth_noise", depth_noise);
+  detail::require_finite("MarkerSensorModel.dropout", dropout);
+  if (dropout < 0.0 || dropout > 1.0)
+    throw InputError("MarkerSensorModel.dropout",
+                     " = " + detail::format_value(dropout) + " must be in [0, 1]");
+  detail::require_positive("MarkerSensorModel.frame_rate", frame_rate);
+  if (frame_rate > kMaxFrameRate)
+    throw InputError("MarkerSensorModel.frame_rate",
+                     " = " + detail::format_value(frame_rate) +
+                         " must be <= " + detail::format_value(kMaxFrameRate));
+  detail::require_pose("MarkerSensorModel.camera", camera);
+  if (wrist) {
+    detail::require_non_negative("MarkerSensorModel.wrist.force", wrist->force);
+    detail::require_non_negative("MarkerSensorModel.wrist.moment", wrist->moment);
+  }
+}
+
+std::vector<double> MarkerSensorModel::arc_lengths(double length) const {
+  std::vector<double> s(static_cast<std::size_t>(markers));
+  for (int j = 0; j < markers; ++j) s[static_cast<std::size_t>(j)] = (j + 1) * length / markers;
+  return s;
+}
+
+int SensorFrame::visible() const {
+  int count = 0;
+  for (const auto& marker : markers) count += marker.has_value();
+  return count;
+}
+
+Eigen::Vector2d image_point(const Pose& camera, const Eigen::Vector3d& world_point) {
+  return (camera.rotation.transpose() * (world_point - camera.position)).head<2>();
+}
+
+MarkerSensor::MarkerSensor(MarkerSensorModel model, std::uint64_t seed)
+    : model_(std::move(model)), random_(seed) {
+  model_.validate();
+}
+
+SensorFrame MarkerSensor::observe(const PlantFrame& frame, double length) {
+  SensorFrame seen;
+  seen.t = frame.t;
+  const Eigen::Matrix3d& Rc = model_.camera.rotation;
+  // Every draw is made whether or not the marker is seen, so that the noise of one marker does not
+  // depend on the dropout of another.
+  for (const double s : model_.arc_lengths(length)) {
+    const Eigen::Vector3d noise(model_.in_plane_noise * normal_(random_),
+                                model_.in_plane_noise * normal_(random_),
+                                model_.depth_noise * normal_(random_));
+    const bool dropped = uniform_(random_) < model_.dropout;
+    if (dropped) {
+      seen.markers.emplace_back();
+      continue;
+    }
+    seen.markers.emplace_back(curve_point(frame.configuration, s) + Rc * noise);
+  }
+  if (model_.wrist) {
+    // The rod's wrench on the gripper, -n(L), -m(L), in the end-effector frame.
+    const Pose& ee = frame.end_effector;  // where the gripper is (the grasp may be off)
+    const Wrench tip = frame.configuration.tip_wrench();
+    Wrench w;
+    w.force = -(ee.rotation.transpose() * tip.force);
+    w.moment =
+        -(ee.rotation.transpose() *
+          (tip.moment + (frame.configuration.tip().position - ee.position).cross(tip.force)));
+    for (int k = 0; k < 3; ++k) {
+      w.force(k) += model_.wrist->force * normal_(random_);
+      w.moment(k) += model_.wrist->moment * normal_(random_);
+    }
+    seen.wrist = w;
+  }
+  return seen;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,127 @@
+// plan_validation.cpp: the experiment in stages: the real rod, the plant driven along the plan's
+// path, the sensor's runs, the errors at each frame.
+#include "rodshape/sim/plan_validation.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "rodshape/error.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+namespace {
+
+/// Stage 3: one run of the sensor over the plant's frames, with the errors at each frame.
+ValidationRun observe_run(const ValidationResult& result,
+                          const PointSet& points,
+                          const MarkerSensorModel& sensor,
+                          std::uint64_t seed) {
+  ValidationRun run;
+  run.seed = seed;
+  MarkerSensor camera(sensor, seed);
+  const Eigen::Vector3d clamp = result.real_rod.clamp.position;
+  for (const PlantFrame& frame : result.plant.frames) {
+    SensorFrame seen = camera.observe(frame, result.real_rod.properties.length);
+    const ShapeError error = shape_error(points, clamp, seen, frame.configuration, sensor.camera);
+    run.time.push_back(frame.t);
+    run.error_3d.push_back(error.error_3d);
+    run.error_2d.push_back(error.error_2d);
+    run.true_error.push_back(error.true_error);
+    run.visible_markers.push_back(error.visible_markers);
+    run.frames.push_back(std::move(seen));
+    run.final = error;
+  }
+  return run;
+}
+
+/// Stage 4: the status from the plant's events.
+void judge(ValidationResult& result) {
+  result.status = ValidationStatus::Complete;
+  result.message = "the plant followed the whole path";
+  for (const PlantEvent& event : result.plant.events) {
+    if (event.kind == PlantEvent::Kind::Lost) {
+      result.status = ValidationStatus::Lost;
+      result.message = event.message;
+      return;
+    }
+    if (result.status == ValidationStatus::Complete) {
+      result.status = ValidationStatus::SnapThrough;
+      result.message = event.message;
+    }
+  }
+}
+
+}  // namespace
+
+void ValidationOptions::validate() const {
+  if (runs < 1 || runs > kMaxRuns)
+    throw InputError("ValidationOptions.runs", " = " + std::to_string(runs) + " must be in [1, " +
+                                                   std::to_string(kMaxRuns) + "]");
+  plant.validate();
+}
+
+std::string to_string(ValidationStatus status) {
+  switch (status) {
+    case ValidationStatus::Complete:
+      return "complete";
+    case ValidationStatus::SnapThrough:
+      return "snap_through";
+    case ValidationStatus::Lost:
+      return "lost";
+  }
+  return "lost";
+}
+
+std::string ValidationResult::brief() const {
+  std::ostringstream out;
+  out.precision(3);
+  out << to_string(status);
+  if (!runs.empty()) {
+    const ShapeError& e = runs.front().final;
+    out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d << " mm, true "
+        << 1e3 * e.true_error << " mm)";
+  }
+  out << ", " << runs.size() << (runs.size() == 1 ? " run" : " runs");
+  if (status != ValidationStatus::Complete) out << "; " << message;
+  return out.str();
+}
+
+std::vector<double> frame_times(double t0, double t1, double rate) {
+  const double count = std::floor((t1 - t0) * rate);
+  if (!(count <= ValidationOptions::kMaxFrames))
+    throw InputError("MarkerSensorModel.frame_rate",
+                     ": the path of " + detail::format_value(t1 - t0) + " s at " +
+                         detail::format_value(rate) + " Hz would have " +
+                         detail::format_value(count + 1) + " frames; at most " +
+                         detail::format_value(ValidationOptions::kMaxFrames));
+  std::vector<double> times;
+  for (int k = 0; k <= static_cast<int>(count); ++k) times.push_back(t0 + k / rate);
+  if (times.back() < t1) times.push_back(t1);  // after the last waypoint
+  return times;
+}
+
+ValidationResult validate_plan(const PlanProblem& problem,
+                               const PlanResult& plan,
+                               const PlantModel& plant,
+                               const MarkerSensorModel& sensor,
+                               const ValidationOptions& options) {
+  options.validate();
+  sensor.validate();
+  if (plan.end_effector_path.empty())
+    throw InputError("PlanResult.end_effector_path", ": the plan has no path to carry out");
+  const std::vector<TimedPose>& path = plan.end_effector_path;
+  ValidationResult result;
+  // Stage 1: the real rod. Stage 2: the plant along the commanded path, from the plan's start.
+  result.real_rod = plant.real_rod(problem.rod);
+  result.plant =
+      drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
+                  frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
+  for (int k = 0; k < options.runs; ++k)
+    result.runs.push_back(observe_run(result, problem.target.points, sensor,
+                                      options.seed + static_cast<std::uint64_t>(k)));
+  judge(result);
+  return result;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,56 @@
+// shape_error.cpp: point-to-polyline distances for the measured curve, point-to-curve for the
+// plant's.
+#include "rodshape/sim/shape_error.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "rodshape/optimisation/curve_distance.hpp"
+
+namespace rodshape {
+
+template <int D>
+double polyline_distance(const std::vector<Eigen::Matrix<double, D, 1>>& polyline,
+                         const Eigen::Matrix<double, D, 1>& point) {
+  double best = (polyline.front() - point).norm();
+  for (std::size_t k = 0; k + 1 < polyline.size(); ++k) {
+    const Eigen::Matrix<double, D, 1> a = polyline[k], d = polyline[k + 1] - a;
+    const double length2 = d.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((point - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (a + t * d - point).norm());
+  }
+  return best;
+}
+
+template double polyline_distance<2>(const std::vector<Eigen::Vector2d>&, const Eigen::Vector2d&);
+template double polyline_distance<3>(const std::vector<Eigen::Vector3d>&, const Eigen::Vector3d&);
+
+ShapeError shape_error(const PointSet& points,
+                       const Eigen::Vector3d& clamp,
+                       const SensorFrame& seen,
+                       const RodConfiguration& plant,
+                       const Pose& camera) {
+  // The measured curve: the clamp, then every visible marker (arc-length order).
+  std::vector<Eigen::Vector3d> curve{clamp};
+  for (const auto& marker : seen.markers)
+    if (marker) curve.push_back(*marker);
+  std::vector<Eigen::Vector2d> image;
+  for (const Eigen::Vector3d& q : curve) image.push_back(image_point(camera, q));
+
+  ShapeError error;
+  error.visible_markers = seen.visible();
+  for (const Eigen::Vector3d& p : points) {
+    error.error_3d += polyline_distance(curve, p);
+    error.error_2d += polyline_distance(image, image_point(camera, p));
+    const double d = project_onto_curve(plant, p).distance;
+    error.true_error += d;
+    error.true_max_distance = std::max(error.true_max_distance, d);
+  }
+  const double n = static_cast<double>(std::max<std::size_t>(points.size(), 1));
+  error.error_3d /= n;
+  error.error_2d /= n;
+  error.true_error /= n;
+  return error;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,229 @@
+// Tests of the simulated experiment: the plant model, the plant driven along a plan's path, the
+// sensor and the paper's error metric.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/sim/plan_validation.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace rodshape {
+namespace {
+
+/// The band bent by a wrench, sampled at 10 points; planned in 3 steps (a small, quick plan).
+PlanProblem band_problem() {
+  PlanProblem problem;
+  problem.rod = samples::rubber_band(ConstitutiveModel::Cosserat, 50);
+  const RodConfiguration bent = integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200),
+                                          {{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}});
+  for (int i = 0; i < 10; ++i) problem.target.points.push_back(bent.p[20 * i + 10]);
+  problem.target.energy_weight = 1e-3;
+  problem.target.distance_weight = 1.0;
+  return problem;
+}
+
+const PlanResult& band_plan() {
+  static const PlanResult plan = [] {
+    PlanOptions options;
+    options.steps = 3;
+    return rodshape::plan(band_problem(), options);
+  }();
+  return plan;
+}
+
+MarkerSensorModel noiseless() {
+  MarkerSensorModel sensor;
+  sensor.in_plane_noise = 0.0;
+  sensor.depth_noise = 0.0;
+  return sensor;
+}
+
+TEST(PlantModel, ScalesTheStiffnessesAndAddsTheWeight) {
+  const ClampedRod planned = samples::rubber_band();
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.factors.GJ = 2.0;
+  plant.gravity = {0.0, 0.0, -9.81};
+  const ClampedRod real = plant.real_rod(planned);
+  EXPECT_DOUBLE_EQ(real.properties.K_rot.x(), 0.85 * 0.04);
+  EXPECT_DOUBLE_EQ(real.properties.K_rot.z(), 0.85 * 2.0 * 0.028);
+  EXPECT_DOUBLE_EQ(real.properties.K_tra.z(), 0.85 * planned.properties.K_tra.z());
+  // ρA g: 1392 kg/m³ × 4e-4 m² × 9.81 m/s² = 5.46 N/m, the paper's 1.6 N over 0.29 m.
+  EXPECT_NEAR(real.load.force.z(), -1392 * 4e-4 * 9.81, 1e-9);
+  EXPECT_NEAR(-real.load.force.z() * real.properties.length, 1.58, 0.01);
+}
+
+TEST(PlantModel, BadParametersNameTheField) {
+  PlantModel plant;
+  plant.stiffness_scale = 0.0;
+  try {
+    (void)plant.real_rod(samples::rubber_band());
+    FAIL() << "a plant of zero stiffness cannot hold the rod";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("PlantModel.stiffness_scale", 0), 0u) << error.what();
+  }
+  PlantModel heavy;
+  heavy.gravity = {0.0, 0.0, -9.81};
+  ClampedRod massless = samples::rubber_band();
+  massless.properties.mass_per_length = 0.0;
+  EXPECT_THROW((void)heavy.real_rod(massless), InputError);
+  MarkerSensorModel sensor;
+  sensor.markers = 1;
+  EXPECT_THROW(sensor.validate(), InputError);
+  sensor = {};
+  sensor.dropout = 1.5;
+  EXPECT_THROW(sensor.validate(), InputError);
+  sensor = {};
+  sensor.depth_noise = -1e-3;
+  EXPECT_THROW(sensor.validate(), InputError);
+}
+
+TEST(ShapeError, PolylineDistanceByHand) {
+  const std::vector<Eigen::Vector3d> polyline{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}};
+  EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0.5, 0, 0.5)), 0.5);
+  EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0.5, 0.3, 1.4)), 0.5);
+  EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0, 0, -2)), 2.0);  // the clamp end
+  EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(2, 0, 1)), 1.0);   // beyond the tip
+}
+
+TEST(ShapeError, StraightRodSeenWithoutNoise) {
+  // The unloaded band along +z; points 3 mm aside along x at s = 0.1 and 0.2. The markers lie on
+  // the rod, so the measured polyline is the rod itself: every error is 3 mm; in the image plane
+  // (x–z) too, since the offset is in it.
+  const ClampedRod rod = samples::rubber_band();
+  const RodConfiguration straight = integrate(rod, BaseWrench{});
+  PlantFrame frame{0.0, Pose{}, BaseWrench{}, straight};
+  MarkerSensor sensor(noiseless(), 1);
+  const SensorFrame seen = sensor.observe(frame, rod.properties.length);
+  ASSERT_EQ(seen.visible(), 10);
+  EXPECT_NEAR(seen.markers.back()->z(), 0.29, 1e-12);  // the last marker at the tip
+  const PointSet points{{0.003, 0.0, 0.1}, {0.003, 0.0, 0.2}};
+  const ShapeError error =
+      shape_error(points, rod.clamp.position, seen, straight, noiseless().camera);
+  EXPECT_NEAR(error.error_3d, 0.003, 1e-12);
+  EXPECT_NEAR(error.error_2d, 0.003, 1e-12);
+  EXPECT_NEAR(error.true_error, 0.003, 1e-12);
+  EXPECT_NEAR(error.true_max_distance, 0.003, 1e-12);
+  // An offset along the camera's depth (y) is invisible in the image plane.
+  const ShapeError deep =
+      shape_error({{0.0, 0.003, 0.1}}, rod.clamp.position, seen, straight, noiseless().camera);
+  EXPECT_NEAR(deep.error_3d, 0.003, 1e-12);
+  EXPECT_NEAR(deep.error_2d, 0.0, 1e-12);
+}
+
+TEST(PlanValidation, IdenticalPlantFollowsThePlanAndItsTrueErrorIsThePlans) {
+  const PlanResult& plan = band_plan();
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  const ValidationResult result = validate_plan(band_problem(), plan, {}, noiseless());
+  ASSERT_EQ(result.status, ValidationStatus::Complete) << result.brief();
+  EXPECT_TRUE(result.plant.events.empty());
+  // The plant's last equilibrium is the plan's last shape: the same rod held at the same pose,
+  // followed on the same branch; they agree to the solvers' tolerance (residual 1e-10, scaled).
+  const RodConfiguration& planned = plan.steps.back().solution.configuration;
+  const RodConfiguration& real = result.plant.last.configuration;
+  double deviation = 0.0;
+  for (int i = 0; i < real.nodes(); ++i)
+    deviation = std::max(deviation, (real.p[i] - planned.p[i]).norm());
+  EXPECT_LT(deviation, 1e-8);
+  // So the true final error is the plan's mean distance (to that tolerance).
+  const ShapeCostBreakdown& cost = plan.steps.back().solution.cost;
+  double mean = 0.0;
+  for (double d : cost.distances) mean += d / static_cast<double>(cost.distances.size());
+  ASSERT_EQ(result.runs.size(), 1u);
+  EXPECT_NEAR(result.runs[0].final.true_error, mean, 1e-8);
+  EXPECT_NEAR(result.runs[0].final.true_max_distance, cost.max_distance, 1e-8);
+  // Frames at 30 Hz over the path, the last after the last waypoint.
+  const double duration = plan.end_effector_path.back().t;
+  EXPECT_EQ(result.runs[0].time.size(), static_cast<std::size_t>(std::floor(duration * 30.0)) + 1 +
+                                            (std::fmod(duration * 30.0, 1.0) > 0.0));
+  EXPECT_DOUBLE_EQ(result.runs[0].time.back(), duration);
+  // The error falls from the straight rod's to the plan's.
+  EXPECT_GT(result.runs[0].true_error.front(), 10.0 * result.runs[0].true_error.back());
+}
+
+TEST(PlanValidation, AFixedSeedRepeatsBitForBit) {
+  MarkerSensorModel sensor;  // 1 mm in plane, 3 mm in depth
+  sensor.dropout = 0.1;
+  sensor.wrist = WristNoise{0.05, 0.005};
+  ValidationOptions options;
+  options.runs = 2;
+  options.seed = 42;
+  const ValidationResult a = validate_plan(band_problem(), band_plan(), {}, sensor, options);
+  const ValidationResult b = validate_plan(band_problem(), band_plan(), {}, sensor, options);
+  ASSERT_EQ(a.runs.size(), 2u);
+  EXPECT_EQ(a.runs[0].error_3d, b.runs[0].error_3d);
+  EXPECT_EQ(a.runs[1].error_2d, b.runs[1].error_2d);
+  EXPECT_EQ(a.runs[1].visible_markers, b.runs[1].visible_markers);
+  EXPECT_EQ(a.runs[0].seed, 42u);
+  EXPECT_EQ(a.runs[1].seed, 43u);
+  // Different seeds see different noise; the truth is the same.
+  EXPECT_NE(a.runs[0].error_3d, a.runs[1].error_3d);
+  EXPECT_EQ(a.runs[0].true_error, a.runs[1].true_error);
+  // About 10 % of the markers drop out.
+  double seen = 0.0, total = 0.0;
+  for (int v : a.runs[0].visible_markers) {
+    seen += v;
+    total += 10.0;
+  }
+  EXPECT_NEAR(seen / total, 0.9, 0.03);
+  ASSERT_TRUE(a.runs[0].frames.back().wrist.has_value());
+}
+
+TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
+  // The paper's mismatch: 15 % softer, and gravity the planner neglected: the true final error
+  // grows well beyond the plan's.
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.gravity = {0.0, 0.0, -9.81};
+  const ValidationResult nominal = validate_plan(band_problem(), band_plan(), {}, noiseless());
+  const ValidationResult mismatched =
+      validate_plan(band_problem(), band_plan(), plant, noiseless());
+  ASSERT_EQ(mismatched.status, ValidationStatus::Complete) << mismatched.brief();
+  EXPECT_GT(mismatched.runs[0].final.true_error, 2.0 * nominal.runs[0].final.true_error);
+}
+
+}  // namespace
+}  // namespace rodshape
+
+namespace rodshape {
+namespace {
+
+TEST(PlanValidation, ThePlantSnapsWhereThePaperSchemePlanWouldJump) {
+  // plan_c_arc with the paper's objective sets (projection): its tracking finds a jump towards
+  // waypoint 4 (status snap_through). Driven along that plan's path, the plant (the same rod) snaps
+  // or loses its equilibrium there too (direct solves would follow the unstable branch; the
+  // plant's stability check at each frame catches it): an event with its time, not a crash.
+  PlanProblem problem;  // examples/plan_c_arc.yaml
+  problem.rod = samples::rubber_band();
+  problem.target.points = {{0.003, 0.0, 0.028}, {0.012, 0.0, 0.055}, {0.027, 0.0, 0.080},
+                           {0.047, 0.0, 0.101}, {0.070, 0.0, 0.118}, {0.097, 0.0, 0.128},
+                           {0.126, 0.0, 0.133}, {0.155, 0.0, 0.132}, {0.183, 0.0, 0.124},
+                           {0.208, 0.0, 0.110}};
+  problem.target.energy_weight = 1e-3;
+  problem.target.distance_weight = 1.0;
+  PlanOptions options;
+  options.steps = 7;
+  options.interpolation = ObjectiveInterpolation::Projection;
+  const PlanResult plan = rodshape::plan(problem, options);
+  ASSERT_EQ(plan.status, PlanStatus::SnapThrough) << plan.message;
+  ASSERT_FALSE(plan.end_effector_path.empty());
+  const ValidationResult result = validate_plan(problem, plan, {}, noiseless());
+  ASSERT_NE(result.status, ValidationStatus::Complete) << result.brief();
+  ASSERT_FALSE(result.plant.events.empty());
+  const PlantEvent& event = result.plant.events.front();
+  EXPECT_GT(event.t, 0.0);
+  EXPECT_LE(event.t, plan.end_effector_path.back().t);
+  if (event.kind == PlantEvent::Kind::SnapThrough) {
+    EXPECT_GT(event.energy_released, 0.0);
+  }
+  // The plan's tracking found the rod unstable on arrival at waypoint 4: the plant's event lies
+  // between the start of segment 4 and the end of the path.
+  EXPECT_EQ(plan.tracking.jump_step, 3);
+}
+
+}  // namespace
+}  // namespace rodshape
