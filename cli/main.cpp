@@ -18,6 +18,7 @@
 #include "plan_command.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/version.hpp"
+#include "validate_command.hpp"
 
 namespace {
 
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
   };
   add(make_equilibrium_command());
   add(make_plan_command());
+  add(make_validate_command());
   add(make_fk_command());
   add(make_ik_command());
 

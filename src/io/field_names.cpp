@@ -31,6 +31,13 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"ArmPlanOptions.joints.seed", "robot.seed"},
       {"ArmReachOptions.samples", "robot.reach.samples"},
       {"ArmReachOptions.refinement_steps", "robot.reach.refinement_steps"},
+      // sim
+      {"PlantModel.factors", "plant.stiffness_factors"},
+      {"PlantModel", "plant"},
+      {"MarkerSensorModel.in_plane_noise", "sensor.noise.in_plane"},
+      {"MarkerSensorModel.depth_noise", "sensor.noise.depth"},
+      {"MarkerSensorModel.wrist", "sensor.wrench_noise"},
+      {"MarkerSensorModel", "sensor"},
       // optimisation
       {"ShapeOptimiserOptions", "optimizer"},
       {"ShapeTarget.points", "target.points"},

@@ -10,6 +10,7 @@
 
 #include "capped_file.hpp"
 #include "io/plan_sections.hpp"
+#include "io/sim_sections.hpp"
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
 #include "rodshape/error.hpp"
@@ -49,9 +50,12 @@ const std::vector<io_detail::KeyHint>& equilibrium_hints() {
 
 const std::vector<std::string_view>& plan_sections() {
   static const std::vector<std::string_view> sections = {
-      "rod",       "gravity", "distributed_load", "base",   "target",        "weights",
-      "workspace", "grasp",   "initial",          "limits", "wrench_bounds", "trajectory",
-      "optimizer", "robot"};
+      "rod",       "gravity",       "distributed_load",
+      "base",      "target",        "weights",
+      "workspace", "grasp",         "initial",
+      "limits",    "wrench_bounds", "trajectory",
+      "optimizer", "robot",         "plant",
+      "sensor"};
   return sections;
 }
 
@@ -152,6 +156,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     io_detail::read_trajectory_section(trajectory, task.options);
   if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
     io_detail::read_optimiser_section(optimizer, task.options.optimiser);
+  if (const YamlField plant = root.get("plant"); plant.present())
+    task.plant = io_detail::read_plant_section(plant);
+  if (const YamlField sensor = root.get("sensor"); sensor.present())
+    task.sensor = io_detail::read_sensor_section(sensor);
   if (const YamlField robot = root.get("robot"); robot.present()) {
     io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
                                   task);

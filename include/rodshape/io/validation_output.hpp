@@ -1,0 +1,32 @@
+// validation_output.hpp: what `rodshape validate` writes: validation.json (the plant, the sensor,
+// each run's errors over time, final errors, events and the plant's last equilibrium),
+// validation.csv (the errors over time, one line per run and frame) and validation.svg (the errors
+// over time, as the paper's figure). Schemas in docs/task-file.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rodshape/io/plan_task.hpp"
+#include "rodshape/sim/plan_validation.hpp"
+#include "rodshape/trajectory/plan_result.hpp"
+
+namespace rodshape {
+
+/// The validation document, ending with a newline.
+std::string validation_json(const ValidationResult& result,
+                            const PlanResult& plan,
+                            const PlanTask& task);
+/// "run,seed,t,error_3d,error_2d,true_error,visible_markers" and one line per run and frame
+/// (s, m).
+std::string validation_csv(const ValidationResult& result);
+/// A self-contained SVG: the 3D, 2D and true errors (mm) over time (s) of every run.
+std::string validation_svg(const ValidationResult& result);
+/// Writes validation.json, validation.csv and validation.svg into `directory` (created with its
+/// parents if missing), each whole or not at all. Returns the names written.
+std::vector<std::string> write_validation(const std::string& directory,
+                                          const ValidationResult& result,
+                                          const PlanResult& plan,
+                                          const PlanTask& task);
+
+}  // namespace rodshape

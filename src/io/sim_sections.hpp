@@ -1,0 +1,20 @@
+// sim_sections.hpp (private to the io area): the readers of the sections a plan task adds for
+// `rodshape validate`: plant (the real rod) and sensor (the camera and the wrist sensor). Numbers
+// are checked finite here and their ranges by PlantModel::validate and MarkerSensorModel::validate.
+#pragma once
+
+#include "io/yaml_field.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/sim/plant_model.hpp"
+
+namespace rodshape::io_detail {
+
+/// `plant`: stiffness_scale, stiffness_factors {EA, GA, EIx, EIy, GJ}, length, mass_per_length,
+/// gravity, rest_curvature, grasp_offset (a pose).
+PlantModel read_plant_section(const YamlField& plant);
+
+/// `sensor`: markers, noise {in_plane, depth}, dropout, frame_rate, camera (a pose),
+/// wrench_noise {force, moment} (absent: no wrist sensor).
+MarkerSensorModel read_sensor_section(const YamlField& sensor);
+
+}  // namespace rodshape::io_detail

@@ -1,0 +1,103 @@
+// validation_json.cpp: the validation document (validation_output.hpp; schema in
+// docs/task-file.md, "validate").
+#include "io/json_format.hpp"
+#include "rodshape/io/validation_output.hpp"
+
+namespace rodshape {
+
+namespace {
+
+using io_detail::Json;
+using io_detail::json_number;
+
+Json numbers(const std::vector<double>& values) {
+  Json list = Json::array();
+  for (double v : values) list.push_back(json_number(v));
+  return list;
+}
+
+Json plant_object(const ValidationResult& result, const PlantModel& plant) {
+  const RodProperties& k = result.real_rod.properties;
+  Json j;
+  j["stiffness_scale"] = plant.stiffness_scale;
+  j["EA"] = k.K_tra.z();
+  j["GA"] = k.K_tra.x();
+  j["EIx"] = k.K_rot.x();
+  j["EIy"] = k.K_rot.y();
+  j["GJ"] = k.K_rot.z();
+  j["length"] = k.length;
+  j["mass_per_length"] = k.mass_per_length;
+  j["gravity"] = io_detail::json_vector(plant.gravity);
+  j["rest_curvature"] = io_detail::json_vector(k.u_rest);
+  j["grasp_offset"] = io_detail::json_pose(plant.grasp_offset);
+  return j;
+}
+
+Json sensor_object(const MarkerSensorModel& sensor) {
+  Json j;
+  j["markers"] = sensor.markers;
+  j["noise"] = {{"in_plane", sensor.in_plane_noise}, {"depth", sensor.depth_noise}};
+  j["dropout"] = sensor.dropout;
+  j["frame_rate"] = sensor.frame_rate;
+  j["camera"] = io_detail::json_pose(sensor.camera);
+  j["wrench_noise"] = sensor.wrist
+                          ? Json{{"force", sensor.wrist->force}, {"moment", sensor.wrist->moment}}
+                          : Json(nullptr);
+  return j;
+}
+
+Json events_array(const std::vector<PlantEvent>& events) {
+  Json list = Json::array();
+  for (const PlantEvent& e : events)
+    list.push_back({{"time", e.t},
+                    {"kind", to_string(e.kind)},
+                    {"energy_released", json_number(e.energy_released)},
+                    {"message", e.message}});
+  return list;
+}
+
+Json run_object(const ValidationRun& run, const ValidationResult& result) {
+  Json j;
+  j["seed"] = run.seed;
+  j["closed_loop"] = false;
+  j["time"] = numbers(run.time);
+  j["error_3d"] = numbers(run.error_3d);
+  j["error_2d"] = numbers(run.error_2d);
+  j["true_error"] = numbers(run.true_error);
+  j["visible_markers"] = run.visible_markers;
+  j["final"] = {{"error_3d", json_number(run.final.error_3d)},
+                {"error_2d", json_number(run.final.error_2d)},
+                {"true_error", json_number(run.final.true_error)},
+                {"true_max_distance", json_number(run.final.true_max_distance)}};
+  j["events"] = events_array(result.plant.events);
+  j["estimates"] = Json::array();  // the closed loop's checkpoints (none in open loop)
+  const PlantFrame& last = result.plant.last;
+  j["plant_final"] = {{"time", last.t},
+                      {"base_wrench", io_detail::json_wrench(last.base_wrench)},
+                      {"tip", io_detail::json_pose(last.configuration.tip())}};
+  return j;
+}
+
+}  // namespace
+
+std::string validation_json(const ValidationResult& result,
+                            const PlanResult& plan,
+                            const PlanTask& task) {
+  Json j;
+  j["status"] = to_string(result.status);
+  j["message"] = result.message;
+  j["source"] = task.source;
+  j["plan"] = {
+      {"status", to_string(plan.status)},
+      {"steps", static_cast<int>(plan.steps.size())},
+      {"duration", plan.end_effector_path.empty() ? 0.0 : plan.end_effector_path.back().t}};
+  j["plant"] = plant_object(result, task.plant);
+  j["sensor"] = sensor_object(task.sensor);
+  j["plant_solves"] = result.plant.solves;
+  Json runs = Json::array();
+  for (const ValidationRun& run : result.runs) runs.push_back(run_object(run, result));
+  j["runs"] = std::move(runs);
+  return io_detail::format_json(j);
+}
+
+}  // namespace rodshape

@@ -1,0 +1,102 @@
+// test_cli_validate.cpp: `rodshape validate` as a user runs it: a nominal plant reproduces the
+// plan's own distances, a fixed seed repeats bit for bit, and bad plant or sensor sections are
+// one-line errors naming the field with nothing written.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/cli_runner.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <utility>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using Outcome = rodshape::testing::CliOutcome;
+using rodshape::testing::quoted;
+using rodshape::testing::read_file;
+
+// The gentle bend of test_cli_plan.cpp: 51 nodes, two steps.
+const std::string kTask = R"(rod:
+  length: 0.29
+  nodes: 51
+  section: {shape: rectangle, width: 0.02, height: 0.02}
+  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
+  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
+target:
+  points:
+    - [0.003, 0.000, 0.057]
+    - [0.013, 0.000, 0.114]
+    - [0.030, 0.000, 0.169]
+    - [0.052, 0.000, 0.223]
+    - [0.081, 0.000, 0.273]
+trajectory:
+  steps: 2
+)";
+
+class CliValidate : public rodshape::testing::CliTest {
+ protected:
+  Outcome validate(const std::string& text, const std::string& extra = "") const {
+    const fs::path task = write_task("validate.yaml", text);
+    return run("validate " + quoted(task.string()) + " -o " + quoted(outdir().string()) + extra);
+  }
+  fs::path outdir() const { return directory_ / "out"; }
+};
+
+TEST_F(CliValidate, NominalPlantReproducesThePlansDistances) {
+  const Outcome result =
+      validate(kTask + "sensor: {noise: {in_plane: 0, depth: 0}}\n", " --runs 2");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* name : {"plan.json", "validation.json", "validation.csv", "validation.svg"})
+    EXPECT_TRUE(fs::exists(outdir() / name)) << name;
+  const Json plan = Json::parse(read_file(outdir() / "plan.json"));
+  const Json validation = Json::parse(read_file(outdir() / "validation.json"));
+  EXPECT_EQ(validation["status"], "complete");
+  ASSERT_EQ(validation["runs"].size(), 2u);
+  const Json& final = validation["runs"][0]["final"];
+  // The same rod held at the same poses: the plant's last shape is the plan's last, so its true
+  // error is the plan's mean distance (to the solvers' tolerance).
+  EXPECT_NEAR(final["true_error"].get<double>(), plan["final"]["mean_distance"].get<double>(),
+              1e-8);
+  EXPECT_NEAR(final["true_max_distance"].get<double>(), plan["final"]["max_distance"].get<double>(),
+              1e-8);
+  EXPECT_EQ(validation["plant"]["EIx"], 0.04);
+  EXPECT_TRUE(validation["runs"][0]["events"].empty());
+  EXPECT_EQ(validation["runs"][1]["seed"], 2);
+}
+
+TEST_F(CliValidate, AFixedSeedRepeatsBitForBit) {
+  ASSERT_EQ(validate(kTask, " --seed 7").exit_code, 0);
+  const std::string first = read_file(outdir() / "validation.csv");
+  ASSERT_EQ(validate(kTask, " --seed 7").exit_code, 0);
+  EXPECT_EQ(read_file(outdir() / "validation.csv"), first);
+  ASSERT_EQ(validate(kTask, " --seed 8").exit_code, 0);
+  EXPECT_NE(read_file(outdir() / "validation.csv"), first);
+}
+
+TEST_F(CliValidate, BadPlantOrSensorIsOneLineNamingTheFieldAndNothingIsWritten) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"plant: {stiffnes_scale: 0.85}\n", "plant.stiffnes_scale: unknown key"},
+      {"plant: {stiffness_scale: 0}\n", "plant.stiffness_scale = 0 must be > 0"},
+      {"sensor: {markers: 1}\n", "sensor.markers = 1 must be in [2, 1000]"},
+      {"sensor: {noise: {in_plane: -0.001}}\n", "sensor.noise.in_plane = -0.001 must be >= 0"},
+      {"sensor: {dropout: 1.5}\n", "sensor.dropout = 1.5 must be in [0, 1]"},
+      {"sensor: {wrench_noise: {force: -1}}\n", "sensor.wrench_noise.force = -1 must be >= 0"},
+  };
+  for (const auto& [section, message] : cases) {
+    SCOPED_TRACE(section);
+    fs::remove_all(outdir());
+    const Outcome result = validate(kTask + section);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(outdir()));
+  }
+  EXPECT_EQ(validate(kTask, " --runs 0").exit_code, 2);
+}
+
+}  // namespace
