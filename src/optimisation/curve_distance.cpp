@@ -201,23 +201,42 @@ Matrix36d tangent_derivative(const ClampedRod& rod, const RodConfiguration& c, i
 
 }  // namespace
 
+namespace {
+
+/// dΓ/dw at (interval i, t): the Hermite interpolant of dp_i/dw and h d(p'_i)/dw.
+Matrix36d hermite_jacobian(const ClampedRod& rod, const RodConfiguration& c, int i, double t) {
+  const double h = c.s[i + 1] - c.s[i];
+  // Hermite basis at t.
+  const double t2 = t * t, t3 = t2 * t;
+  const double h00 = 2.0 * t3 - 3.0 * t2 + 1.0, h10 = t3 - 2.0 * t2 + t;
+  const double h01 = -2.0 * t3 + 3.0 * t2, h11 = t3 - t2;
+  Matrix36d dgamma = h00 * c.dp_dw[i] + h01 * c.dp_dw[i + 1];
+  if (h10 != 0.0) dgamma += (h10 * h) * tangent_derivative(rod, c, i);
+  if (h11 != 0.0) dgamma += (h11 * h) * tangent_derivative(rod, c, i + 1);
+  return dgamma;
+}
+
+}  // namespace
+
+Matrix36d curve_point_jacobian(const ClampedRod& rod,
+                               const RodConfiguration& configuration,
+                               double s) {
+  const RodConfiguration& c = configuration;
+  if (c.nodes() < 2) return Matrix36d::Zero();
+  s = std::clamp(s, c.s.front(), c.s.back());
+  const auto upper = std::upper_bound(c.s.begin(), c.s.end(), s);
+  const int i = std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+  return hermite_jacobian(rod, c, i, (s - c.s[i]) / (c.s[i + 1] - c.s[i]));
+}
+
 Eigen::Matrix<double, 1, 6> distance_gradient(const ClampedRod& rod,
                                               const RodConfiguration& configuration,
                                               const CurveProjection& projection,
                                               const Eigen::Vector3d& point) {
   const RodConfiguration& c = configuration;
   if (projection.distance == 0.0 || c.nodes() < 2) return Eigen::Matrix<double, 1, 6>::Zero();
-  const int i = projection.interval;
-  const double t = projection.t;
-  const double h = c.s[i + 1] - c.s[i];
-  // Hermite basis at t.
-  const double t2 = t * t, t3 = t2 * t;
-  const double h00 = 2.0 * t3 - 3.0 * t2 + 1.0, h10 = t3 - 2.0 * t2 + t;
-  const double h01 = -2.0 * t3 + 3.0 * t2, h11 = t3 - t2;
   // dΓ(s)/dw at fixed s: the Hermite interpolant of the nodes' derivatives.
-  Matrix36d dgamma = h00 * c.dp_dw[i] + h01 * c.dp_dw[i + 1];
-  if (h10 != 0.0) dgamma += (h10 * h) * tangent_derivative(rod, c, i);
-  if (h11 != 0.0) dgamma += (h11 * h) * tangent_derivative(rod, c, i + 1);
+  const Matrix36d dgamma = hermite_jacobian(rod, c, projection.interval, projection.t);
   const Eigen::RowVector3d direction =
       (projection.closest - point).transpose() / projection.distance;
   return direction * dgamma;

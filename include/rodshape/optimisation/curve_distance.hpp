@@ -23,6 +23,12 @@ struct CurveProjection {
 /// are measured to).
 Eigen::Vector3d curve_point(const RodConfiguration& configuration, double s);
 
+/// dΓ(s)/dw at fixed s (s clamped to [0, L]): the Hermite interpolant of dp_i/dw and
+/// d(p'_i)/dw = R_i (δv_i - v_i × θ_i). `configuration` must carry Derivatives::AllNodes.
+Matrix36d curve_point_jacobian(const ClampedRod& rod,
+                               const RodConfiguration& configuration,
+                               double s);
+
 /// The bounding ball of one interval's Bézier control points: the segment of Γ lies inside it.
 struct IntervalBall {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();

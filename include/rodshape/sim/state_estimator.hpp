@@ -1,0 +1,63 @@
+// state_estimator.hpp: the rod's state from what the sensors see: the base wrench w = (n(0), m(0))
+// (and optionally a stiffness scale) that best explains the visible markers, the held tip pose and,
+// with a wrist sensor, the measured wrench, in the least-squares sense, each residual divided by
+// its standard deviation:
+//   min Σ_j |Σ_c⁻¹ R_cᵀ (Γ(s_j; w) - m_j)|² + |(p(L) - p_d)/σ_p|² + |log(R_dᵀ R(L))/σ_R|²
+//       + |(W(w) - W_meas)/σ_W|² + |(w - w_prior)/σ_prior|²,
+// solved by Levenberg–Marquardt with the integrator's exact derivatives in w (a forward difference
+// in the stiffness scale). The closed loop's checkpoint estimates the rod this way.
+#pragma once
+
+#include <string>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/pose.hpp"
+#include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/wrench.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
+
+namespace rodshape {
+
+struct EstimationOptions {
+  /// Also estimate a factor on every stiffness (identifiable from the wrist wrench, or from the
+  /// weight when the rod is loaded: scaling the stiffnesses and w together leaves a weightless
+  /// rod's shape unchanged).
+  bool estimate_stiffness = false;
+  double tip_position_sigma = 1e-4;  // m: how well the arm knows where it holds the tip
+  double tip_rotation_sigma = 1e-3;  // rad
+  /// The prior's standard deviation, in bending units (EI/L² for forces, EI/L for moments): weak,
+  /// it only picks the branch where the measurements do not.
+  double prior_sigma = 10.0;
+  double stiffness_prior_sigma = 1.0;  // on log(scale)
+  int max_iterations = 50;
+  void validate() const;
+};
+
+struct StateEstimate {
+  bool converged = false;
+  BaseWrench base_wrench;
+  double stiffness_scale = 1.0;
+  /// √(Σ r² / rows) of the weighted residuals: about 1 when the model explains the measurements to
+  /// their noise.
+  double residual = 0.0;
+  int iterations = 0;
+  RodConfiguration configuration;  // of the estimate (the model with the scale applied)
+  std::string message;
+};
+
+/// Estimates the state of `model` (the planner's rod) held at `tip` (the commanded tip pose) from
+/// the frame `seen` of `sensor`, the gripper at `end_effector` (for the wrist wrench), starting
+/// from and weakly pulled to `prior` and `stiffness_prior`.
+StateEstimate estimate_state(const ClampedRod& model,
+                             const Pose& tip,
+                             const Pose& end_effector,
+                             const SensorFrame& seen,
+                             const MarkerSensorModel& sensor,
+                             const BaseWrench& prior,
+                             double stiffness_prior = 1.0,
+                             const EstimationOptions& options = {});
+
+/// `rod` with every stiffness multiplied by `scale`.
+ClampedRod with_stiffness_scale(const ClampedRod& rod, double scale);
+
+}  // namespace rodshape

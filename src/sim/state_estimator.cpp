@@ -1,0 +1,228 @@
+// state_estimator.cpp: the weighted least-squares fit of the base wrench (and stiffness scale) to
+// the markers, the held tip pose, the wrist wrench and the prior (state_estimator.hpp).
+#include "rodshape/sim/state_estimator.hpp"
+
+#include <cmath>
+#include <optional>
+#include <unsupported/Eigen/LevenbergMarquardt>
+#include <vector>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/core/so3.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/optimisation/curve_distance.hpp"
+#include "validation.hpp"
+
+namespace rodshape {
+
+namespace {
+
+/// What the fit compares with: the visible markers (arc length, position), the held tip, the
+/// gripper and its measured wrench.
+struct Measurements {
+  std::vector<double> s;
+  std::vector<Eigen::Vector3d> markers;
+  Pose tip, end_effector;
+  std::optional<Wrench> wrist;
+};
+
+/// The residual r(x), x = (w, [log scale]), and its Jacobian, as Eigen's Levenberg–Marquardt
+/// sees them.
+class EstimationProblem : public Eigen::DenseFunctor<double> {
+ public:
+  EstimationProblem(const ClampedRod& model,
+                    const Measurements& data,
+                    const MarkerSensorModel& sensor,
+                    const Vector6d& prior,
+                    double log_scale_prior,
+                    const EstimationOptions& options)
+      : Eigen::DenseFunctor<double>(options.estimate_stiffness ? 7 : 6, rows(data, options)),
+        model_(model),
+        data_(data),
+        sensor_(sensor),
+        prior_(prior),
+        log_scale_prior_(log_scale_prior),
+        options_(options),
+        units_(model.properties.bending_wrench_units()) {}
+
+  static int rows(const Measurements& data, const EstimationOptions& options) {
+    return 3 * static_cast<int>(data.markers.size()) + 6 + (data.wrist ? 6 : 0) + 6 +
+           (options.estimate_stiffness ? 1 : 0);
+  }
+
+  double scale_of(const InputType& x) const {
+    return options_.estimate_stiffness ? std::exp(x(6)) : std::exp(log_scale_prior_);
+  }
+
+  int operator()(const InputType& x, ValueType& r) {
+    residual(x, r, nullptr);
+    if (!r.allFinite()) r.setConstant(r.size(), 1e150);  // a bad point: the trust region shrinks
+    return 0;
+  }
+
+  int df(const InputType& x, JacobianType& J) {
+    J.setZero(values(), inputs());
+    Eigen::VectorXd r(values());
+    residual(x, r, &J);
+    if (options_.estimate_stiffness) {  // forward difference in log(scale)
+      constexpr double h = 1e-6;
+      InputType shifted = x;
+      shifted(6) += h;
+      Eigen::VectorXd r_shifted(values());
+      residual(shifted, r_shifted, nullptr);
+      J.col(6) = (r_shifted - r) / h;
+    }
+    return 0;
+  }
+
+  /// r(x) and, with J, its columns in w from the integrator's derivatives.
+  void residual(const InputType& x, Eigen::VectorXd& r, JacobianType* J) {
+    const ClampedRod rod = with_stiffness_scale(model_, scale_of(x));
+    const Vector6d w = x.head<6>();
+    configuration_ =
+        integrate(rod, BaseWrench::from_vector(w), J ? Derivatives::AllNodes : Derivatives::None);
+    int row = 0;
+    markers(rod, r, J, row);
+    held_tip(r, J, row);
+    if (data_.wrist) wrist(r, J, row);
+    // The prior, in bending units.
+    r.segment<6>(row) = (w - prior_).cwiseQuotient(options_.prior_sigma * units_);
+    if (J) J->block<6, 6>(row, 0) = (options_.prior_sigma * units_).cwiseInverse().asDiagonal();
+    row += 6;
+    if (options_.estimate_stiffness) {
+      r(row) = (x(6) - log_scale_prior_) / options_.stiffness_prior_sigma;
+      if (J) (*J)(row, 6) = 0.0;  // set by the difference in df()
+      ++row;
+    }
+  }
+
+  const RodConfiguration& configuration() const { return configuration_; }
+
+ private:
+  /// Markers in the camera frame, each axis over its standard deviation.
+  void markers(const ClampedRod& rod, Eigen::VectorXd& r, JacobianType* J, int& row) const {
+    const Eigen::Matrix3d Rc = sensor_.camera.rotation.transpose();
+    const Eigen::Vector3d sigma(std::max(sensor_.in_plane_noise, 1e-6),
+                                std::max(sensor_.in_plane_noise, 1e-6),
+                                std::max(sensor_.depth_noise, 1e-6));
+    const Eigen::Matrix3d W = sigma.cwiseInverse().asDiagonal() * Rc;
+    for (std::size_t j = 0; j < data_.markers.size(); ++j, row += 3) {
+      r.segment<3>(row) = W * (curve_point(configuration_, data_.s[j]) - data_.markers[j]);
+      if (J) J->block<3, 6>(row, 0) = W * curve_point_jacobian(rod, configuration_, data_.s[j]);
+    }
+  }
+
+  /// The tip where the arm holds it: position and body-frame rotation error.
+  void held_tip(Eigen::VectorXd& r, JacobianType* J, int& row) const {
+    const Pose tip = configuration_.tip();
+    r.segment<3>(row) = (tip.position - data_.tip.position) / options_.tip_position_sigma;
+    r.segment<3>(row + 3) =
+        log_so3(data_.tip.rotation.transpose() * tip.rotation) / options_.tip_rotation_sigma;
+    if (J) {
+      J->block<3, 6>(row, 0) = configuration_.tip_dp_dw / options_.tip_position_sigma;
+      J->block<3, 6>(row + 3, 0) = configuration_.tip_dtheta_dw / options_.tip_rotation_sigma;
+    }
+    row += 6;
+  }
+
+  /// The rod's wrench on the gripper in its frame: -R_eeᵀ n(L), -R_eeᵀ (m(L) + (p(L) - p_ee) ×
+  /// n(L)).
+  void wrist(Eigen::VectorXd& r, JacobianType* J, int& row) const {
+    const Eigen::Matrix3d Rt = data_.end_effector.rotation.transpose();
+    const Wrench tip = configuration_.tip_wrench();
+    const Eigen::Vector3d arm = configuration_.tip().position - data_.end_effector.position;
+    const double sf = std::max(sensor_.wrist->force, 1e-9),
+                 sm = std::max(sensor_.wrist->moment, 1e-9);
+    r.segment<3>(row) = (-(Rt * tip.force) - data_.wrist->force) / sf;
+    r.segment<3>(row + 3) =
+        (-(Rt * (tip.moment + arm.cross(tip.force))) - data_.wrist->moment) / sm;
+    if (J) {
+      const RodConfiguration& c = configuration_;
+      J->block<3, 6>(row, 0) = -(Rt * c.tip_dn_dw) / sf;
+      J->block<3, 6>(row + 3, 0) =
+          -(Rt * (c.tip_dm_dw - hat(tip.force) * c.tip_dp_dw + hat(arm) * c.tip_dn_dw)) / sm;
+    }
+    row += 6;
+  }
+
+  const ClampedRod& model_;
+  const Measurements& data_;
+  const MarkerSensorModel& sensor_;
+  Vector6d prior_;
+  double log_scale_prior_;
+  const EstimationOptions& options_;
+  Vector6d units_;
+  RodConfiguration configuration_;
+};
+
+Measurements gather(const ClampedRod& model,
+                    const Pose& tip,
+                    const Pose& end_effector,
+                    const SensorFrame& seen,
+                    const MarkerSensorModel& sensor) {
+  Measurements data{{}, {}, tip, end_effector, seen.wrist};
+  const std::vector<double> s = sensor.arc_lengths(model.properties.length);
+  for (std::size_t j = 0; j < seen.markers.size() && j < s.size(); ++j) {
+    if (!seen.markers[j]) continue;
+    data.s.push_back(s[j]);
+    data.markers.push_back(*seen.markers[j]);
+  }
+  if (!sensor.wrist) data.wrist.reset();
+  return data;
+}
+
+}  // namespace
+
+void EstimationOptions::validate() const {
+  detail::require_positive("EstimationOptions.tip_position_sigma", tip_position_sigma);
+  detail::require_positive("EstimationOptions.tip_rotation_sigma", tip_rotation_sigma);
+  detail::require_positive("EstimationOptions.prior_sigma", prior_sigma);
+  detail::require_positive("EstimationOptions.stiffness_prior_sigma", stiffness_prior_sigma);
+  if (max_iterations < 1 || max_iterations > 1000)
+    throw InputError("EstimationOptions.max_iterations",
+                     " = " + std::to_string(max_iterations) + " must be in [1, 1000]");
+}
+
+ClampedRod with_stiffness_scale(const ClampedRod& rod, double scale) {
+  ClampedRod scaled = rod;
+  scaled.properties.K_tra *= scale;
+  scaled.properties.K_rot *= scale;
+  return scaled;
+}
+
+StateEstimate estimate_state(const ClampedRod& model,
+                             const Pose& tip,
+                             const Pose& end_effector,
+                             const SensorFrame& seen,
+                             const MarkerSensorModel& sensor,
+                             const BaseWrench& prior,
+                             double stiffness_prior,
+                             const EstimationOptions& options) {
+  options.validate();
+  detail::require_positive("stiffness_prior", stiffness_prior);
+  const Measurements data = gather(model, tip, end_effector, seen, sensor);
+  EstimationProblem problem(model, data, sensor, prior.to_vector(), std::log(stiffness_prior),
+                            options);
+  Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
+  lm.setMaxfev(10 * options.max_iterations);
+  Eigen::VectorXd x(problem.inputs());
+  x.head<6>() = prior.to_vector();
+  if (options.estimate_stiffness) x(6) = std::log(stiffness_prior);
+  const auto status = lm.minimize(x);
+
+  StateEstimate estimate;
+  Eigen::VectorXd r(problem.values());
+  problem.residual(x, r, nullptr);
+  estimate.base_wrench = BaseWrench::from_vector(x.head<6>());
+  estimate.stiffness_scale = problem.scale_of(x);
+  estimate.residual = std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
+  estimate.iterations = static_cast<int>(lm.iterations());
+  estimate.configuration = problem.configuration();
+  estimate.converged = r.allFinite() &&
+                       status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
+                       status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation;
+  estimate.message = estimate.converged ? "converged" : "the fit did not converge";
+  return estimate;
+}
+
+}  // namespace rodshape
