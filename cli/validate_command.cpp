@@ -44,6 +44,9 @@ class ValidateCommand final : public Command {
             "Repeats with the sensor's noise drawn anew (1 to 1000; the plant is the same)")
         ->check(CLI::Range(1, ValidationOptions::kMaxRuns));
     command->add_option("--seed", options_.seed, "Seed of the first run (run k: seed + k - 1)");
+    command->add_flag("--closed-loop", options_.closed_loop,
+                      "Close the loop: at each waypoint, estimate the rod from the sensors and "
+                      "re-plan the rest (the task's closed_loop section)");
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
     return command;
   }
@@ -61,7 +64,10 @@ class ValidateCommand final : public Command {
         write_plan(output_directory_, plan, task);
         return kPartialPlan;
       }
-      result = validate_plan(task.problem, plan, task.plant, task.sensor, options_);
+      ValidationOptions options = options_;
+      options.loop = task.closed_loop;
+      options.planning = task.options;
+      result = validate_plan(task.problem, plan, task.plant, task.sensor, options);
     } catch (const InputError& error) {
       throw InputError(task.locate(error));
     }

@@ -38,6 +38,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"MarkerSensorModel.depth_noise", "sensor.noise.depth"},
       {"MarkerSensorModel.wrist", "sensor.wrench_noise"},
       {"MarkerSensorModel", "sensor"},
+      {"EstimationOptions", "closed_loop"},
       // optimisation
       {"ShapeOptimiserOptions", "optimizer"},
       {"ShapeTarget.points", "target.points"},

@@ -70,4 +70,23 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
   return model;
 }
 
+ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
+  loop.expect_mapping({"estimate_stiffness", "gravity", "estimate_grasp_offset", "replan",
+                       "tip_position_sigma", "tip_rotation_sigma", "prior_sigma"});
+  ClosedLoopOptions options;
+  if (const YamlField offset = loop.get("estimate_grasp_offset"); offset.present())
+    options.estimate_grasp_offset = offset.boolean();
+  if (const YamlField estimate = loop.get("estimate_stiffness"); estimate.present())
+    options.estimation.estimate_stiffness = estimate.boolean();
+  if (const YamlField gravity = loop.get("gravity"); gravity.present())
+    options.estimation.gravity = gravity.vector3();
+  if (const YamlField replan = loop.get("replan"); replan.present())
+    options.replan = replan.boolean();
+  read_number_into(loop, "tip_position_sigma", options.estimation.tip_position_sigma);
+  read_number_into(loop, "tip_rotation_sigma", options.estimation.tip_rotation_sigma);
+  read_number_into(loop, "prior_sigma", options.estimation.prior_sigma);
+  loop.located([&] { options.estimation.validate(); });
+  return options;
+}
+
 }  // namespace rodshape::io_detail

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "io/yaml_field.hpp"
+#include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant_model.hpp"
 
@@ -16,5 +17,8 @@ PlantModel read_plant_section(const YamlField& plant);
 /// `sensor`: markers, noise {in_plane, depth}, dropout, frame_rate, camera (a pose),
 /// wrench_noise {force, moment} (absent: no wrist sensor).
 MarkerSensorModel read_sensor_section(const YamlField& sensor);
+
+/// `closed_loop`: estimate_stiffness, replan, tip_position_sigma, tip_rotation_sigma, prior_sigma.
+ClosedLoopOptions read_closed_loop_section(const YamlField& loop);
 
 }  // namespace rodshape::io_detail

@@ -55,7 +55,7 @@ const std::vector<std::string_view>& plan_sections() {
       "workspace", "grasp",         "initial",
       "limits",    "wrench_bounds", "trajectory",
       "optimizer", "robot",         "plant",
-      "sensor"};
+      "sensor",    "closed_loop"};
   return sections;
 }
 
@@ -160,6 +160,8 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     task.plant = io_detail::read_plant_section(plant);
   if (const YamlField sensor = root.get("sensor"); sensor.present())
     task.sensor = io_detail::read_sensor_section(sensor);
+  if (const YamlField loop = root.get("closed_loop"); loop.present())
+    task.closed_loop = io_detail::read_closed_loop_section(loop);
   if (const YamlField robot = root.get("robot"); robot.present()) {
     io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
                                   task);

@@ -56,10 +56,26 @@ Json events_array(const std::vector<PlantEvent>& events) {
   return list;
 }
 
-Json run_object(const ValidationRun& run, const ValidationResult& result) {
+Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
+  Json list = Json::array();
+  for (const Checkpoint& c : checkpoints)
+    list.push_back({{"time", c.t},
+                    {"waypoint", c.waypoint},
+                    {"base_wrench", io_detail::json_wrench(c.estimate.base_wrench)},
+                    {"stiffness_scale", c.estimate.stiffness_scale},
+                    {"load_factor", c.estimate.load_factor},
+                    {"grasp_offset", io_detail::json_pose(c.grasp_offset)},
+                    {"residual", json_number(c.estimate.residual)},
+                    {"converged", c.estimate.converged},
+                    {"replanned", c.replanned},
+                    {"message", c.message}});
+  return list;
+}
+
+Json run_object(const ValidationRun& run) {
   Json j;
   j["seed"] = run.seed;
-  j["closed_loop"] = false;
+  j["closed_loop"] = run.closed_loop;
   j["time"] = numbers(run.time);
   j["error_3d"] = numbers(run.error_3d);
   j["error_2d"] = numbers(run.error_2d);
@@ -69,9 +85,9 @@ Json run_object(const ValidationRun& run, const ValidationResult& result) {
                 {"error_2d", json_number(run.final.error_2d)},
                 {"true_error", json_number(run.final.true_error)},
                 {"true_max_distance", json_number(run.final.true_max_distance)}};
-  j["events"] = events_array(result.plant.events);
-  j["estimates"] = Json::array();  // the closed loop's checkpoints (none in open loop)
-  const PlantFrame& last = result.plant.last;
+  j["events"] = events_array(run.events);
+  j["estimates"] = checkpoints_array(run.checkpoints);  // none in open loop
+  const PlantFrame& last = run.plant_final;
   j["plant_final"] = {{"time", last.t},
                       {"base_wrench", io_detail::json_wrench(last.base_wrench)},
                       {"tip", io_detail::json_pose(last.configuration.tip())}};
@@ -95,7 +111,7 @@ std::string validation_json(const ValidationResult& result,
   j["sensor"] = sensor_object(task.sensor);
   j["plant_solves"] = result.plant.solves;
   Json runs = Json::array();
-  for (const ValidationRun& run : result.runs) runs.push_back(run_object(run, result));
+  for (const ValidationRun& run : result.runs) runs.push_back(run_object(run));
   j["runs"] = std::move(runs);
   return io_detail::format_json(j);
 }

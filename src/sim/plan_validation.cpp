@@ -32,22 +32,59 @@ ValidationRun observe_run(const ValidationResult& result,
     run.frames.push_back(std::move(seen));
     run.final = error;
   }
+  run.events = result.plant.events;
+  run.plant_final = result.plant.last;
   return run;
 }
 
-/// Stage 4: the status from the plant's events.
+/// One closed-loop run: its own plant, driven segment by segment with a checkpoint at each
+/// waypoint.
+ValidationRun closed_loop_run(const PlanProblem& problem,
+                              const PlanResult& plan,
+                              const PlantModel& plant,
+                              const MarkerSensorModel& sensor,
+                              const ValidationOptions& options,
+                              const ClampedRod& real,
+                              std::uint64_t seed,
+                              PlantRun& plant_run) {
+  MarkerSensor camera(sensor, seed);
+  ClosedLoopRun loop = run_closed_loop(problem, options.planning, plan, real, plant.grasp_offset,
+                                       camera, options.loop, options.plant);
+  ValidationRun run;
+  run.seed = seed;
+  run.closed_loop = true;
+  for (std::size_t k = 0; k < loop.errors.size(); ++k) {
+    const ShapeError& error = loop.errors[k];
+    run.time.push_back(loop.frames[k].t);
+    run.error_3d.push_back(error.error_3d);
+    run.error_2d.push_back(error.error_2d);
+    run.true_error.push_back(error.true_error);
+    run.visible_markers.push_back(error.visible_markers);
+    run.final = error;
+  }
+  run.frames = std::move(loop.frames);
+  run.checkpoints = std::move(loop.checkpoints);
+  run.events = loop.plant.events;
+  run.plant_final = loop.plant.last;
+  plant_run = std::move(loop.plant);
+  return run;
+}
+
+/// Stage 4: the status from the plant's events in every run (a loss outweighs a snap).
 void judge(ValidationResult& result) {
   result.status = ValidationStatus::Complete;
   result.message = "the plant followed the whole path";
-  for (const PlantEvent& event : result.plant.events) {
-    if (event.kind == PlantEvent::Kind::Lost) {
-      result.status = ValidationStatus::Lost;
-      result.message = event.message;
-      return;
-    }
-    if (result.status == ValidationStatus::Complete) {
-      result.status = ValidationStatus::SnapThrough;
-      result.message = event.message;
+  for (const ValidationRun& run : result.runs) {
+    for (const PlantEvent& event : run.events) {
+      if (event.kind == PlantEvent::Kind::Lost) {
+        result.status = ValidationStatus::Lost;
+        result.message = event.message;
+        return;
+      }
+      if (result.status == ValidationStatus::Complete) {
+        result.status = ValidationStatus::SnapThrough;
+        result.message = event.message;
+      }
     }
   }
 }
@@ -117,9 +154,17 @@ ValidationResult validate_plan(const PlanProblem& problem,
   result.plant =
       drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
                   frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
-  for (int k = 0; k < options.runs; ++k)
-    result.runs.push_back(observe_run(result, problem.target.points, sensor,
-                                      options.seed + static_cast<std::uint64_t>(k)));
+  for (int k = 0; k < options.runs; ++k) {
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
+    if (!options.closed_loop) {
+      result.runs.push_back(observe_run(result, problem.target.points, sensor, seed));
+      continue;
+    }
+    PlantRun plant_run;
+    result.runs.push_back(
+        closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run));
+    if (k == 0) result.plant = std::move(plant_run);
+  }
   judge(result);
   return result;
 }

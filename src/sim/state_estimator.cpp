@@ -33,25 +33,39 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
   EstimationProblem(const ClampedRod& model,
                     const Measurements& data,
                     const MarkerSensorModel& sensor,
-                    const Vector6d& prior,
-                    double log_scale_prior,
+                    const StatePrior& prior,
                     const EstimationOptions& options)
-      : Eigen::DenseFunctor<double>(options.estimate_stiffness ? 7 : 6, rows(data, options)),
+      : Eigen::DenseFunctor<double>(unknowns(options), rows(data, options)),
         model_(model),
         data_(data),
         sensor_(sensor),
         prior_(prior),
-        log_scale_prior_(log_scale_prior),
         options_(options),
-        units_(model.properties.bending_wrench_units()) {}
+        units_(model.properties.bending_wrench_units()),
+        scale_index_(options.estimate_stiffness ? 6 : -1),
+        load_index_(options.gravity ? (options.estimate_stiffness ? 7 : 6) : -1) {}
 
+  static int unknowns(const EstimationOptions& options) {
+    return 6 + (options.estimate_stiffness ? 1 : 0) + (options.gravity ? 1 : 0);
+  }
   static int rows(const Measurements& data, const EstimationOptions& options) {
     return 3 * static_cast<int>(data.markers.size()) + 6 + (data.wrist ? 6 : 0) + 6 +
-           (options.estimate_stiffness ? 1 : 0);
+           (unknowns(options) - 6);
   }
 
+  /// x = (w, [log scale], [λ]) from the prior.
+  InputType start() const {
+    InputType x(inputs());
+    x.head<6>() = prior_.base_wrench.to_vector();
+    if (scale_index_ >= 0) x(scale_index_) = std::log(prior_.stiffness_scale);
+    if (load_index_ >= 0) x(load_index_) = prior_.load_factor;
+    return x;
+  }
   double scale_of(const InputType& x) const {
-    return options_.estimate_stiffness ? std::exp(x(6)) : std::exp(log_scale_prior_);
+    return scale_index_ >= 0 ? std::exp(x(scale_index_)) : prior_.stiffness_scale;
+  }
+  double load_of(const InputType& x) const {
+    return load_index_ >= 0 ? x(load_index_) : prior_.load_factor;
   }
 
   int operator()(const InputType& x, ValueType& r) {
@@ -64,20 +78,22 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     J.setZero(values(), inputs());
     Eigen::VectorXd r(values());
     residual(x, r, &J);
-    if (options_.estimate_stiffness) {  // forward difference in log(scale)
+    for (const int j : {scale_index_, load_index_}) {  // forward differences in log(scale), λ
+      if (j < 0) continue;
       constexpr double h = 1e-6;
       InputType shifted = x;
-      shifted(6) += h;
+      shifted(j) += h;
       Eigen::VectorXd r_shifted(values());
       residual(shifted, r_shifted, nullptr);
-      J.col(6) = (r_shifted - r) / h;
+      J.col(j) = (r_shifted - r) / h;
     }
+    residual(x, r, nullptr);  // leave the configuration at x
     return 0;
   }
 
   /// r(x) and, with J, its columns in w from the integrator's derivatives.
   void residual(const InputType& x, Eigen::VectorXd& r, JacobianType* J) {
-    const ClampedRod rod = with_stiffness_scale(model_, scale_of(x));
+    const ClampedRod rod = estimated_rod(model_, scale_of(x), load_of(x), options_.gravity);
     const Vector6d w = x.head<6>();
     configuration_ =
         integrate(rod, BaseWrench::from_vector(w), J ? Derivatives::AllNodes : Derivatives::None);
@@ -86,14 +102,16 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     held_tip(r, J, row);
     if (data_.wrist) wrist(r, J, row);
     // The prior, in bending units.
-    r.segment<6>(row) = (w - prior_).cwiseQuotient(options_.prior_sigma * units_);
+    r.segment<6>(row) =
+        (w - prior_.base_wrench.to_vector()).cwiseQuotient(options_.prior_sigma * units_);
     if (J) J->block<6, 6>(row, 0) = (options_.prior_sigma * units_).cwiseInverse().asDiagonal();
     row += 6;
-    if (options_.estimate_stiffness) {
-      r(row) = (x(6) - log_scale_prior_) / options_.stiffness_prior_sigma;
-      if (J) (*J)(row, 6) = 0.0;  // set by the difference in df()
-      ++row;
-    }
+    // The priors of the scale and λ (their columns are differenced in df()).
+    if (scale_index_ >= 0)
+      r(row++) =
+          (x(scale_index_) - std::log(prior_.stiffness_scale)) / options_.stiffness_prior_sigma;
+    if (load_index_ >= 0)
+      r(row++) = (x(load_index_) - prior_.load_factor) / options_.load_prior_sigma;
   }
 
   const RodConfiguration& configuration() const { return configuration_; }
@@ -148,10 +166,10 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
   const ClampedRod& model_;
   const Measurements& data_;
   const MarkerSensorModel& sensor_;
-  Vector6d prior_;
-  double log_scale_prior_;
+  StatePrior prior_;
   const EstimationOptions& options_;
   Vector6d units_;
+  int scale_index_, load_index_;
   RodConfiguration configuration_;
 };
 
@@ -178,6 +196,8 @@ void EstimationOptions::validate() const {
   detail::require_positive("EstimationOptions.tip_rotation_sigma", tip_rotation_sigma);
   detail::require_positive("EstimationOptions.prior_sigma", prior_sigma);
   detail::require_positive("EstimationOptions.stiffness_prior_sigma", stiffness_prior_sigma);
+  if (gravity) detail::require_finite("EstimationOptions.gravity", *gravity);
+  detail::require_positive("EstimationOptions.load_prior_sigma", load_prior_sigma);
   if (max_iterations < 1 || max_iterations > 1000)
     throw InputError("EstimationOptions.max_iterations",
                      " = " + std::to_string(max_iterations) + " must be in [1, 1000]");
@@ -190,24 +210,33 @@ ClampedRod with_stiffness_scale(const ClampedRod& rod, double scale) {
   return scaled;
 }
 
+ClampedRod estimated_rod(const ClampedRod& rod,
+                         double scale,
+                         double load_factor,
+                         const std::optional<Eigen::Vector3d>& gravity) {
+  ClampedRod estimated = with_stiffness_scale(rod, scale);
+  if (gravity) estimated.load.force += load_factor * rod.properties.mass_per_length * *gravity;
+  return estimated;
+}
+
 StateEstimate estimate_state(const ClampedRod& model,
                              const Pose& tip,
                              const Pose& end_effector,
                              const SensorFrame& seen,
                              const MarkerSensorModel& sensor,
-                             const BaseWrench& prior,
-                             double stiffness_prior,
+                             const StatePrior& prior,
                              const EstimationOptions& options) {
   options.validate();
-  detail::require_positive("stiffness_prior", stiffness_prior);
+  detail::require_positive("StatePrior.stiffness_scale", prior.stiffness_scale);
+  detail::require_finite("StatePrior.load_factor", prior.load_factor);
+  if (options.gravity && !(model.properties.mass_per_length > 0.0))
+    throw InputError("EstimationOptions.gravity",
+                     ": the rod's mass per length is not known, so its weight cannot be estimated");
   const Measurements data = gather(model, tip, end_effector, seen, sensor);
-  EstimationProblem problem(model, data, sensor, prior.to_vector(), std::log(stiffness_prior),
-                            options);
+  EstimationProblem problem(model, data, sensor, prior, options);
   Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
   lm.setMaxfev(10 * options.max_iterations);
-  Eigen::VectorXd x(problem.inputs());
-  x.head<6>() = prior.to_vector();
-  if (options.estimate_stiffness) x(6) = std::log(stiffness_prior);
+  Eigen::VectorXd x = problem.start();
   const auto status = lm.minimize(x);
 
   StateEstimate estimate;
@@ -215,6 +244,7 @@ StateEstimate estimate_state(const ClampedRod& model,
   problem.residual(x, r, nullptr);
   estimate.base_wrench = BaseWrench::from_vector(x.head<6>());
   estimate.stiffness_scale = problem.scale_of(x);
+  estimate.load_factor = problem.load_of(x);
   estimate.residual = std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
   estimate.iterations = static_cast<int>(lm.iterations());
   estimate.configuration = problem.configuration();

@@ -36,7 +36,7 @@ TEST(StateEstimator, RecoversTheBaseWrenchFromNoiseFreeMarkers) {
   MarkerSensor sensor(noiseless(), 1);
   const SensorFrame seen = look(rod, kTrue, sensor);
   const Pose tip = integrate(rod, kTrue).tip();
-  const StateEstimate estimate = estimate_state(rod, tip, tip, seen, noiseless(), off_prior(rod));
+  const StateEstimate estimate = estimate_state(rod, tip, tip, seen, noiseless(), {off_prior(rod)});
   ASSERT_TRUE(estimate.converged) << estimate.message;
   // The markers, the tip and the model are exact; only the weak prior (σ = 10 bending units, 0.3
   // away) pulls: its weight against the markers' (σ floor 1e-6 m) leaves w within ~1e-9 relative.
@@ -60,7 +60,7 @@ TEST(StateEstimator, RecoversTheStiffnessScaleWithTheWristSensor) {
   options.estimate_stiffness = true;
   model.wrist = WristNoise{1e-3, 1e-4};  // the fit's weights
   const StateEstimate estimate =
-      estimate_state(rod, tip, tip, seen, model, off_prior(rod), 1.0, options);
+      estimate_state(rod, tip, tip, seen, model, {off_prior(rod)}, options);
   ASSERT_TRUE(estimate.converged) << estimate.message;
   EXPECT_NEAR(estimate.stiffness_scale, 0.85, 1e-6);
   EXPECT_LT((estimate.base_wrench.to_vector() - w_real.to_vector()).norm(),
@@ -77,7 +77,7 @@ TEST(StateEstimator, IsUnbiasedOverNoisySeeds) {
   for (int k = 0; k < kSeeds; ++k) {
     MarkerSensor sensor(MarkerSensorModel{}, 100 + k);
     const SensorFrame seen = look(rod, kTrue, sensor);
-    const StateEstimate e = estimate_state(rod, tip, tip, seen, MarkerSensorModel{}, kTrue);
+    const StateEstimate e = estimate_state(rod, tip, tip, seen, MarkerSensorModel{}, {kTrue});
     ASSERT_TRUE(e.converged);
     estimates.col(k) = e.base_wrench.to_vector();
   }

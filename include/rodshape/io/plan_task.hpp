@@ -9,6 +9,7 @@
 #include <string>
 
 #include "rodshape/error.hpp"
+#include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant_model.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -20,7 +21,8 @@ struct PlanTask {
   PlanOptions options;  // trajectory.steps (n_inter), optimizer, end-effector limits, robot.reach
   PlantModel plant;     // the real rod of `rodshape validate` (the planner's by default)
   MarkerSensorModel sensor;  // what sees it (10 markers, a Kinect-like camera, no wrist sensor)
-  std::string source;        // the file name that messages name
+  ClosedLoopOptions closed_loop;  // `rodshape validate --closed-loop`: estimation and re-plans
+  std::string source;             // the file name that messages name
   /// The line of each key of the file, two levels deep ("initial" → 14, "initial.tip" → 15).
   std::map<std::string, int> lines;
 

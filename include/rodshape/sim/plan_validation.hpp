@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
 #include "rodshape/sim/plant_model.hpp"
@@ -25,6 +26,11 @@ struct ValidationOptions {
   int runs = 1;                              // 1 ≤ runs ≤ kMaxRuns
   std::uint64_t seed = 1;                    // run k's sensor is seeded with seed + k
   PlantOptions plant;
+  /// Close the loop: a checkpoint at every waypoint (estimate, re-plan the rest: run_closed_loop).
+  /// Each run then drives its own plant, since what it sees changes what it does.
+  bool closed_loop = false;
+  ClosedLoopOptions loop;
+  PlanOptions planning;  // the options of the closed loop's re-plans (the plan's own)
   /// Throws InputError naming the field.
   void validate() const;
 };
@@ -36,6 +42,10 @@ struct ValidationRun {
   std::vector<int> visible_markers;
   std::vector<SensorFrame> frames;  // what the sensor saw
   ShapeError final;                 // at the last frame
+  bool closed_loop = false;
+  std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
+  std::vector<PlantEvent> events;       // the plant's, in this run
+  PlantFrame plant_final;               // the plant's last equilibrium in this run
 };
 
 enum class ValidationStatus {
@@ -49,7 +59,7 @@ struct ValidationResult {
   ValidationStatus status = ValidationStatus::Lost;
   std::string message;
   ClampedRod real_rod;  // the plant's rod (PlantModel::real_rod of the planner's)
-  PlantRun plant;       // its frames, events and last equilibrium
+  PlantRun plant;       // its frames, events and last equilibrium (closed loop: the first run's)
   std::vector<ValidationRun> runs;
   /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run".
   std::string brief() const;

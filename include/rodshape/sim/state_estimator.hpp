@@ -8,6 +8,7 @@
 // in the stiffness scale). The closed loop's checkpoint estimates the rod this way.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "rodshape/core/clamped_rod.hpp"
@@ -29,14 +30,27 @@ struct EstimationOptions {
   /// it only picks the branch where the measurements do not.
   double prior_sigma = 10.0;
   double stiffness_prior_sigma = 1.0;  // on log(scale)
+  /// The gravity the model may lack (m/s², world frame): given, a factor λ on the rod's weight
+  /// ρA g is estimated too (the planner's model neglects the weight: λ = 0; the real band's is
+  /// λ = 1). Needs the rod's mass per length.
+  std::optional<Eigen::Vector3d> gravity;
+  double load_prior_sigma = 1.0;  // on λ
   int max_iterations = 50;
   void validate() const;
+};
+
+/// Where the fit starts and what it is weakly pulled to.
+struct StatePrior {
+  BaseWrench base_wrench;
+  double stiffness_scale = 1.0;
+  double load_factor = 0.0;  // λ
 };
 
 struct StateEstimate {
   bool converged = false;
   BaseWrench base_wrench;
   double stiffness_scale = 1.0;
+  double load_factor = 0.0;  // λ (with EstimationOptions::gravity)
   /// √(Σ r² / rows) of the weighted residuals: about 1 when the model explains the measurements to
   /// their noise.
   double residual = 0.0;
@@ -47,17 +61,22 @@ struct StateEstimate {
 
 /// Estimates the state of `model` (the planner's rod) held at `tip` (the commanded tip pose) from
 /// the frame `seen` of `sensor`, the gripper at `end_effector` (for the wrist wrench), starting
-/// from and weakly pulled to `prior` and `stiffness_prior`.
+/// from and weakly pulled to `prior`.
 StateEstimate estimate_state(const ClampedRod& model,
                              const Pose& tip,
                              const Pose& end_effector,
                              const SensorFrame& seen,
                              const MarkerSensorModel& sensor,
-                             const BaseWrench& prior,
-                             double stiffness_prior = 1.0,
+                             const StatePrior& prior,
                              const EstimationOptions& options = {});
 
 /// `rod` with every stiffness multiplied by `scale`.
 ClampedRod with_stiffness_scale(const ClampedRod& rod, double scale);
+/// `rod` (the planner's model) as an estimate says it is: stiffnesses scaled by `scale`, and its
+/// weight λ ρA g added (with `gravity`).
+ClampedRod estimated_rod(const ClampedRod& rod,
+                         double scale,
+                         double load_factor,
+                         const std::optional<Eigen::Vector3d>& gravity);
 
 }  // namespace rodshape

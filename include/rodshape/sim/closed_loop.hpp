@@ -1,0 +1,70 @@
+// closed_loop.hpp: the paper's stated next step. The plan is carried out waypoint by waypoint; at
+// each waypoint (a checkpoint) the rod's state is estimated from what the sensors see
+// (estimate_state: base wrench and, optionally, a stiffness scale) and the rest of the plan is made
+// again from the estimated equilibrium with the updated model (plan() with
+// InitialState::equilibrium and as many steps as remain).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/sim/plant.hpp"
+#include "rodshape/sim/shape_error.hpp"
+#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/trajectory/plan_options.hpp"
+#include "rodshape/trajectory/plan_problem.hpp"
+#include "rodshape/trajectory/plan_result.hpp"
+
+namespace rodshape {
+
+struct ClosedLoopOptions {
+  EstimationOptions estimation;
+  /// Re-plan the remaining steps from each estimate (false: estimate only, the plan unchanged).
+  bool replan = true;
+  /// Also estimate where the gripper really holds the tip: the tip pose is then fitted with the
+  /// standard deviations below around the pose believed so far (instead of
+  /// estimation.tip_position_sigma around the commanded one), and the re-plans use the corrected
+  /// grasp (tip_T_ee = offset⁻¹ · tip_T_ee), so that the commanded poses put the real tip where
+  /// the plan wants it.
+  bool estimate_grasp_offset = true;
+  /// Frames averaged at each checkpoint: the arm rests there (the path is rest to rest at every
+  /// waypoint) for checkpoint_frames / frame_rate seconds, and each marker's visible positions are
+  /// averaged, dividing the noise by √checkpoint_frames. 1 ≤ checkpoint_frames ≤ 1000.
+  int checkpoint_frames = 15;
+  double grasp_offset_position_sigma = 5e-3;  // m
+  double grasp_offset_rotation_sigma = 0.05;  // rad
+};
+
+/// One checkpoint: what was estimated and what was done with it.
+struct Checkpoint {
+  double t = 0.0;    // s
+  int waypoint = 0;  // 1 … n - 1: the waypoint just reached
+  StateEstimate estimate;
+  Pose grasp_offset;  // believed after this checkpoint (identity unless estimated)
+  bool replanned = false;
+  std::string message;  // the re-plan's brief, or why the plan was kept
+};
+
+/// A closed-loop run: the plant as driven, what the sensor saw and the errors at each frame, the
+/// checkpoints.
+struct ClosedLoopRun {
+  PlantRun plant;
+  std::vector<SensorFrame> frames;
+  std::vector<ShapeError> errors;  // one per frame
+  std::vector<Checkpoint> checkpoints;
+};
+
+/// Carries out `plan` (of `problem`, made with `options`) on `rod` (the real one, held with
+/// `grasp_offset`) seen by `sensor`, with a checkpoint at every waypoint but the last.
+ClosedLoopRun run_closed_loop(const PlanProblem& problem,
+                              const PlanOptions& options,
+                              const PlanResult& plan,
+                              const ClampedRod& rod,
+                              const Pose& grasp_offset,
+                              MarkerSensor& sensor,
+                              const ClosedLoopOptions& loop = {},
+                              const PlantOptions& plant_options = {});
+
+}  // namespace rodshape

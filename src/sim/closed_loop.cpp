@@ -1,0 +1,220 @@
+// closed_loop.cpp: segment by segment along the waypoints, with an estimate and a re-plan at each
+// checkpoint (closed_loop.hpp).
+#include "rodshape/sim/closed_loop.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "rodshape/error.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace rodshape {
+
+namespace {
+
+/// The frame times of the global grid k / rate within (t0, t1], and t1 itself.
+std::vector<double> frames_within(double t0, double t1, double rate, bool include_start) {
+  std::vector<double> times;
+  if (include_start) times.push_back(t0);
+  for (double k = std::floor(t0 * rate) + 1.0; k / rate < t1; k += 1.0)
+    if (k / rate > t0) times.push_back(k / rate);
+  if (times.empty() || times.back() < t1) times.push_back(t1);
+  return times;
+}
+
+/// The waypoints still ahead and the planned base wrench at each (the estimator's prior).
+struct Remaining {
+  std::vector<Pose> end_effector;
+  std::vector<BaseWrench> wrench;
+  void take(const std::vector<PlanStep>& steps) {
+    end_effector.clear();
+    wrench.clear();
+    for (const PlanStep& step : steps) {
+      end_effector.push_back(step.end_effector);
+      wrench.push_back(step.solution.base_wrench);
+    }
+  }
+  void pop() {
+    end_effector.erase(end_effector.begin());
+    wrench.erase(wrench.begin());
+  }
+};
+
+class Loop {
+ public:
+  Loop(const PlanProblem& problem,
+       const PlanOptions& options,
+       const ClampedRod& rod,
+       const Pose& offset,
+       MarkerSensor& sensor,
+       const ClosedLoopOptions& loop,
+       const PlantOptions& plant)
+      : problem_(problem),
+        options_(options),
+        rod_(rod),
+        plant_offset_(offset),
+        sensor_(sensor),
+        loop_(loop),
+        plant_(plant) {}
+
+  ClosedLoopRun run(const PlanResult& plan) {
+    remaining_.take(plan.steps);
+    Pose from = plan.end_effector_path.front().pose;
+    BaseWrench w = plan.initial_wrench;
+    double t = plan.end_effector_path.front().t;
+    for (int waypoint = 1; !remaining_.end_effector.empty(); ++waypoint) {
+      const PlantRun part = drive_segment(from, w, t, waypoint == 1);
+      if (part.lost) break;
+      from = remaining_.end_effector.front();
+      w = part.last.base_wrench;
+      t = part.last.t;
+      const BaseWrench planned = remaining_.wrench.front();
+      remaining_.pop();
+      if (!remaining_.end_effector.empty()) checkpoint(t, waypoint, from, planned);
+    }
+    return std::move(run_);
+  }
+
+ private:
+  /// The plant from `from` to the next waypoint, its frames seen and their errors recorded.
+  PlantRun drive_segment(const Pose& from, const BaseWrench& w, double t, bool first) {
+    std::vector<TimedPose> path =
+        time_parameterize({from, remaining_.end_effector.front()}, options_.end_effector);
+    for (TimedPose& sample : path) sample.t += t;
+    const double rate = sensor_.model().frame_rate;
+    PlantRun part = drive_plant(rod_, problem_.grasp, plant_offset_, path, w,
+                                frames_within(t, path.back().t, rate, first), plant_);
+    for (const PlantFrame& frame : part.frames) {
+      run_.frames.push_back(sensor_.observe(frame, rod_.properties.length));
+      run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position,
+                                        run_.frames.back(), frame.configuration,
+                                        sensor_.model().camera));
+    }
+    append(part);
+    return part;
+  }
+
+  void append(const PlantRun& part) {
+    PlantRun& all = run_.plant;
+    all.frames.insert(all.frames.end(), part.frames.begin(), part.frames.end());
+    all.events.insert(all.events.end(), part.events.begin(), part.events.end());
+    all.solves += part.solves;
+    all.lost = part.lost;
+    all.last = part.last;
+  }
+
+  /// The arm rests at the waypoint for checkpoint_frames frames (recorded with their errors); the
+  /// markers seen are averaged. Returns the averaged frame; `t` moves to the end of the rest.
+  SensorFrame dwell(double& t) {
+    const int n = loop_.checkpoint_frames;
+    const double rate = sensor_.model().frame_rate;
+    PlantFrame still = run_.plant.last;
+    std::vector<Eigen::Vector3d> sum(run_.frames.back().markers.size(), Eigen::Vector3d::Zero());
+    std::vector<int> count(sum.size(), 0);
+    SensorFrame mean = run_.frames.back();
+    for (int k = 0; k < n; ++k) {
+      if (k > 0) {
+        still.t = t + k / rate;
+        run_.frames.push_back(sensor_.observe(still, rod_.properties.length));
+        run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position,
+                                          run_.frames.back(), still.configuration,
+                                          sensor_.model().camera));
+        run_.plant.frames.push_back(still);
+      }
+      const SensorFrame& seen = run_.frames.back();
+      for (std::size_t j = 0; j < sum.size(); ++j)
+        if (seen.markers[j]) {
+          sum[j] += *seen.markers[j];
+          ++count[j];
+        }
+    }
+    for (std::size_t j = 0; j < sum.size(); ++j)
+      mean.markers[j] =
+          count[j] > 0 ? std::optional<Eigen::Vector3d>(sum[j] / count[j]) : std::nullopt;
+    t += (n - 1) / rate;
+    run_.plant.last.t = t;
+    return mean;
+  }
+
+  /// Estimate from the frames at rest; re-plan the remaining steps from the estimate.
+  void checkpoint(double& t, int waypoint, const Pose& end_effector, const BaseWrench& planned) {
+    const SensorFrame seen = dwell(t);
+    MarkerSensorModel averaged = sensor_.model();  // the weights of the averaged markers
+    const double root_n = std::sqrt(static_cast<double>(loop_.checkpoint_frames));
+    averaged.in_plane_noise /= root_n;
+    averaged.depth_noise /= root_n;
+    Checkpoint c;
+    c.t = t;
+    c.waypoint = waypoint;
+    // The tip where the gripper is believed to hold it.
+    const Pose commanded = compose(end_effector, inverse(problem_.grasp.tip_to_end_effector));
+    EstimationOptions estimation = loop_.estimation;
+    if (loop_.estimate_grasp_offset) {
+      estimation.tip_position_sigma = loop_.grasp_offset_position_sigma;
+      estimation.tip_rotation_sigma = loop_.grasp_offset_rotation_sigma;
+    }
+    c.estimate = estimate_state(problem_.rod, compose(commanded, offset_), end_effector, seen,
+                                averaged, {planned, scale_, load_}, estimation);
+    if (c.estimate.converged) {
+      scale_ = c.estimate.stiffness_scale;
+      load_ = c.estimate.load_factor;
+      if (loop_.estimate_grasp_offset)
+        offset_ = compose(inverse(commanded), c.estimate.configuration.tip());
+    }
+    c.grasp_offset = offset_;
+    c.message = "plan kept";
+    if (loop_.replan && c.estimate.converged) replan(c);
+    run_.checkpoints.push_back(std::move(c));
+  }
+
+  void replan(Checkpoint& c) {
+    PlanProblem rest = problem_;
+    rest.rod = estimated_rod(problem_.rod, scale_, load_, loop_.estimation.gravity);
+    rest.initial = InitialState::equilibrium(c.estimate.base_wrench);
+    // Commanded end-effector poses that put the real tip (commanded · offset) where the plan wants.
+    rest.grasp.tip_to_end_effector = compose(inverse(offset_), problem_.grasp.tip_to_end_effector);
+    rest.arm.reset();  // the arm's joint trajectory is not needed to correct the rod's path
+    PlanOptions options = options_;
+    options.steps = static_cast<int>(remaining_.end_effector.size());
+    options.track_between_waypoints = false;
+    try {
+      const PlanResult again = plan(rest, options);
+      c.message = again.brief(options.steps);
+      if (again.status != PlanStatus::Complete) return;
+      remaining_.take(again.steps);
+      c.replanned = true;
+    } catch (const InputError& error) {
+      c.message = std::string("plan kept: the re-plan was refused: ") + error.what();
+    }
+  }
+
+  const PlanProblem& problem_;
+  const PlanOptions& options_;
+  const ClampedRod& rod_;
+  const Pose& plant_offset_;  // the real one, which the plant has and the loop does not know
+  MarkerSensor& sensor_;
+  const ClosedLoopOptions& loop_;
+  const PlantOptions& plant_;
+  Remaining remaining_;
+  double scale_ = 1.0, load_ = 0.0;  // the model's corrections so far
+  Pose offset_;                      // the grasp offset believed so far
+  ClosedLoopRun run_;
+};
+
+}  // namespace
+
+ClosedLoopRun run_closed_loop(const PlanProblem& problem,
+                              const PlanOptions& options,
+                              const PlanResult& plan,
+                              const ClampedRod& rod,
+                              const Pose& grasp_offset,
+                              MarkerSensor& sensor,
+                              const ClosedLoopOptions& loop,
+                              const PlantOptions& plant_options) {
+  if (plan.end_effector_path.empty() || plan.steps.empty())
+    throw InputError("PlanResult.steps", ": the plan has no step to carry out");
+  Loop runner(problem, options, rod, grasp_offset, sensor, loop, plant_options);
+  return runner.run(plan);
+}
+
+}  // namespace rodshape
