@@ -1,0 +1,78 @@
+// Benchmarks of the closed loop's checkpoint on the paper's experiment (the band at N = 100, ten
+// objective points, seven steps): the state estimate from ten markers, and the re-plan of the
+// remaining steps from it. One checkpoint is one estimate plus one re-plan.
+#include <benchmark/benchmark.h>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace {
+
+using namespace rodshape;
+
+struct Scene {
+  PlanProblem problem;
+  PlanResult plan;
+  Scene() {
+    problem.rod = samples::rubber_band();
+    const RodConfiguration fine = integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200),
+                                            {{-0.6, 0.2, 0.0}, {0.02, 0.12, 0.01}});
+    for (int i = 0; i < 10; ++i) problem.target.points.push_back(fine.p[20 * i + 10]);
+    problem.target.energy_weight = 1e-3;
+    problem.target.distance_weight = 1.0;
+    PlanOptions options;
+    options.steps = 7;
+    plan = rodshape::plan(problem, options);
+  }
+};
+
+const Scene& scene() {
+  static const Scene s;
+  return s;
+}
+
+/// The state at waypoint 1 as the camera sees it (Kinect-like noise, seeded), the weight and the
+/// grasp offset estimated too, as the closed loop does.
+void BM_CheckpointEstimate(benchmark::State& state) {
+  const Scene& s = scene();
+  const PlanStep& step = s.plan.steps.front();
+  MarkerSensor sensor(MarkerSensorModel{}, 1);
+  const RodConfiguration& c = step.solution.configuration;
+  const SensorFrame seen = sensor.observe(PlantFrame{0.0, step.end_effector, {}, c}, 0.29);
+  EstimationOptions options;
+  options.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  options.tip_position_sigma = 5e-3;
+  options.tip_rotation_sigma = 0.05;
+  StateEstimate estimate;
+  for (auto _ : state) {
+    estimate = estimate_state(s.problem.rod, c.tip(), step.end_effector, seen, MarkerSensorModel{},
+                              {step.solution.base_wrench}, options);
+    benchmark::DoNotOptimize(estimate);
+  }
+  state.counters["iterations"] = estimate.iterations;
+}
+
+/// The re-plan of the last `range(0)` steps from the equilibrium before them (no tracking, as the
+/// closed loop re-plans).
+void BM_CheckpointReplan(benchmark::State& state) {
+  const Scene& s = scene();
+  const int remaining = static_cast<int>(state.range(0));
+  const PlanStep& here = s.plan.steps[s.plan.steps.size() - remaining - 1];
+  PlanProblem rest = s.problem;
+  rest.initial = InitialState::equilibrium(here.solution.base_wrench);
+  PlanOptions options;
+  options.steps = remaining;
+  options.track_between_waypoints = false;
+  for (auto _ : state) {
+    const PlanResult again = rodshape::plan(rest, options);
+    if (again.status != PlanStatus::Complete) state.SkipWithError(again.message.c_str());
+    benchmark::DoNotOptimize(again);
+  }
+}
+
+BENCHMARK(BM_CheckpointEstimate)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CheckpointReplan)->Arg(1)->Arg(3)->Arg(6)->Unit(benchmark::kMillisecond);
+
+}  // namespace
