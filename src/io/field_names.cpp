@@ -39,6 +39,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"MarkerSensorModel.wrist", "sensor.wrench_noise"},
       {"MarkerSensorModel", "sensor"},
       {"EstimationOptions", "closed_loop"},
+      {"ClosedLoopOptions", "closed_loop"},
       // optimisation
       {"ShapeOptimiserOptions", "optimizer"},
       {"ShapeTarget.points", "target.points"},

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "rodshape/error.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -203,6 +204,17 @@ class Loop {
 
 }  // namespace
 
+void ClosedLoopOptions::validate() const {
+  estimation.validate();
+  if (checkpoint_frames < 1 || checkpoint_frames > 1000)
+    throw InputError("ClosedLoopOptions.checkpoint_frames",
+                     " = " + std::to_string(checkpoint_frames) + " must be in [1, 1000]");
+  if (!(grasp_offset_position_sigma > 0.0) || !std::isfinite(grasp_offset_position_sigma))
+    throw InputError("ClosedLoopOptions.grasp_offset_position_sigma", " must be finite and > 0");
+  if (!(grasp_offset_rotation_sigma > 0.0) || !std::isfinite(grasp_offset_rotation_sigma))
+    throw InputError("ClosedLoopOptions.grasp_offset_rotation_sigma", " must be finite and > 0");
+}
+
 ClosedLoopRun run_closed_loop(const PlanProblem& problem,
                               const PlanOptions& options,
                               const PlanResult& plan,
@@ -211,6 +223,7 @@ ClosedLoopRun run_closed_loop(const PlanProblem& problem,
                               MarkerSensor& sensor,
                               const ClosedLoopOptions& loop,
                               const PlantOptions& plant_options) {
+  loop.validate();
   if (plan.end_effector_path.empty() || plan.steps.empty())
     throw InputError("PlanResult.steps", ": the plan has no step to carry out");
   Loop runner(problem, options, rod, grasp_offset, sensor, loop, plant_options);

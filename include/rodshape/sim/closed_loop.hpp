@@ -33,6 +33,8 @@ struct ClosedLoopOptions {
   /// waypoint) for checkpoint_frames / frame_rate seconds, and each marker's visible positions are
   /// averaged, dividing the noise by √checkpoint_frames. 1 ≤ checkpoint_frames ≤ 1000.
   int checkpoint_frames = 15;
+  /// Throws InputError naming the field.
+  void validate() const;
   double grasp_offset_position_sigma = 5e-3;  // m
   double grasp_offset_rotation_sigma = 0.05;  // rad
 };

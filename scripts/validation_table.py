@@ -1,0 +1,178 @@
+#!/usr/bin/python3
+"""The paper's experiment table in simulation (docs/validation.md and its figures).
+
+    scripts/validation_table.py [--build build] [--runs 8] [--output docs]
+
+Runs `rodshape validate` on five bundled experiments (four rubber-band targets and the square beam)
+with a nominal plant (the planner's model) and a mismatched one (stiffness -15 %, gravity in the
+plant but not in the planner, the tip held 2 mm off), open and closed loop, each with --runs
+repeats of the Kinect-like sensor (1 mm in plane, 3 mm in depth), and writes docs/validation.md
+with the table of final errors (median, min, max; measured 3D and 2D, and true) beside the paper's
+1.6-3.6 mm, and PNG figures in docs/figures/. Needs matplotlib (the system Python).
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+EXPERIMENTS = ["plan_c_arc", "plan_s_curve", "plan_twisted_3d", "plan_lifted_bend",
+               "plan_square_beam"]
+MISMATCH = """plant:
+  stiffness_scale: 0.85
+  gravity: [0, 0, -9.81]
+  grasp_offset: {position: [0.002, 0, 0]}
+"""
+CLOSED_LOOP = """closed_loop:
+  gravity: [0, 0, -9.81]
+"""
+
+
+def run(build, task_text, name, runs, closed, workdir):
+    task = workdir / f"{name}.yaml"
+    task.write_text(task_text)
+    out = workdir / f"{name}_out"
+    command = [str(build / "rodshape"), "validate", str(task), "-o", str(out), "--runs", str(runs),
+               "-q"]
+    if closed:
+        command.append("--closed-loop")
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode not in (0, 3):
+        sys.exit(f"{name}: rodshape validate failed: {result.stderr}")
+    return json.loads((out / "validation.json").read_text())
+
+
+def summary(values):
+    return statistics.median(values), min(values), max(values)
+
+
+def cell(values):
+    med, lo, hi = summary([1e3 * v for v in values])
+    return f"{med:.2f} ({lo:.2f}–{hi:.2f})"
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--runs", type=int, default=8)
+    parser.add_argument("--output", default=str(ROOT / "docs"))
+    args = parser.parse_args()
+    build, output = Path(args.build), Path(args.output)
+    (output / "figures").mkdir(parents=True, exist_ok=True)
+    rows, finals, series = [], {}, {}
+    with tempfile.TemporaryDirectory() as tmp:
+        workdir = Path(tmp)
+        for experiment in EXPERIMENTS:
+            base = (ROOT / "examples" / f"{experiment}.yaml").read_text()
+            base = base.replace("../data/", str(ROOT / "data") + "/")
+            for plant_name, plant in (("nominal", ""), ("mismatched", MISMATCH)):
+                for closed in (False, True):
+                    text = base + "\n" + plant + (CLOSED_LOOP if closed else "")
+                    name = f"{experiment}_{plant_name}_{'closed' if closed else 'open'}"
+                    doc = run(build, text, name, args.runs, closed, workdir)
+                    runs = doc["runs"]
+                    key = (experiment, plant_name, closed)
+                    finals[key] = [r["final"] for r in runs]
+                    series[key] = runs[0]
+                    rows.append((experiment, plant_name, "closed" if closed else "open",
+                                 doc["status"], finals[key]))
+    write_markdown(output / "validation.md", rows, args.runs)
+    write_figures(output / "figures", finals, series)
+
+
+def write_markdown(path, rows, runs):
+    lines = [
+        "# The paper's experiment in simulation",
+        "",
+        "Made by `scripts/validation_table.py` (`rodshape validate`, "
+        f"{runs} runs of the sensor per line). The paper reports final 3D errors of 1.6–3.6 mm on",
+        "a Franka Panda with a Kinect v2 tracking 10 markers. Here the sensor is the same kind (10",
+        "markers, noise 1 mm in the image plane and 3 mm in depth, 30 Hz); *measured* errors are what",
+        "it sees (mean distance from the objective points to the polyline through the markers), *true*",
+        "errors the plant's own (no noise). Nominal: the plant is the planner's model. Mismatched: the",
+        "plant is 15 % softer, has the weight the planner neglects (the band's 1.6 N) and is held 2 mm",
+        "off along the tip's x axis. Closed loop: at each waypoint the arm rests for 15 frames, the",
+        "averaged markers give the base wrench, the weight and the grasp offset, and the rest of the",
+        "plan is made again from that state.",
+        "",
+        "Final errors in mm, median (min–max) over the runs:",
+        "",
+        "| experiment | plant | loop | status | 3D measured | 2D measured | true | true max |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
+    for experiment, plant, loop, status, final in rows:
+        lines.append(
+            f"| `{experiment}` | {plant} | {loop} | {status} | "
+            f"{cell([f['error_3d'] for f in final])} | {cell([f['error_2d'] for f in final])} | "
+            f"{cell([f['true_error'] for f in final])} | "
+            f"{cell([f['true_max_distance'] for f in final])} |")
+    lines += [
+        "",
+        "What it shows: the measured final 3D errors (about 2–3 mm) lie in the paper's 1.6–3.6 mm",
+        "band whatever the plant, because the sensor's 3 mm depth noise dominates them; the 2D and",
+        "true errors tell the cases apart. With the nominal plant the true error is the plan's own",
+        "(0.2–0.4 mm): the plant follows the plan exactly. The mismatch raises it to about 1–2 mm",
+        "open loop (mostly the 2 mm grasp offset: the held band's shape follows its ends, so the",
+        "softer stiffness and the weight change it little); closing the loop brings it back to",
+        "0.3–0.5 mm. On the nominal plant the closed loop is slightly worse than the open one",
+        "(0.3–0.5 against 0.2–0.4 mm): it corrects for what the averaged markers' noise suggests.",
+        "",
+        "Figures: `figures/validation_final_3d.png` (final 3D error per experiment, mismatched "
+        "plant, open and closed loop, as the paper's box plots), `figures/validation_repeats.png` "
+        "(the runs of one experiment), `figures/validation_over_time.png` (error over time, "
+        "`plan_c_arc`, mismatched).",
+        "",
+    ]
+    path.write_text("\n".join(lines))
+
+
+def write_figures(directory, finals, series):
+    fig, ax = plt.subplots(figsize=(9, 4))
+    data, labels = [], []
+    for experiment in EXPERIMENTS:
+        for closed in (False, True):
+            data.append([1e3 * f["error_3d"] for f in finals[(experiment, "mismatched", closed)]])
+            labels.append(f"{experiment.replace('plan_', '')}\n{'closed' if closed else 'open'}")
+    ax.boxplot(data, labels=labels)
+    ax.axhspan(1.6, 3.6, color="0.9", label="paper: 1.6–3.6 mm")
+    ax.set_ylabel("final 3D error (mm)")
+    ax.legend(loc="upper right")
+    ax.tick_params(axis="x", labelsize=7)
+    fig.tight_layout()
+    fig.savefig(directory / "validation_final_3d.png", dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6, 4))
+    keys = [("plan_c_arc", p, c) for p in ("nominal", "mismatched") for c in (False, True)]
+    ax.boxplot([[1e3 * f["true_error"] for f in finals[k]] for k in keys],
+               labels=[f"{p}\n{'closed' if c else 'open'}" for _, p, c in keys])
+    ax.set_ylabel("final true error (mm), plan_c_arc")
+    fig.tight_layout()
+    fig.savefig(directory / "validation_repeats.png", dpi=120)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for closed, style in ((False, "-"), (True, "--")):
+        run = series[("plan_c_arc", "mismatched", closed)]
+        loop = "closed" if closed else "open"
+        ax.plot(run["time"], [1e3 * e for e in run["error_3d"]], style, label=f"3D, {loop}")
+        ax.plot(run["time"], [1e3 * e for e in run["true_error"]], style, label=f"true, {loop}")
+    ax.set_xlabel("time (s)")
+    ax.set_ylabel("error (mm)")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(directory / "validation_over_time.png", dpi=120)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()
