@@ -67,6 +67,24 @@ TEST(StateEstimator, RecoversTheStiffnessScaleWithTheWristSensor) {
             1e-6 * w_real.to_vector().norm());
 }
 
+TEST(StateEstimator, TheWristWrenchAloneFixesTheShape) {
+  // A camera-free shape sensor: no marker is seen (dropout 1), but with the gripper's pose known
+  // the wrench it measures is the tip's, and the tip wrench and pose fix the whole rod.
+  const ClampedRod rod = samples::rubber_band();
+  MarkerSensorModel model = noiseless();
+  model.dropout = 1.0;
+  model.wrist = WristNoise{0.0, 0.0};
+  MarkerSensor sensor(model, 1);
+  const SensorFrame seen = look(rod, kTrue, sensor);
+  ASSERT_EQ(seen.visible(), 0);
+  const Pose tip = integrate(rod, kTrue).tip();
+  model.wrist = WristNoise{1e-3, 1e-4};  // the fit's weights
+  const StateEstimate estimate = estimate_state(rod, tip, tip, seen, model, {off_prior(rod)});
+  ASSERT_TRUE(estimate.converged) << estimate.message;
+  EXPECT_LT((estimate.base_wrench.to_vector() - kTrue.to_vector()).norm(),
+            1e-6 * kTrue.to_vector().norm());
+}
+
 TEST(StateEstimator, IsUnbiasedOverNoisySeeds) {
   // The Kinect-like noise (1 mm in plane, 3 mm in depth): over 40 seeds the mean estimate lies
   // within 4 standard errors of the truth in every component.
