@@ -1,290 +1,42 @@
 #!/usr/bin/python3
-"""Figures (PNG) of a `rodshape plan` output directory.
+"""Figures (PNG) of a `rodshape plan` output directory: the command-line face of
+rodshape.plot.plan_directory_figures (python/rodshape/plot.py).
 
     scripts/plot_plan.py OUTDIR [--output-dir FIGDIR] [--urdf PATH]
 
-Reads OUTDIR/plan.json, trajectory.csv and, with a robot, joint_trajectory.csv/.json, and writes
-into FIGDIR (default OUTDIR):
-  joint_positions.png    joint positions and velocities as fractions of their URDF limits
-  reach.png              the wrist's distance from the shoulder against the reach shell, and the
-                         largest distance to the objective points, per step
-  end_effector_path.png  the end effector's x, y, z over time
-A figure whose data the plan lacks (no robot, no reach shell) is skipped with a note.
-Needs matplotlib and numpy (the system Python: /usr/bin/python3).
+Writes end_effector_path.png, joint_positions.png (with a robot) and reach.png (with a reach shell)
+into FIGDIR (default OUTDIR). Needs matplotlib and numpy (the system Python: /usr/bin/python3); not
+the compiled module.
 """
 import argparse
-import json
-import os
+import importlib.util
 import sys
-import tempfile
-import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
-DPI = 150
-UMASK = os.umask(0)
-os.umask(UMASK)
-DEFAULT_URDF = Path(__file__).resolve().parent.parent / "data" / "robots" / "panda.urdf"
-
-
-class InputError(Exception):
-    pass
-
-
-def read_csv(path):
-    """(header names, rows as a 2-D array) of a CSV with one header line."""
-    try:
-        with open(path) as f:
-            header = f.readline().strip().split(",")
-        rows = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    except (OSError, ValueError) as e:
-        raise InputError(f"cannot read {path}: {e}") from None
-    if rows.shape[1] != len(header):
-        raise InputError(f"{path}: {rows.shape[1]} columns but {len(header)} names in the header")
-    return header, rows
-
-
-def numbers(values):
-    """A JSON list of numbers (null for not finite) as a float array."""
-    return np.array([np.nan if v is None else v for v in values], dtype=float)
-
-
-def waypoint_indices(plan, path):
-    """Row of trajectory.csv at which each waypoint is reached (each arrival is a sample)."""
-    positions, quaternions = path[:, 1:4], path[:, 4:8]
-    indices, start = [], 0
-    for waypoint in plan["end_effector_path"]["waypoints"]:
-        p, q = np.array(waypoint["position"]), np.array(waypoint["rotation"])
-        # The CSV keeps consecutive quaternions in one hemisphere, the JSON has w >= 0: either sign.
-        error = np.linalg.norm(positions[start:] - p, axis=1) + np.minimum(
-            np.linalg.norm(quaternions[start:] - q, axis=1),
-            np.linalg.norm(quaternions[start:] + q, axis=1))
-        matches = np.flatnonzero(error < 1e-7)
-        if matches.size == 0:
-            print(f"note: waypoint {len(indices) + 1} is not a sample of trajectory.csv; "
-                  "waypoint times not marked")
-            return []
-        start += matches[0]
-        indices.append(start)
-    return indices
-
-
-def mark_waypoints(ax, times):
-    """Thin grey vertical lines at the waypoint arrivals, numbered by step along the top."""
-    for step, t in enumerate(times, 1):
-        ax.axvline(t, color="0.6", linewidth=0.6, zorder=0,
-                   label="waypoint arrival" if step == 1 else None)
-        ax.text(t, 1.0, str(step), transform=ax.get_xaxis_transform(), ha="center",
-                va="bottom", fontsize=7, color="0.4")
-
-
-def joint_limits(urdf, names):
-    """{name: (lower, upper, velocity)} from the URDF's <limit> tags (None where missing)."""
-    try:
-        root = ET.parse(urdf).getroot()
-    except (OSError, ET.ParseError) as e:
-        raise InputError(f"cannot read the URDF {urdf}: {e}") from None
-    joints = {joint.get("name"): joint.find("limit") for joint in root.iter("joint")}
-    limits = {}
-    for name in names:
-        if name not in joints:
-            raise InputError(f"{urdf} has no joint '{name}' (of joint_trajectory.csv): "
-                             "give the robot's URDF with --urdf")
-        limit = joints[name]
-        get = (lambda key: float(limit.get(key)) if limit is not None and limit.get(key) else None)
-        limits[name] = (get("lower"), get("upper"), get("velocity"))
-    return limits
-
-
-def joint_velocities(outdir, t, q):
-    """The velocities of joint_trajectory.json if it matches the CSV, else central differences."""
-    try:
-        with open(outdir / "joint_trajectory.json") as f:
-            velocities = np.array([point["velocities"] for point in json.load(f)["points"]], float)
-        if velocities.shape == q.shape:
-            return velocities
-    except (OSError, ValueError, KeyError, TypeError):
-        pass
-    print("note: joint velocities by central differences of joint_trajectory.csv")
-    v = np.empty_like(q)
-    v[1:-1] = (q[2:] - q[:-2]) / (t[2:] - t[:-2])[:, None]
-    v[0] = (q[1] - q[0]) / (t[1] - t[0])
-    v[-1] = (q[-1] - q[-2]) / (t[-1] - t[-2])
-    return v
-
-
-def plot_joints(outdir, urdf, waypoint_rows, path_samples):
-    """Joint positions and velocities as fractions of their limits, over time."""
-    header, rows = read_csv(outdir / "joint_trajectory.csv")
-    names, t, q = header[1:], rows[:, 0], rows[:, 1:]
-    if len(t) < 2:
-        raise InputError("joint_trajectory.csv has fewer than two samples")
-    limits = joint_limits(urdf, names)
-    v = joint_velocities(outdir, t, q)
-    # The rows of trajectory.csv and joint_trajectory.csv are the same samples (the joints' times
-    # stretched where the arm was slowed), so the waypoints arrive at the same rows.
-    times = t[waypoint_rows] if len(t) == path_samples else []
-
-    fig, (ax_q, ax_v) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
-    # (margin to a limit, joint) and (|q̇| / limit, joint) at the worst sample
-    closest, fastest = (np.inf, None), (0.0, None)
-    for j, name in enumerate(names):
-        lower, upper, velocity = limits[name]
-        color = f"C{j}"
-        if lower is not None and upper is not None and upper > lower:
-            position = (q[:, j] - lower) / (upper - lower)
-            ax_q.plot(t, position, color=color, label=name)
-            closest = min(closest, (min(position.min(), 1 - position.max()), name))
-        else:
-            print(f"note: {name} has no position limits in {urdf}; left out of the position plot")
-        if velocity:
-            speed = v[:, j] / velocity
-            ax_v.plot(t, speed, color=color, label=name)
-            fastest = max(fastest, (np.abs(speed).max(), name))
-        else:
-            print(f"note: {name} has no velocity limit in {urdf}; left out of the velocity plot")
-    for ax, levels in ((ax_q, (0, 1)), (ax_v, (-1, 1))):
-        for level in levels:
-            ax.axhline(level, color="k", linestyle="--", linewidth=0.9)
-        mark_waypoints(ax, times)
-        ax.grid(axis="y", alpha=0.3)
-    ax_q.set_ylim(-0.05, 1.05)
-    ax_q.set_ylabel("(q − lower) / (upper − lower)")
-    ax_q.set_title("Joint positions within their limits (dashed: the limits)" + (
-        f"; closest: {closest[1]}, {closest[0]:.1%} of its range from a limit"
-        if closest[1] else ""), pad=14)
-    ax_q.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
-    ax_v.set_ylabel("q̇ / velocity limit")
-    ax_v.set_xlabel("time (s)")
-    ax_v.set_title("Joint velocities within their limits (dashed: ±limit)" + (
-        f"; fastest: {fastest[1]}, {fastest[0]:.1%} of its limit" if fastest[1] else ""), pad=14)
-    ax_v.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
-    return fig
-
-
-def plot_reach(plan):
-    """The wrist's distance from the shoulder in the reach shell, and the largest distance to the
-    objective points, per step."""
-    reach = plan["robot"]["reach"]
-    wrist = numbers(reach["wrist_distances"])
-    steps = plan["steps"]
-    fig, (ax_w, ax_d) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    ax_w.plot(range(len(wrist)), wrist, "o-", color="C0", label="wrist distance |w − c|")
-    ax_w.axhline(reach["outer_radius"], color="C3", label="shell outer radius")
-    ax_w.axhline(reach["inner_radius"], color="C2", label="shell inner radius")
-    low, high = numbers(reach["wrist_range"])
-    ax_w.axhline(high, color="C3", linestyle="--", linewidth=0.9, label="sampled wrist range")
-    ax_w.axhline(low, color="C2", linestyle="--", linewidth=0.9)
-    ax_w.set_ylabel("distance from the shoulder (m)")
-    gap = np.fmin(reach["outer_radius"] - wrist, wrist - reach["inner_radius"])
-    nearest = int(np.nanargmin(gap))
-    ax_w.set_title(f"The arm's wrist in its reach shell (margin {reach['margin']:g} m)\n"
-                   f"nearest the shell: step {nearest}, {1e3 * gap[nearest]:.1f} mm inside")
-    ax_w.legend(fontsize=8, loc="best")
-    ax_w.grid(alpha=0.3)
-
-    index = [s["step"] for s in steps]
-    max_mm = 1e3 * numbers([s["max_distance"] for s in steps])
-    ax_d.plot(index, max_mm, "o-", color="C1", label="largest distance to the objective points")
-    inserted = [i for i, s in enumerate(steps) if s.get("inserted")]
-    if inserted:
-        ax_d.plot([index[i] for i in inserted], max_mm[inserted], "s", mfc="none", ms=10,
-                  color="k", label="inserted step")
-    ax_d.set_ylim(bottom=0)
-    ax_d.set_xlabel("step (0: the initial pose)")
-    ax_d.set_ylabel("max distance (mm)")
-    ax_d.set_title("Largest distance from the rod to the step's objective points")
-    ax_d.legend(fontsize=8, loc="best")
-    ax_d.grid(alpha=0.3)
-    ax_d.xaxis.get_major_locator().set_params(integer=True)
-    return fig
-
-
-def plot_path(path, waypoint_rows):
-    """The end effector's x, y, z over time."""
-    t = path[:, 0]
-    fig, ax = plt.subplots(figsize=(9, 5))
-    for k, axis in enumerate("xyz"):
-        ax.plot(t, path[:, 1 + k], color=f"C{k}", label=axis)
-    mark_waypoints(ax, t[waypoint_rows])
-    ax.set_xlabel("time (s)")
-    ax.set_ylabel("end-effector position (m, world frame)")
-    ax.set_title("End-effector path (trajectory.csv)", pad=14)
-    ax.legend(fontsize=8, loc="best")
-    ax.grid(axis="y", alpha=0.3)
-    return fig
-
-
-def save(fig, path):
-    """Writes fig to path whole or not at all: a temporary file in the same directory, renamed."""
-    fig.tight_layout()
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
-    try:
-        os.chmod(temporary, 0o666 & ~UMASK)  # mkstemp's 0600, made what open() would give
-        fig.savefig(temporary, format="png", dpi=DPI)
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
-    finally:
-        plt.close(fig)
-    return path
+ROOT = Path(__file__).resolve().parent.parent
+_spec = importlib.util.spec_from_file_location("rodshape_plot", ROOT / "python" / "rodshape" / "plot.py")
+plot = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(plot)
 
 
 def main():
-    parser = argparse.ArgumentParser(
-        description="PNG figures of a `rodshape plan` output directory.")
+    parser = argparse.ArgumentParser(description="PNG figures of a `rodshape plan` output directory.")
     parser.add_argument("outdir", type=Path, help="the directory `rodshape plan -o` wrote")
     parser.add_argument("--output-dir", type=Path, help="where to write the PNGs (default OUTDIR)")
-    parser.add_argument("--urdf", type=Path, default=DEFAULT_URDF,
+    parser.add_argument("--urdf", type=Path, default=plot.DEFAULT_URDF,
                         help="the robot's URDF, for the joint limits (default %(default)s)")
     args = parser.parse_args()
-    outdir, figdir = args.outdir, args.output_dir or args.outdir
-
-    try:
-        with open(outdir / "plan.json") as f:
-            plan = json.load(f)
-    except OSError as e:
-        raise InputError(f"cannot read {outdir / 'plan.json'}: {e.strerror}") from None
-    except ValueError as e:
-        raise InputError(f"{outdir / 'plan.json'} is not JSON: {e}") from None
-    if not isinstance(plan, dict) or "steps" not in plan:
-        raise InputError(f"{outdir / 'plan.json'} is not a plan of `rodshape plan` (no steps)")
-    # Every figure is drawn before any is written, so bad input leaves FIGDIR as it was.
-    figures, path = {}, np.empty((0, 8))
-    if (outdir / "trajectory.csv").exists():
-        path = read_csv(outdir / "trajectory.csv")[1]
-        waypoint_rows = waypoint_indices(plan, path)
-        figures["end_effector_path.png"] = plot_path(path, waypoint_rows)
-    else:
-        waypoint_rows = []
-        print(f"note: no trajectory.csv (plan {plan.get('status')}); skipped end_effector_path.png")
-
-    if (outdir / "joint_trajectory.csv").exists():
-        figures["joint_positions.png"] = plot_joints(outdir, args.urdf, waypoint_rows, len(path))
-    else:
-        print("note: no joint_trajectory.csv (no robot, or a pose out of its reach); "
-              "skipped joint_positions.png")
-
-    if (plan.get("robot") or {}).get("reach"):
-        figures["reach.png"] = plot_reach(plan)
-    else:
-        print("note: plan.json has no robot reach shell; skipped reach.png")
-
-    figdir.mkdir(parents=True, exist_ok=True)
-    written = [save(figure, figdir / name) for name, figure in figures.items()]
+    written = plot.plan_directory_figures(args.outdir, args.output_dir, args.urdf)
     print("wrote " + (" ".join(str(p) for p in written) if written else "nothing"))
 
 
 if __name__ == "__main__":
     try:
         main()
-    except InputError as e:
+    except plot.InputError as e:
         print(f"plot_plan.py: error: {e}", file=sys.stderr)
         sys.exit(2)

@@ -7,6 +7,7 @@
 #include "optimisation/ipopt_nlp.hpp"
 
 #include <memory>
+#include <mutex>
 #include <optional>
 
 namespace rodshape::detail {
@@ -120,6 +121,11 @@ IpoptRun IpoptSession::run(ShapeProblem& problem,
   Ipopt::IpoptApplication& app = *application_->app;
   auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_, admissible);
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
+  // IPOPT solves are serialised process-wide: the sequential MUMPS that Debian's IPOPT 3.11 uses
+  // keeps state in Fortran module variables and is not thread-safe. Everything else of a plan
+  // (integrations, stability, tracking) runs in parallel in other threads.
+  static std::mutex mumps;
+  const std::lock_guard<std::mutex> lock(mumps);
   IpoptRun run = with_status(app.OptimizeTNLP(owner));
   const NlpOutcome& outcome = nlp->outcome();
   const Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app.Statistics();

@@ -1,0 +1,158 @@
+// bind_io.cpp: task files in, the CLI's documents out. A task read here is checked as the CLI
+// checks it (same readers, same messages), and each result's to_json() is the document the CLI
+// writes for that task (same writers).
+#include <string>
+#include <utility>
+
+#include "bindings.hpp"
+#include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
+#include "rodshape/io/plan_output.hpp"
+#include "rodshape/io/result_json.hpp"
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/io/validation_output.hpp"
+#include "rodshape/sim/plan_validation.hpp"
+#include "rodshape/solvers/equilibrium_analysis.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace rodshape::python {
+
+namespace {
+
+/// An equilibrium task's result: what `rodshape equilibrium` computes and writes.
+struct Equilibrium {
+  EquilibriumAnalysis analysis;
+  std::string to_json() const { return equilibrium_result_json(analysis); }
+};
+
+/// A plan task's result, with the task it answers (the writers need both).
+struct Plan {
+  PlanResult result;
+  PlanTask task;
+  std::string to_json() const { return plan_result_json(result, task); }
+};
+
+struct Validation {
+  ValidationResult result;
+  PlanResult plan;
+  PlanTask task;
+  std::string to_json() const { return validation_json(result, plan, task); }
+};
+
+Equilibrium solve_task(const EquilibriumTask& task) {
+  try {
+    return {analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options)};
+  } catch (const InputError& error) {  // a held pose beyond the model's validity
+    throw InputError(task.source + ": " + in_task_names(error));
+  }
+}
+
+Plan plan_task(const PlanTask& task) {
+  try {
+    return {plan(task.problem, task.options), task};
+  } catch (const InputError& error) {
+    throw InputError(task.locate(error));
+  }
+}
+
+Validation validate_task(const PlanTask& task, int runs, std::uint64_t seed, bool closed_loop) {
+  ValidationOptions options;
+  options.runs = runs;
+  options.seed = seed;
+  options.closed_loop = closed_loop;
+  options.loop = task.closed_loop;
+  options.planning = task.options;
+  try {
+    PlanResult planned = plan(task.problem, task.options);
+    ValidationResult result =
+        validate_plan(task.problem, planned, task.plant, task.sensor, options);
+    return {std::move(result), std::move(planned), task};
+  } catch (const InputError& error) {
+    throw InputError(task.locate(error));
+  }
+}
+
+void bind_tasks(py::module_& m) {
+  py::class_<EquilibriumTask>(m, "EquilibriumTask", "An equilibrium task file, read and checked.")
+      .def_readwrite("rod", &EquilibriumTask::rod)
+      .def_readonly("source", &EquilibriumTask::source)
+      .def_property_readonly("kind", [](const EquilibriumTask&) { return "equilibrium"; });
+  py::class_<PlanTask>(m, "PlanTask", "A plan task file, read and checked.")
+      .def_property(
+          "rod", [](const PlanTask& t) { return t.problem.rod; },
+          [](PlanTask& t, const ClampedRod& rod) { t.problem.rod = rod; })
+      .def_property_readonly("target_points",
+                             [](const PlanTask& t) { return rows_of(t.problem.target.points); })
+      .def_readonly("source", &PlanTask::source)
+      .def_property_readonly("kind", [](const PlanTask&) { return "plan"; });
+  m.def("read_equilibrium_task", &read_equilibrium_task, py::arg("path"),
+        "Reads an equilibrium task file (InputError with the CLI's message when it is bad).");
+  m.def("read_plan_task", &read_plan_task, py::arg("path"),
+        "Reads a plan task file (InputError with the CLI's message when it is bad).");
+}
+
+void bind_outcomes(py::module_& m) {
+  py::class_<Equilibrium>(m, "Equilibrium", "What `rodshape equilibrium` computes for a task.")
+      .def_readonly("analysis", &Equilibrium::analysis)
+      .def_property_readonly("configuration",
+                             [](const Equilibrium& e) { return e.analysis.solution.configuration; })
+      .def_property_readonly("base_wrench",
+                             [](const Equilibrium& e) { return e.analysis.solution.base_wrench; })
+      .def_property_readonly(
+          "status",
+          [](const Equilibrium& e) { return to_string(e.analysis.solution.summary.status); })
+      .def_property_readonly("stable",
+                             [](const Equilibrium& e) -> py::object {
+                               if (!e.analysis.stability) return py::none();
+                               return py::bool_(e.analysis.stability->stable);
+                             })
+      .def("converged", [](const Equilibrium& e) { return e.analysis.converged(); })
+      .def("brief", [](const Equilibrium& e) { return e.analysis.brief(); })
+      .def("to_json", &Equilibrium::to_json, "The JSON document `rodshape equilibrium` writes.");
+  py::class_<Plan>(m, "Plan", "What `rodshape plan` computes for a task.")
+      .def_readonly("result", &Plan::result)
+      .def_property_readonly("status", [](const Plan& p) { return to_string(p.result.status); })
+      .def_property_readonly("steps", [](const Plan& p) { return p.result.steps; })
+      .def("brief",
+           [](const Plan& p) { return fields_in_task_names(p.result.brief(p.task.options.steps)); })
+      .def("to_json", &Plan::to_json, "The plan.json document `rodshape plan` writes.")
+      .def(
+          "write",
+          [](const Plan& p, const std::string& directory) {
+            return write_plan(directory, p.result, p.task);
+          },
+          py::arg("directory"), "Writes the files `rodshape plan` writes; returns their names.");
+  py::class_<Validation>(m, "Validation", "What `rodshape validate` computes for a task.")
+      .def_readonly("plan", &Validation::plan)
+      .def_property_readonly("status",
+                             [](const Validation& v) { return to_string(v.result.status); })
+      .def_property_readonly("runs", [](const Validation& v) { return v.result.runs; })
+      .def("brief", [](const Validation& v) { return v.result.brief(); })
+      .def("to_json", &Validation::to_json, "The validation.json document.")
+      .def(
+          "write",
+          [](const Validation& v, const std::string& directory) {
+            std::vector<std::string> names = write_plan(directory, v.plan, v.task);
+            for (std::string& name : write_validation(directory, v.result, v.plan, v.task))
+              names.push_back(std::move(name));
+            return names;
+          },
+          py::arg("directory"), "Writes the files `rodshape validate` writes.");
+}
+
+}  // namespace
+
+void bind_io(py::module_& m) {
+  bind_tasks(m);
+  bind_outcomes(m);
+  m.def("solve", &solve_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),
+        "Solves an equilibrium task as `rodshape equilibrium` does (a stable equilibrium sought "
+        "when the solve's is unstable).");
+  m.def("plan", &plan_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),
+        "Plans a plan task as `rodshape plan` does.");
+  m.def("validate", &validate_task, py::arg("task"), py::arg("runs") = 1, py::arg("seed") = 1,
+        py::arg("closed_loop") = false, py::call_guard<py::gil_scoped_release>(),
+        "Plans a plan task and carries the plan out in simulation, as `rodshape validate` does.");
+}
+
+}  // namespace rodshape::python

@@ -1,0 +1,162 @@
+"""pytest suite of the rodshape Python package (run by ctest as python.pytest).
+
+Environment: PYTHONPATH holds build/python; RODSHAPE_CLI is the rodshape executable and
+RODSHAPE_SOURCE_DIR the source tree (for the bundled examples)."""
+import concurrent.futures
+import glob
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import rodshape
+
+SOURCE = Path(os.environ.get("RODSHAPE_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+CLI = os.environ.get("RODSHAPE_CLI", str(SOURCE / "build" / "rodshape"))
+EXAMPLES = SOURCE / "examples"
+
+
+def test_integrate_gives_arrays_of_the_documented_shapes():
+    rod = rodshape.rubber_band(intervals=50)
+    c = rodshape.integrate(rod, rodshape.Wrench(moment=[0.0, 0.05, 0.0]))
+    assert c.positions.shape == (51, 3) and c.positions.dtype == np.float64
+    assert c.rotations.shape == (51, 3, 3)
+    assert c.s.shape == (51,) and c.s[-1] == pytest.approx(0.29, abs=1e-15)
+    assert c.forces.shape == c.moments.shape == c.u.shape == c.v.shape == (51, 3)
+    # Every rotation is orthonormal.
+    for R in c.rotations:
+        assert np.allclose(R.T @ R, np.eye(3), atol=1e-12)
+
+
+def test_an_end_moment_bends_the_rod_into_an_arc():
+    # Analytical oracle: a moment M about y on a Kirchhoff rod gives a circular arc of curvature
+    # M / EI; the tip is at (R (1 - cos θ), 0, R sin θ), θ = L / R. RK4 at N = 100: error ~1e-10.
+    rod = rodshape.rubber_band(rodshape.ConstitutiveModel.Kirchhoff, 100)
+    M, EI, L = 0.05, 0.04, 0.29
+    c = rodshape.integrate(rod, rodshape.Wrench(moment=[0.0, M, 0.0]))
+    R = EI / M
+    theta = L / R
+    expected = [R * (1 - np.cos(theta)), 0.0, R * np.sin(theta)]
+    assert np.allclose(c.tip.position, expected, atol=1e-9)
+    assert c.energy == pytest.approx(0.5 * M * M / EI * L, rel=1e-9)
+
+
+def test_solve_equilibrium_holds_the_tip_where_asked():
+    rod = rodshape.rubber_band()
+    pose = rodshape.Pose(position=[0.12, 0.0, 0.22],
+                         rotation=[[0, 0, 1], [0, 1, 0], [-1, 0, 0]])
+    result = rodshape.solve_equilibrium(rod, rodshape.ClampedTip(pose))
+    assert result.converged(), result.brief()
+    assert np.allclose(result.configuration.tip.position, [0.12, 0.0, 0.22], atol=1e-9)
+
+
+def test_bad_input_raises_input_error_with_the_clis_message(tmp_path):
+    text = (EXAMPLES / "rubber_band.yaml").read_text().replace("length: 0.29", "lenght: 0.29")
+    task = tmp_path / "bad.yaml"
+    task.write_text(text)
+    with pytest.raises(rodshape.InputError) as raised:
+        rodshape.load_task(str(task))
+    assert isinstance(raised.value, ValueError)
+    cli = subprocess.run([CLI, "equilibrium", str(task)], capture_output=True, text=True)
+    assert cli.returncode == 2
+    assert cli.stderr.strip() == f"error: {raised.value}"
+    assert "rod.lenght: unknown key; did you mean 'length'?" in str(raised.value)
+
+
+def test_a_non_finite_number_names_its_field(tmp_path):
+    text = (EXAMPLES / "rubber_band.yaml").read_text().replace("young_modulus: 3.2e6",
+                                                               "young_modulus: .nan")
+    task = tmp_path / "nan.yaml"
+    task.write_text(text)
+    with pytest.raises(rodshape.InputError, match="rod.material.young_modulus"):
+        rodshape.load_task(str(task))
+
+
+def equilibrium_examples():
+    return [p for p in sorted(glob.glob(str(EXAMPLES / "*.yaml")))
+            if not Path(p).name.startswith("plan_")]
+
+
+def plan_examples():
+    return sorted(glob.glob(str(EXAMPLES / "plan_*.yaml")))
+
+
+@pytest.mark.parametrize("path", equilibrium_examples(), ids=lambda p: Path(p).stem)
+def test_solve_writes_the_clis_json(path):
+    ours = json.loads(rodshape.solve(rodshape.load_task(path)).to_json())
+    cli = subprocess.run([CLI, "equilibrium", path], capture_output=True, text=True, check=True)
+    assert_same_numbers(ours, json.loads(cli.stdout))
+
+
+@pytest.mark.parametrize("path", plan_examples(), ids=lambda p: Path(p).stem)
+def test_plan_writes_the_clis_json(path, tmp_path):
+    ours = json.loads(rodshape.plan(rodshape.load_task(path)).to_json())
+    subprocess.run([CLI, "plan", path, "-o", str(tmp_path), "-q"], check=True)
+    assert_same_numbers(ours, json.loads((tmp_path / "plan.json").read_text()))
+
+
+def assert_same_numbers(a, b, where="$"):
+    """Equal structure, strings and booleans; numbers within 1e-12 (relative to max(1, |x|))."""
+    assert type(a) is type(b) or (isinstance(a, (int, float)) and isinstance(b, (int, float))), where
+    if isinstance(a, dict):
+        assert a.keys() == b.keys(), where
+        for k in a:
+            assert_same_numbers(a[k], b[k], f"{where}.{k}")
+    elif isinstance(a, list):
+        assert len(a) == len(b), where
+        for i, (x, y) in enumerate(zip(a, b)):
+            assert_same_numbers(x, y, f"{where}[{i}]")
+    elif isinstance(a, float) or isinstance(b, float):
+        assert abs(a - b) <= 1e-12 * max(1.0, abs(a)), f"{where}: {a} != {b}"
+    else:
+        assert a == b, where
+
+
+def test_plans_in_threads_equal_plans_in_series():
+    tasks = [rodshape.load_task(str(EXAMPLES / f"plan_{n}.yaml"))
+             for n in ("c_arc", "s_curve", "tip_bend", "partial_hook")]
+    serial = [rodshape.plan(t).to_json() for t in tasks]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(lambda t: rodshape.plan(t).to_json(), tasks))
+    assert parallel == serial
+
+
+def test_plan_result_arrays():
+    plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
+    assert plan.status == "complete"
+    assert len(plan.steps) == 7
+    last = plan.steps[-1]
+    assert last.configuration.positions.shape == (101, 3)
+    assert last.objective_points.shape == (10, 3)
+    path = plan.result.end_effector_path
+    assert path["positions"].shape == (len(path["t"]), 3)
+    assert path["rotations"].shape == (len(path["t"]), 3, 3)
+    assert np.all(np.diff(path["t"]) > 0)
+
+
+def test_validate_repeats_bit_for_bit_and_writes_the_clis_files(tmp_path):
+    task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
+    a = rodshape.validate(task, runs=2, seed=5)
+    b = rodshape.validate(task, runs=2, seed=5)
+    assert a.status == "complete"
+    assert np.array_equal(a.runs[1].error_3d, b.runs[1].error_3d)
+    assert a.runs[0].final.true_error < 1e-3
+    names = a.write(str(tmp_path))
+    assert "validation.json" in names and "plan.json" in names
+    assert json.loads((tmp_path / "validation.json").read_text()) == json.loads(a.to_json())
+
+
+def test_plot_figures(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    from rodshape import plot
+    plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_s_curve.yaml")))
+    fig = plot.plan_steps(plan)
+    assert len(fig.axes) == 1
+    fig.savefig(tmp_path / "steps.png")
+    validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
+    plot.validation_errors(validation).savefig(tmp_path / "errors.png")
+    assert (tmp_path / "steps.png").stat().st_size > 1000
