@@ -129,6 +129,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   task.lines = root.key_lines(2);
   PlanProblem& problem = task.problem;
   problem.rod = read_clamped_rod(root);
+  if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
+    root.get("rod").get("nodes").fail_value(
+        "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
+  }
   problem.target.energy_weight = io_detail::kDefaultEnergyWeight;
   problem.target.distance_weight = io_detail::kDefaultDistanceWeight;
   io_detail::read_target_section(root.require("target"), problem.target);

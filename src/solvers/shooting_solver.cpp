@@ -19,13 +19,10 @@
 namespace rodshape {
 
 void ShootingOptions::validate() const {
-  if (max_iterations < 1)
-    throw InputError("ShootingOptions.max_iterations",
-                     " = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_count("ShootingOptions.max_iterations", max_iterations, 1, kMaxIterations);
   detail::require_positive("ShootingOptions.residual_tolerance", residual_tolerance);
-  if (max_continuation_steps < 1)
-    throw InputError("ShootingOptions.max_continuation_steps",
-                     " = " + std::to_string(max_continuation_steps) + " must be >= 1");
+  detail::require_count("ShootingOptions.max_continuation_steps", max_continuation_steps, 1,
+                        kMaxContinuationSteps);
   if (!(integration_tolerance > 0.0))  // +inf is allowed: it turns the accuracy check off
     throw InputError("ShootingOptions.integration_tolerance",
                      " = " + detail::format_value(integration_tolerance) + " must be > 0");

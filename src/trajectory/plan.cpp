@@ -14,14 +14,10 @@
 namespace rodshape {
 
 void PlanOptions::validate() const {
-  if (steps < 1)
-    throw InputError("PlanOptions.steps", " = " + std::to_string(steps) + " must be >= 1");
-  if (max_refinements < 0)
-    throw InputError("PlanOptions.max_refinements",
-                     " = " + std::to_string(max_refinements) + " must be >= 0");
-  if (tracking_substeps < 1)
-    throw InputError("PlanOptions.tracking_substeps",
-                     " = " + std::to_string(tracking_substeps) + " must be >= 1");
+  detail::require_count("PlanOptions.steps", steps, 1, kMaxSteps);
+  detail::require_count("PlanOptions.max_refinements", max_refinements, 0, kMaxRefinements);
+  detail::require_count("PlanOptions.tracking_substeps", tracking_substeps, 1,
+                        kMaxTrackingSubsteps);
   optimiser.validate();
   end_effector.validate();
   arm.validate();
@@ -29,6 +25,7 @@ void PlanOptions::validate() const {
 
 void PlanProblem::validate() const {
   rod.validate();
+  detail::require_count("PlanProblem.rod.intervals", rod.intervals, 1, kMaxIntervals);
   target.validate();
   workspace.validate();
   limits.validate();
