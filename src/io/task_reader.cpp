@@ -13,6 +13,8 @@
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
 
@@ -168,6 +170,12 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     problem.validate();
     task.options.validate();
   });
+  // The sizes' product (each has its own bound): said in the task's names, at no one line.
+  try {
+    check_plan_cost(problem, task.options);
+  } catch (const InputError& error) {
+    throw InputError(source_name + ": " + fields_in_task_names(error.what()));
+  }
   return task;
 }
 

@@ -225,8 +225,8 @@ TEST(PlanReader, SizesBeyondTheirBoundsAreNamedAsWritten) {
        "plan.yaml:21: optimizer.max_iterations = 10001 must be <= 10000"},
       {kPlan + "optimizer: {multi_starts: 1e6}\n",
        "plan.yaml:21: optimizer.multi_starts = 1e6 must be <= 100"},
-      {plan_with("nodes: 51", "nodes: 10002"),
-       "plan.yaml:3: rod.nodes = 10002 must be <= 10001 for a plan"},
+      {plan_with("nodes: 51", "nodes: 5002"),
+       "plan.yaml:3: rod.nodes = 5002 must be <= 5001 for a plan"},
   };
   for (const Bad& bad : cases) {
     SCOPED_TRACE(bad.message);
@@ -235,17 +235,30 @@ TEST(PlanReader, SizesBeyondTheirBoundsAreNamedAsWritten) {
 }
 
 TEST(PlanReader, SizesAtTheirBoundsRead) {
-  const PlanTask task =
-      parse_plan_task(plan_with("steps: 3",
-                                "steps: 1000\n  tracking_substeps: 1000\n  max_refinements: 100\n"
-                                "  rate: 10000\n  max_linear_speed: 0.1") +
-                          "optimizer: {max_iterations: 10000, multi_starts: 100}\n",
-                      "plan.yaml");
-  EXPECT_EQ(task.options.steps, PlanOptions::kMaxSteps);
-  EXPECT_EQ(task.options.tracking_substeps, PlanOptions::kMaxTrackingSubsteps);
-  EXPECT_EQ(task.options.max_refinements, PlanOptions::kMaxRefinements);
-  EXPECT_EQ(task.options.end_effector.sample_rate, EndEffectorLimits::kMaxSampleRate);
-  EXPECT_EQ(task.options.optimiser.multi_starts, ShapeOptimiserOptions::kMaxMultiStarts);
+  const PlanTask big_rod = parse_plan_task(plan_with("nodes: 51", "nodes: 5001"), "plan.yaml");
+  EXPECT_EQ(big_rod.problem.rod.intervals, PlanProblem::kMaxIntervals);
+  // Two nodes, so that the sizes' product stays within the estimated-time bound.
+  const PlanTask bounds = parse_plan_task(
+      testing::replaced_first(plan_with("nodes: 51", "nodes: 2"), "steps: 3",
+                              "steps: 1000\n  tracking_substeps: 1000\n  max_refinements: 100\n"
+                              "  rate: 10000\n  max_linear_speed: 0.1") +
+          "optimizer: {max_iterations: 10000, multi_starts: 100}\n",
+      "plan.yaml");
+  EXPECT_EQ(bounds.options.steps, PlanOptions::kMaxSteps);
+  EXPECT_EQ(bounds.options.tracking_substeps, PlanOptions::kMaxTrackingSubsteps);
+  EXPECT_EQ(bounds.options.max_refinements, PlanOptions::kMaxRefinements);
+  EXPECT_EQ(bounds.options.end_effector.sample_rate, EndEffectorLimits::kMaxSampleRate);
+  EXPECT_EQ(bounds.options.optimiser.multi_starts, ShapeOptimiserOptions::kMaxMultiStarts);
+}
+
+TEST(PlanReader, SizesWhoseProductWouldTakeTooLongAreNamedWithTheEstimate) {
+  const std::string big_rod = plan_with("nodes: 51", "nodes: 5001");
+  const std::string message = error_of(testing::replaced_first(big_rod, "steps: 3", "steps: 10") +
+                                       "optimizer: {multi_starts: 100}\n");
+  EXPECT_EQ(message,
+            "plan.yaml: the plan would take about 6.3e+02 s, estimated from trajectory.steps = 10, "
+            "optimizer.multi_starts = 100, 5001 rod nodes, 3 target.points and "
+            "trajectory.tracking_substeps = 10; at most 300 s (docs/limits.md): lower one of them");
 }
 
 TEST(PlanReader, SlowLimitsAreNamedWithWhatTheyWouldCost) {

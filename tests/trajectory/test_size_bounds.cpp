@@ -101,7 +101,7 @@ TEST(SizeBounds, APathWithTooManySamplesIsRefusedBeforeSampling) {
             "EndEffectorLimits.sample_rate");
 }
 
-TEST(SizeBounds, APlansRodHasAtMostTenThousandIntervals) {
+TEST(SizeBounds, APlansRodHasAtMostFiveThousandIntervals) {
   PlanProblem problem;
   problem.rod = testing::rubber_band();
   problem.target.points = {{0.0, 0.0, 0.1}};
@@ -109,7 +109,30 @@ TEST(SizeBounds, APlansRodHasAtMostTenThousandIntervals) {
   EXPECT_NO_THROW(problem.validate());
   problem.rod.intervals = PlanProblem::kMaxIntervals + 1;
   EXPECT_EQ(input_error_message([&] { problem.validate(); }),
-            "PlanProblem.rod.intervals = 10001 must be <= 10000");
+            "PlanProblem.rod.intervals = 5001 must be <= 5000");
+}
+
+TEST(SizeBounds, TheProductOfThePlansSizesIsBoundedByItsEstimatedTime) {
+  PlanProblem problem;
+  problem.rod = testing::rubber_band();  // 100 intervals
+  problem.target.points.assign(10, Eigen::Vector3d(0.0, 0.0, 0.1));
+  PlanOptions options;  // 7 steps, no extra start, 10 tracking substeps: the bundled plans
+  // 100 × 7 × (1.5e-4 + 1.4e-5) s; the bundled plans take 0.08–0.27 s.
+  EXPECT_NEAR(estimated_plan_seconds(problem, options), 0.1148, 1e-4);
+  EXPECT_NO_THROW(check_plan_cost(problem, options));
+  // Each size within its own bound, their product far beyond.
+  problem.rod.intervals = PlanProblem::kMaxIntervals;
+  options.steps = PlanOptions::kMaxSteps;
+  options.optimiser.multi_starts = ShapeOptimiserOptions::kMaxMultiStarts;
+  ASSERT_NO_THROW(options.validate());
+  ASSERT_NO_THROW(problem.validate());
+  const std::string message = input_error_message([&] { plan(problem, options); });
+  EXPECT_TRUE(
+      message.starts_with("the plan would take about 7.6e+04 s, estimated from "
+                          "PlanOptions.steps = 1000, ShapeOptimiserOptions.multi_starts = "
+                          "100, 5001 rod nodes, 10 ShapeTarget.points and "
+                          "PlanOptions.tracking_substeps = 10; at most 300 s"))
+      << message;
 }
 
 }  // namespace

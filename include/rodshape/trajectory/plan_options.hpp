@@ -47,7 +47,7 @@ std::string to_string(ObjectiveInterpolation interpolation);
 
 struct PlanOptions {
   /// Upper bounds (docs/limits.md, "Sizes"). A step is one optimisation (about 10 ms for the
-  /// 101-node band, 1.4 s for 10,001 nodes) and one tracked segment; a tracking substep one solve
+  /// 101-node band, 0.7 s for 5,001 nodes) and one tracked segment; a tracking substep one solve
   /// (about 0.15 ms at 101 nodes); a refinement one more step.
   static constexpr int kMaxSteps = 1000;
   static constexpr int kMaxTrackingSubsteps = 1000;

@@ -49,9 +49,9 @@ struct PlanArm {
 
 struct PlanProblem {
   /// Upper bound on rod.intervals for a plan (docs/limits.md, "Sizes"): every step optimises and
-  /// tracks the whole rod many times; the S-curve example plans in 0.12 s with 100 intervals and
-  /// in 10 s with 10,000 (a 38 MB plan.json), linear in the intervals.
-  static constexpr int kMaxIntervals = 10'000;
+  /// tracks the whole rod many times, linear in the intervals; the bundled plans take 2.5–5 s with
+  /// 5,000 intervals (the S-curve: 0.12 s with 100, 4.9 s with 5,000, 10 s with 10,000).
+  static constexpr int kMaxIntervals = 5'000;
 
   ClampedRod rod;
   ShapeTarget target;  // the objective points p_obj and the weights W1, W2
