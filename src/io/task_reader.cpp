@@ -118,7 +118,10 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
   }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
-  root.located([&] { task.options.validate(); });
+  root.located([&] {
+    task.options.validate();
+    check_solve_cost(task.rod, task.options);
+  });
   return task;
 }
 

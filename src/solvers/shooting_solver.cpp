@@ -362,6 +362,21 @@ void continue_from_rest(const ClampedRod& rod,
 
 }  // namespace
 
+double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * rod.substeps * 4.1e-7;
+}
+
+void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options) {
+  const double seconds = estimated_failing_solve_seconds(rod, options);
+  if (seconds <= kMaxEstimatedSolveSeconds) return;
+  throw InputError("ShootingOptions.max_iterations",
+                   " = " + std::to_string(options.max_iterations) + " with " +
+                       std::to_string(rod.nodes()) + " rod nodes: a solve that does not converge " +
+                       "would take about " + detail::format_value(std::round(seconds)) +
+                       " s; at most " + detail::format_value(kMaxEstimatedSolveSeconds) +
+                       " s (docs/limits.md): lower one of them");
+}
+
 ShootingResult solve_equilibrium(const ClampedRod& rod,
                                  const TipCondition& tip,
                                  const BaseWrench& guess,
@@ -369,6 +384,7 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
   rod.validate();
   validate_tip(tip);
   options.validate();
+  check_solve_cost(rod, options);
   detail::require_finite("guess.force", guess.force);
   detail::require_finite("guess.moment", guess.moment);
 

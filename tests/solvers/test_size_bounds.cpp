@@ -8,6 +8,7 @@
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "support/input_error.hpp"
+#include "support/solver_fixtures.hpp"
 
 namespace rodshape {
 namespace {
@@ -42,6 +43,20 @@ TEST(SizeBounds, FollowSubstepsAreBounded) {
   adaptive.max_substeps = 1'000'000'000;
   EXPECT_EQ(input_error_message([&] { adaptive.validate(); }),
             "FollowOptions.max_substeps = 1000000000 must be <= 4096");
+}
+
+TEST(SizeBounds, NodesTimesIterationsIsBoundedByTheTimeOfASolveThatFails) {
+  ClampedRod rod = testing::rubber_band();
+  rod.intervals = ClampedRod::kMaxIntervals;
+  ShootingOptions options;  // 100 iterations: 29 s measured for a solve that fails
+  EXPECT_NEAR(estimated_failing_solve_seconds(rod, options), 28.7, 1e-9);
+  EXPECT_NO_THROW(check_solve_cost(rod, options));
+  options.max_iterations = ShootingOptions::kMaxIterations;  // each within its bound
+  ASSERT_NO_THROW(options.validate());
+  EXPECT_EQ(testing::input_error_message(
+                [&] { solve_equilibrium(rod, FreeTip{}, BaseWrench{}, options); }),
+            "ShootingOptions.max_iterations = 10000 with 100001 rod nodes: a solve that does not "
+            "converge would take about 2870 s; at most 300 s (docs/limits.md): lower one of them");
 }
 
 }  // namespace

@@ -76,9 +76,26 @@ struct ShootingResult {
   std::string brief() const { return summary.brief(); }
 };
 
+/// The time a solve that does not converge takes, s, on the machine docs/limits.md was measured on:
+/// about 7 integrations with derivatives per allowed iteration (the direct solve and the
+/// continuation's stages each use them all), each 4.1e-7 s per interval and sub-step:
+/// 7 × max_iterations × intervals × substeps × 4.1e-7 s (the band's tip loaded far beyond what
+/// converges, 100,000 intervals, 100 iterations: 29 s measured, 29 s estimated). A solve that
+/// converges takes a small part of it (1.3 s there).
+double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options);
+
+/// The most estimated_failing_solve_seconds() that solve_equilibrium() accepts: each of rod.nodes
+/// and max_iterations has its own bound, and this bounds their product (100,000 intervals and
+/// 10,000 iterations would take some 50 minutes to fail).
+inline constexpr double kMaxEstimatedSolveSeconds = 300.0;
+
+/// Throws InputError, with the estimate and the sizes it comes from, when
+/// estimated_failing_solve_seconds() exceeds kMaxEstimatedSolveSeconds.
+void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options);
+
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
-/// Throws InputError for bad input (rod, tip condition, options); a solve that does not converge is
-/// reported in the summary's status, never thrown.
+/// Throws InputError for bad input (rod, tip condition, options, check_solve_cost()); a solve that
+/// does not converge is reported in the summary's status, never thrown.
 ShootingResult solve_equilibrium(const ClampedRod& rod,
                                  const TipCondition& tip,
                                  const BaseWrench& guess = {},
