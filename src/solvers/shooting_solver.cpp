@@ -339,6 +339,7 @@ void continue_from_rest(const ClampedRod& rod,
   FollowOptions follow;
   follow.shooting = options;
   follow.adaptive = true;
+  static_assert(ShootingOptions::kMaxContinuationSteps <= FollowOptions::kMaxSubsteps);
   follow.max_substeps = options.max_continuation_steps;
   follow.final_derivatives = Derivatives::None;
   const FollowResult followed =
@@ -362,19 +363,41 @@ void continue_from_rest(const ClampedRod& rod,
 
 }  // namespace
 
+namespace {
+
+/// The two parts of estimated_failing_solve_seconds(): the iterations of a solve that does not
+/// converge, and the re-solves with more sub-steps that the accuracy check may ask for.
+double iterations_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * 4.1e-7;
+}
+double substeps_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  return 1.2e-5 * options.max_substeps * static_cast<double>(rod.intervals);
+}
+
+}  // namespace
+
 double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options) {
-  return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * rod.substeps * 4.1e-7;
+  // Not × rod.substeps: the accuracy check's re-solves (with more sub-steps, the same options)
+  // must pass this check as the first solve did.
+  return iterations_seconds(rod, options) + substeps_seconds(rod, options);
 }
 
 void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options) {
   const double seconds = estimated_failing_solve_seconds(rod, options);
   if (seconds <= kMaxEstimatedSolveSeconds) return;
-  throw InputError("ShootingOptions.max_iterations",
-                   " = " + std::to_string(options.max_iterations) + " with " +
-                       std::to_string(rod.nodes()) + " rod nodes: a solve that does not converge " +
-                       "would take about " + detail::format_value(std::round(seconds)) +
-                       " s; at most " + detail::format_value(kMaxEstimatedSolveSeconds) +
-                       " s (docs/limits.md): lower one of them");
+  const bool by_iterations = iterations_seconds(rod, options) >= substeps_seconds(rod, options);
+  throw InputError(
+      by_iterations ? "ShootingOptions.max_iterations" : "ShootingOptions.max_substeps",
+      " = " + std::to_string(by_iterations ? options.max_iterations : options.max_substeps) +
+          " with " + std::to_string(rod.nodes()) + " rod nodes: a solve could take about " +
+          detail::format_value(std::round(seconds)) + " s (" +
+          detail::format_value(std::round(iterations_seconds(rod, options))) +
+          " s to fail in ShootingOptions.max_iterations = " +
+          std::to_string(options.max_iterations) + ", " +
+          detail::format_value(std::round(substeps_seconds(rod, options))) +
+          " s for ShootingOptions.max_substeps = " + std::to_string(options.max_substeps) +
+          "); at most " + detail::format_value(kMaxEstimatedSolveSeconds) +
+          " s (docs/limits.md): lower one of them");
 }
 
 ShootingResult solve_equilibrium(const ClampedRod& rod,

@@ -165,12 +165,12 @@ TEST(TaskReader, TooManyNodesIsRejected) {
   EXPECT_EQ(message, "task.yaml:3: rod.nodes = 100002 must be <= 100001");
 }
 
-TEST(TaskReader, NodesTimesIterationsBeyondTheirBoundIsRejectedWithTheEstimate) {
+TEST(TaskReader, NodesTimesIterationsAndSubstepsBeyondTheirBoundIsRejectedWithTheEstimate) {
   EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n") +
-                     "solver: {max_iterations: 1100}\n"),
-            "task.yaml:10: solver.max_iterations = 1100 with 100001 rod nodes: a solve that does "
-            "not converge would take about 316 s; at most 300 s (docs/limits.md): lower one of "
-            "them");
+                     "solver: {max_iterations: 1000, max_substeps: 128}\n"),
+            "task.yaml:10: solver.max_iterations = 1000 with 100001 rod nodes: a solve could take "
+            "about 441 s (287 s to fail in solver.max_iterations = 1000, 154 s for "
+            "solver.max_substeps = 128); at most 300 s (docs/limits.md): lower one of them");
   // Either alone is fine.
   EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n")), "");
   EXPECT_EQ(error_of(kBandTask + "solver: {max_iterations: 10000}\n"), "");

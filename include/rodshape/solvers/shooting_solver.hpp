@@ -76,21 +76,24 @@ struct ShootingResult {
   std::string brief() const { return summary.brief(); }
 };
 
-/// The time a solve that does not converge takes, s, on the machine docs/limits.md was measured on:
-/// about 7 integrations with derivatives per allowed iteration (the direct solve and the
-/// continuation's stages each use them all), each 4.1e-7 s per interval and sub-step:
-/// 7 × max_iterations × intervals × substeps × 4.1e-7 s (the band's tip loaded far beyond what
-/// converges, 100,000 intervals, 100 iterations: 29 s measured, 29 s estimated). A solve that
-/// converges takes a small part of it (1.3 s there).
+/// The time a solve may take at worst, s, on the machine docs/limits.md was measured on, the sum
+/// of two parts measured on the band with 100,000 intervals and its tip loaded far beyond what
+/// converges:
+///  * failing: about 7 integrations with derivatives per allowed iteration (the direct solve and
+///    the continuation's stages each use them all), each 4.1e-7 s per interval:
+///    7 × max_iterations × intervals × 4.1e-7 s (100 iterations: 29 s measured and estimated);
+///  * the accuracy check's re-solves with more sub-steps (the continuation's too): about
+///    1.2e-5 s × max_substeps × intervals (16: 19 s, 64: 74 s measured).
+/// A solve that converges takes a small part of it (1.3 s there).
 double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options);
 
-/// The most estimated_failing_solve_seconds() that solve_equilibrium() accepts: each of rod.nodes
-/// and max_iterations has its own bound, and this bounds their product (100,000 intervals and
-/// 10,000 iterations would take some 50 minutes to fail).
+/// The most estimated_failing_solve_seconds() that solve_equilibrium() accepts: rod.intervals,
+/// max_iterations and max_substeps each have their own bound, and this bounds their products
+/// (100,000 intervals with 4096 sub-steps would take hours).
 inline constexpr double kMaxEstimatedSolveSeconds = 300.0;
 
-/// Throws InputError, with the estimate and the sizes it comes from, when
-/// estimated_failing_solve_seconds() exceeds kMaxEstimatedSolveSeconds.
+/// Throws InputError naming max_iterations or max_substeps (whichever costs more), with the
+/// estimate, when estimated_failing_solve_seconds() exceeds kMaxEstimatedSolveSeconds.
 void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options);
 
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
