@@ -137,9 +137,7 @@ std::vector<TimedPose> time_parameterize(const std::vector<Pose>& waypoints,
             detail::format_value(size.duration) +
             " s at EndEffectorLimits.sample_rate = " + detail::format_value(limits.sample_rate) +
             " Hz); at most " + count(EndEffectorLimits::kMaxSamples) +
-            ": raise EndEffectorLimits.max_linear_speed or "
-            "EndEffectorLimits.max_angular_speed, or lower "
-            "EndEffectorLimits.sample_rate");
+            ": raise the speed or acceleration limits, or lower EndEffectorLimits.sample_rate");
   std::vector<TimedPose> path{{0.0, waypoints.front()}};
   path.reserve(static_cast<std::size_t>(size.samples) + 1);
   const double dt = 1.0 / limits.sample_rate;

@@ -295,6 +295,29 @@ TEST_F(CliPlan, UnboundedWorkIsBadInputNamedBeforePlanning) {
   }
 }
 
+TEST_F(CliPlan, APathWithTooManySamplesIsBadInputCountedBeforeSampling) {
+  // Each limit passes the check of a 1 m / 1 rad move (0.9e6 samples), but ten steps that each
+  // turn the tip a little, every one from rest at this slow angular acceleration, take 2.2e6.
+  const fs::path task = write_task(
+      "long_path.yaml",
+      task_with("steps: 2", "steps: 10\n  rate: 10000\n  max_angular_acceleration: 4.9e-4"));
+  const fs::path outdir = directory_ / "long_path";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  expect_one_line(result.err);
+  EXPECT_EQ(
+      result.err.rfind(
+          "error: " + task.string() + ":14: trajectory: the end-effector path would have 2.", 0),
+      0u)
+      << result.err;
+  EXPECT_NE(result.err.find("e+06 samples (duration "), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(" s at trajectory.rate = 10000 Hz); at most 1e+06: raise the speed "
+                            "or acceleration limits, or lower trajectory.rate\n"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(outdir));
+}
+
 TEST_F(CliPlan, AnEarlierRunsPlanFilesAreRemovedBeforePlanning) {
   // A run that stops while planning (here: the workspace excludes the initial tip; likewise a
   // killed run) must not leave an earlier run's plan.json looking like its result.

@@ -96,9 +96,8 @@ TEST(SizeBounds, APathWithTooManySamplesIsRefusedBeforeSampling) {
   const std::vector<Pose> waypoints = {Pose{}, Pose{{20.0, 0.0, 0.0}, Eigen::Matrix3d::Identity()}};
   EXPECT_EQ(input_error_message([&] { time_parameterize(waypoints, limits); }),
             "EndEffectorLimits: the end-effector path would have 2e+06 samples (duration 200 s at "
-            "EndEffectorLimits.sample_rate = 10000 Hz); at most 1e+06: raise "
-            "EndEffectorLimits.max_linear_speed or EndEffectorLimits.max_angular_speed, or lower "
-            "EndEffectorLimits.sample_rate");
+            "EndEffectorLimits.sample_rate = 10000 Hz); at most 1e+06: raise the speed or "
+            "acceleration limits, or lower EndEffectorLimits.sample_rate");
 }
 
 TEST(SizeBounds, APlansRodHasAtMostFiveThousandIntervals) {
