@@ -56,30 +56,7 @@ bool is_flat(const Json& list) {
   return true;
 }
 
-bool holds_no_string(const Json& list) {
-  for (const Json& element : list) {
-    if (element.is_string()) return false;
-  }
-  return true;
-}
-
-/// A flat list without strings, "[1, 2, 3]": one dump() of the whole list, a space after each
-/// comma (no comma can be inside a number, a bool or null). A node's position is three numbers,
-/// and a million nodes make seven million such lists: dumping each element on its own cost
-/// seconds.
-void format_flat_numbers(const Json& list, std::string& out) {
-  const std::string compact = list.dump();
-  for (const char c : compact) {
-    out += c;
-    if (c == ',') out += ' ';
-  }
-}
-
 void format(const Json& value, int indent, std::string& out) {
-  if (value.is_array() && !value.empty() && holds_no_string(value) && is_flat(value)) {
-    format_flat_numbers(value, out);
-    return;
-  }
   const std::string inner(static_cast<std::size_t>(indent + 2), ' ');
   const std::string outer(static_cast<std::size_t>(indent), ' ');
   if (value.is_object() && !value.empty()) {
