@@ -18,8 +18,7 @@ namespace rodshape {
 
 struct ShapeOptimiserOptions {
   /// Upper bounds (docs/limits.md, "Sizes"): an IPOPT iteration integrates the rod with its
-  /// derivatives (a few ms at 101 nodes); each start is a whole solve (about 20 ms per step for
-  /// the 101-node band).
+  /// derivatives; each start is a whole solve (about 20 ms per step for the 101-node band).
   static constexpr int kMaxIterations = 10'000;
   static constexpr int kMaxMultiStarts = 100;
 

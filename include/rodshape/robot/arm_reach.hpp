@@ -29,7 +29,7 @@ namespace rodshape {
 
 struct ArmReachOptions {
   /// Upper bounds (docs/limits.md, "Sizes"): a sample is one forward kinematics (about 0.5 µs for
-  /// the Panda), a refinement step a few.
+  /// the Panda), a refinement step one with its Jacobian.
   static constexpr int kMaxSamples = 1'000'000;
   static constexpr int kMaxRefinementSteps = 100'000;
 

@@ -24,8 +24,8 @@
 namespace rodshape {
 
 struct IkOptions {
-  /// Upper bounds (docs/limits.md, "Sizes"): an iteration is one Jacobian and a 6×n solve (a few
-  /// µs for the Panda); one IK runs at every sample of a joint trajectory.
+  /// Upper bounds (docs/limits.md, "Sizes"): an iteration is one Jacobian and a 6×n solve; one IK
+  /// runs at every sample of a joint trajectory.
   static constexpr int kMaxIterations = 10'000;
   static constexpr int kMaxRestarts = 1000;
 
