@@ -73,6 +73,8 @@ class PlanCommand final : public Command {
   int run() override {
     const PlanTask task = read_plan_task(task_path_);
     check_output_directory(output_directory_);
+    // An earlier run's plan.json must not outlive this run if it is killed or fails.
+    remove_plan_files(output_directory_);
     PlanResult result;
     try {
       result = plan(task.problem, task.options);

@@ -35,6 +35,15 @@ inline void require_non_negative(const std::string& field, double value) {
   if (value < 0.0) throw InputError(field, " = " + format_value(value) + " must be >= 0");
 }
 
+/// A count or size a user sets: `min` ≤ value ≤ `max` ("PlanOptions.steps = 0 must be >= 1",
+/// "PlanOptions.steps = 1000000 must be <= 1000"). Every such bound is in docs/limits.md.
+inline void require_count(const std::string& field, long long value, long long min, long long max) {
+  if (value < min)
+    throw InputError(field, " = " + std::to_string(value) + " must be >= " + std::to_string(min));
+  if (value > max)
+    throw InputError(field, " = " + std::to_string(value) + " must be <= " + std::to_string(max));
+}
+
 template <typename Derived>
 void require_finite(const std::string& field, const Eigen::MatrixBase<Derived>& value) {
   for (Eigen::Index i = 0; i < value.size(); ++i)

@@ -9,8 +9,7 @@ void ClampedRod::validate() const {
   detail::require_finite("ClampedRod.load.force", load.force);
   detail::require_finite("ClampedRod.load.moment", load.moment);
   detail::require_pose("ClampedRod.clamp", clamp);
-  if (intervals < 1)
-    throw InputError("ClampedRod.intervals", " = " + std::to_string(intervals) + " must be >= 1");
+  detail::require_count("ClampedRod.intervals", intervals, 1, kMaxIntervals);
   if (substeps < 1 || substeps > kMaxSubsteps)
     throw InputError("ClampedRod.substeps", " = " + std::to_string(substeps) + " must be in [1, " +
                                                 std::to_string(kMaxSubsteps) + "]");

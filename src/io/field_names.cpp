@@ -21,6 +21,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"EndEffectorLimits.max_linear_acceleration", "trajectory.max_linear_acceleration"},
       {"EndEffectorLimits.max_angular_acceleration", "trajectory.max_angular_acceleration"},
       {"EndEffectorLimits.sample_rate", "trajectory.rate"},
+      {"EndEffectorLimits", "trajectory"},
       {"PlanProblem.workspace", "workspace"},
       {"PlanProblem.initial", "initial"},
       {"PlanArm", "robot"},

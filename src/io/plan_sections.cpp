@@ -8,10 +8,29 @@
 
 #include "io/task_sections.hpp"
 #include "rodshape/error.hpp"
+#include "validation.hpp"
 
 namespace rodshape::io_detail {
 
 namespace {
+
+void read_number(const YamlField& section, std::string_view key, double& value) {
+  if (const YamlField field = section.get(key); field.present()) value = field.number();
+}
+
+/// A whole number in [min, max] (the library's bound, docs/limits.md), said as written when not.
+void read_integer(const YamlField& section, std::string_view key, int& value, int min, int max) {
+  if (const YamlField field = section.get(key); field.present()) value = field.integer_in(min, max);
+}
+
+/// A list of at most `max` entries.
+std::vector<YamlField> bounded_elements(const YamlField& list, std::size_t max) {
+  std::vector<YamlField> elements = list.elements();
+  if (elements.size() > max)
+    list.fail(list.path() + " has " + std::to_string(elements.size()) + " entries; at most " +
+              std::to_string(max));
+  return elements;
+}
 
 Workspace::Ball read_ball(const YamlField& ball) {
   ball.expect_mapping({"center", "radius"});
@@ -20,7 +39,8 @@ Workspace::Ball read_ball(const YamlField& ball) {
 
 std::vector<Workspace::Ball> read_balls(const YamlField& balls) {
   std::vector<Workspace::Ball> result;
-  for (const YamlField& ball : balls.elements()) result.push_back(read_ball(ball));
+  for (const YamlField& ball : bounded_elements(balls, Workspace::kMaxSets))
+    result.push_back(read_ball(ball));
   return result;
 }
 
@@ -33,14 +53,6 @@ void read_bound(const YamlField& field, Eigen::Ref<Vector6d> bound) {
     bound.tail<3>() = moment.vector3();
 }
 
-void read_number(const YamlField& section, std::string_view key, double& value) {
-  if (const YamlField field = section.get(key); field.present()) value = field.number();
-}
-
-void read_integer(const YamlField& section, std::string_view key, int& value) {
-  if (const YamlField field = section.get(key); field.present()) value = field.integer();
-}
-
 }  // namespace
 
 void read_target_section(const YamlField& target, ShapeTarget& result) {
@@ -49,7 +61,7 @@ void read_target_section(const YamlField& target, ShapeTarget& result) {
                          {"distance", "distance belongs in the top-level section weights"},
                          {"weights", "weights is a top-level section, not part of target"}});
   result.points.clear();
-  for (const YamlField& point : target.require("points").elements())
+  for (const YamlField& point : bounded_elements(target.require("points"), ShapeTarget::kMaxPoints))
     result.points.push_back(point.vector3());
   if (const YamlField squared = target.get("squared_distances"); squared.present())
     result.squared_distances = squared.boolean();
@@ -73,7 +85,7 @@ Workspace read_workspace_section(const YamlField& workspace) {
   if (const YamlField outside = workspace.get("outside"); outside.present())
     result.outside = read_balls(outside);
   if (const YamlField half_spaces = workspace.get("half_spaces"); half_spaces.present()) {
-    for (const YamlField& half : half_spaces.elements()) {
+    for (const YamlField& half : bounded_elements(half_spaces, Workspace::kMaxSets)) {
       half.expect_mapping({"normal", "offset"});
       result.half_spaces.push_back(
           {half.require("normal").vector3(), half.require("offset").number()});
@@ -153,17 +165,22 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
                              "max_linear_acceleration", "max_angular_acceleration", "rate", "track",
                              "tracking_substeps", "max_refinements", "interpolation"},
                             {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
-  read_integer(trajectory, "steps", options.steps);
+  read_integer(trajectory, "steps", options.steps, 1, PlanOptions::kMaxSteps);
   EndEffectorLimits& limits = options.end_effector;
   read_number(trajectory, "max_linear_speed", limits.max_linear_speed);
   read_number(trajectory, "max_angular_speed", limits.max_angular_speed);
   read_number(trajectory, "max_linear_acceleration", limits.max_linear_acceleration);
   read_number(trajectory, "max_angular_acceleration", limits.max_angular_acceleration);
   read_number(trajectory, "rate", limits.sample_rate);
+  if (limits.sample_rate > EndEffectorLimits::kMaxSampleRate)
+    trajectory.get("rate").fail_value("must be <= " +
+                                      detail::format_value(EndEffectorLimits::kMaxSampleRate));
   if (const YamlField track = trajectory.get("track"); track.present())
     options.track_between_waypoints = track.boolean();
-  read_integer(trajectory, "tracking_substeps", options.tracking_substeps);
-  read_integer(trajectory, "max_refinements", options.max_refinements);
+  read_integer(trajectory, "tracking_substeps", options.tracking_substeps, 1,
+               PlanOptions::kMaxTrackingSubsteps);
+  read_integer(trajectory, "max_refinements", options.max_refinements, 0,
+               PlanOptions::kMaxRefinements);
   if (const YamlField interpolation = trajectory.get("interpolation"); interpolation.present())
     options.interpolation = read_interpolation(interpolation);
 }
@@ -171,11 +188,13 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
 void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options) {
   optimizer.expect_mapping({"max_iterations", "tolerance", "constraint_tolerance", "multi_starts",
                             "print_level", "confine_to_scale"});
-  read_integer(optimizer, "max_iterations", options.max_iterations);
+  read_integer(optimizer, "max_iterations", options.max_iterations, 0,
+               ShapeOptimiserOptions::kMaxIterations);
   read_number(optimizer, "tolerance", options.tolerance);
   read_number(optimizer, "constraint_tolerance", options.constraint_tolerance);
-  read_integer(optimizer, "multi_starts", options.multi_starts);
-  read_integer(optimizer, "print_level", options.print_level);
+  read_integer(optimizer, "multi_starts", options.multi_starts, 0,
+               ShapeOptimiserOptions::kMaxMultiStarts);
+  read_integer(optimizer, "print_level", options.print_level, 0, 12);
   if (const YamlField confine = optimizer.get("confine_to_scale"); confine.present())
     options.confine_to_scale = confine.boolean();
 }
@@ -229,8 +248,8 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
     if (const YamlField use = reach.get("use"); use.present()) options.use_reach = use.boolean();
     read_number(reach, "margin", options.reach_margin);
     read_number(reach, "tightening", options.replan_tightening);
-    read_integer(reach, "max_replans", options.max_replans);
-    read_integer(reach, "samples", options.reach.samples);
+    read_integer(reach, "max_replans", options.max_replans, 0, ArmPlanOptions::kMaxReplans);
+    read_integer(reach, "samples", options.reach.samples, 1, ArmReachOptions::kMaxSamples);
     reach.located([&] { options.validate(); });
   }
 }

@@ -25,6 +25,24 @@ void make_directory(const std::string& directory) {
 
 }  // namespace
 
+const std::vector<std::string>& plan_file_names() {
+  static const std::vector<std::string> names = {"plan.json", "trajectory.csv", "plan.svg",
+                                                 "joint_trajectory.csv", "joint_trajectory.json"};
+  return names;
+}
+
+void remove_plan_files(const std::string& directory) {
+  for (const std::string& name : plan_file_names()) {
+    const fs::path path = fs::path(directory) / name;
+    std::error_code error;
+    const fs::file_status status = fs::symlink_status(path, error);
+    if (error || !fs::exists(status)) continue;
+    if (!fs::remove(path, error) && error)
+      throw InputError(path.string() +
+                       ": cannot remove the file of an earlier run: " + error.message());
+  }
+}
+
 void check_output_directory(const std::string& directory) {
   std::error_code error;
   if (fs::exists(directory, error) && !fs::is_directory(directory, error))

@@ -14,6 +14,8 @@
 #include "io/task_sections.hpp"
 #include "io/yaml_field.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
+#include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
 
@@ -120,7 +122,10 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
   }
 
   // Whole-task checks by the library; their messages name the field, we add file and line.
-  root.located([&] { task.options.validate(); });
+  root.located([&] {
+    task.options.validate();
+    check_solve_cost(task.rod, task.options);
+  });
   return task;
 }
 
@@ -133,6 +138,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   task.lines = root.key_lines(2);
   PlanProblem& problem = task.problem;
   problem.rod = read_clamped_rod(root);
+  if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
+    root.get("rod").get("nodes").fail_value(
+        "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
+  }
   problem.target.energy_weight = io_detail::kDefaultEnergyWeight;
   problem.target.distance_weight = io_detail::kDefaultDistanceWeight;
   io_detail::read_target_section(root.require("target"), problem.target);
@@ -174,6 +183,12 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     problem.validate();
     task.options.validate();
   });
+  // The sizes' product (each has its own bound): said in the task's names, at no one line.
+  try {
+    check_plan_cost(problem, task.options);
+  } catch (const InputError& error) {
+    throw InputError(source_name + ": " + fields_in_task_names(error.what()));
+  }
   return task;
 }
 

@@ -279,8 +279,7 @@ void read_solver_section(const YamlField& solver,
                          "initial_wrench", "integration_tolerance", "max_substeps",
                          "max_axial_strain", "max_shear_strain"});
   if (const YamlField field = solver.get("max_iterations"); field.present()) {
-    options.max_iterations = field.integer();
-    if (options.max_iterations < 1) field.fail_value("must be >= 1");
+    options.max_iterations = field.integer_in(1, ShootingOptions::kMaxIterations);
   }
   if (const YamlField field = solver.get("tolerance"); field.present()) {
     options.residual_tolerance = field.positive_number();
@@ -289,8 +288,7 @@ void read_solver_section(const YamlField& solver,
     options.continuation = field.boolean();
   }
   if (const YamlField field = solver.get("max_continuation_steps"); field.present()) {
-    options.max_continuation_steps = field.integer();
-    if (options.max_continuation_steps < 1) field.fail_value("must be >= 1");
+    options.max_continuation_steps = field.integer_in(1, ShootingOptions::kMaxContinuationSteps);
   }
   if (const YamlField field = solver.get("initial_wrench"); field.present()) {
     initial_wrench = read_wrench(field);

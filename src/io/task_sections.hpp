@@ -16,6 +16,7 @@
 #include "rodshape/core/wrench.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
+#include "rodshape/trajectory/plan_problem.hpp"
 
 namespace rodshape::io_detail {
 
@@ -26,8 +27,10 @@ struct RodSection {
   int nodes = 101;                // rod.nodes: N + 1 sample points, both ends included
 };
 
-/// The largest rod.nodes accepted (memory: about 1 kB per node with all derivatives).
-inline constexpr int kMaxNodes = 1'000'000;
+/// The largest rod.nodes accepted: ClampedRod::kMaxIntervals + 1 (docs/limits.md, "Sizes"). A
+/// plan accepts fewer: kMaxPlanNodes.
+inline constexpr int kMaxNodes = ClampedRod::kMaxIntervals + 1;
+inline constexpr int kMaxPlanNodes = PlanProblem::kMaxIntervals + 1;
 
 /// `rod`: length, nodes, model, section, material, stiffness, rest_curvature.
 RodSection read_rod_section(const YamlField& rod);

@@ -269,6 +269,14 @@ int YamlField::integer() const {
   return static_cast<int>(value);
 }
 
+int YamlField::integer_in(int min, int max) const {
+  const double value = number();
+  if (value != std::floor(value)) fail_value("must be a whole number");
+  if (value < min) fail_value("must be >= " + std::to_string(min));
+  if (value > max) fail_value("must be <= " + std::to_string(max));
+  return static_cast<int>(value);
+}
+
 bool YamlField::boolean() const {
   expect_scalar("true or false");
   bool value = false;

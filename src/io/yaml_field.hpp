@@ -82,6 +82,9 @@ class YamlField {
   double positive_number() const;
   /// A whole number representable as int.
   int integer() const;
+  /// A whole number in [min, max], said as written when not: "trajectory.steps = 1e9 must be <=
+  /// 1000" (the bounds of docs/limits.md, "Sizes").
+  int integer_in(int min, int max) const;
   /// true/false (also yes/no, on/off as yaml-cpp reads them).
   bool boolean() const;
   /// A plain or quoted string.

@@ -12,14 +12,10 @@
 namespace rodshape {
 
 void ShapeOptimiserOptions::validate() const {
-  if (max_iterations < 0)
-    throw InputError("ShapeOptimiserOptions.max_iterations",
-                     " = " + std::to_string(max_iterations) + " must be >= 0");
+  detail::require_count("ShapeOptimiserOptions.max_iterations", max_iterations, 0, kMaxIterations);
   detail::require_positive("ShapeOptimiserOptions.tolerance", tolerance);
   detail::require_positive("ShapeOptimiserOptions.constraint_tolerance", constraint_tolerance);
-  if (multi_starts < 0)
-    throw InputError("ShapeOptimiserOptions.multi_starts",
-                     " = " + std::to_string(multi_starts) + " must be >= 0");
+  detail::require_count("ShapeOptimiserOptions.multi_starts", multi_starts, 0, kMaxMultiStarts);
   if (print_level < 0 || print_level > 12)
     throw InputError("ShapeOptimiserOptions.print_level",
                      " = " + std::to_string(print_level) + " must be in [0, 12]");

@@ -67,6 +67,9 @@ double spline_length(const Eigen::Spline3d& spline, double a, double b) {
 void ShapeTarget::validate() const {
   if (points.empty())
     throw InputError("ShapeTarget.points", " is empty: give at least one objective point");
+  if (points.size() > kMaxPoints)
+    throw InputError("ShapeTarget.points", " has " + std::to_string(points.size()) +
+                                               " points; at most " + std::to_string(kMaxPoints));
   for (std::size_t i = 0; i < points.size(); ++i)
     detail::require_finite("ShapeTarget.points[" + std::to_string(i) + "]", points[i]);
   detail::require_non_negative("ShapeTarget.energy_weight", energy_weight);

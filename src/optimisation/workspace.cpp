@@ -124,6 +124,15 @@ void Workspace::validate() const {
       detail::require_positive(indexed(name, i) + ".radius", balls[i].radius);
     }
   };
+  const auto check_count = [](std::size_t count, const char* name) {
+    if (count > kMaxSets)
+      throw InputError(
+          std::string("Workspace.") + name,
+          " has " + std::to_string(count) + " entries; at most " + std::to_string(kMaxSets));
+  };
+  check_count(inside.size(), "inside");
+  check_count(outside.size(), "outside");
+  check_count(half_spaces.size(), "half_spaces");
   check_balls(inside, "inside");
   check_balls(outside, "outside");
   for (std::size_t i = 0; i < half_spaces.size(); ++i) {

@@ -98,11 +98,9 @@ void refine(const ArmModel& arm,
 }  // namespace
 
 void ArmReachOptions::validate() const {
-  if (samples < 1)
-    throw InputError("ArmReachOptions.samples", " = " + std::to_string(samples) + " must be >= 1");
-  if (refinement_steps < 0)
-    throw InputError("ArmReachOptions.refinement_steps",
-                     " = " + std::to_string(refinement_steps) + " must be >= 0");
+  detail::require_count("ArmReachOptions.samples", samples, 1, kMaxSamples);
+  detail::require_count("ArmReachOptions.refinement_steps", refinement_steps, 0,
+                        kMaxRefinementSteps);
 }
 
 double ArmReach::wrist_distance(const Pose& base_T_flange) const {

@@ -21,12 +21,8 @@ namespace rodshape {
 void IkOptions::validate() const {
   detail::require_positive("IkOptions.position_tolerance", position_tolerance);
   detail::require_positive("IkOptions.rotation_tolerance", rotation_tolerance);
-  if (max_iterations < 1)
-    throw InputError("IkOptions.max_iterations",
-                     " = " + std::to_string(max_iterations) + " must be >= 1");
-  if (max_restarts < 0)
-    throw InputError("IkOptions.max_restarts",
-                     " = " + std::to_string(max_restarts) + " must be >= 0");
+  detail::require_count("IkOptions.max_iterations", max_iterations, 1, kMaxIterations);
+  detail::require_count("IkOptions.max_restarts", max_restarts, 0, kMaxRestarts);
   detail::require_non_negative("IkOptions.limit_avoidance_gain", limit_avoidance_gain);
 }
 

@@ -14,11 +14,8 @@
 namespace rodshape {
 
 void FollowOptions::validate() const {
-  if (substeps < 1)
-    throw InputError("FollowOptions.substeps", " = " + std::to_string(substeps) + " must be >= 1");
-  if (max_substeps < 1)
-    throw InputError("FollowOptions.max_substeps",
-                     " = " + std::to_string(max_substeps) + " must be >= 1");
+  detail::require_count("FollowOptions.substeps", substeps, 1, kMaxSubsteps);
+  detail::require_count("FollowOptions.max_substeps", max_substeps, 1, kMaxSubsteps);
   detail::require_positive("FollowOptions.initial_step", initial_step);
   if (arrival_stability && final_derivatives != Derivatives::AllNodes)
     throw InputError("FollowOptions.arrival_stability",

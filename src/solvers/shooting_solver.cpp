@@ -19,13 +19,10 @@
 namespace rodshape {
 
 void ShootingOptions::validate() const {
-  if (max_iterations < 1)
-    throw InputError("ShootingOptions.max_iterations",
-                     " = " + std::to_string(max_iterations) + " must be >= 1");
+  detail::require_count("ShootingOptions.max_iterations", max_iterations, 1, kMaxIterations);
   detail::require_positive("ShootingOptions.residual_tolerance", residual_tolerance);
-  if (max_continuation_steps < 1)
-    throw InputError("ShootingOptions.max_continuation_steps",
-                     " = " + std::to_string(max_continuation_steps) + " must be >= 1");
+  detail::require_count("ShootingOptions.max_continuation_steps", max_continuation_steps, 1,
+                        kMaxContinuationSteps);
   if (!(integration_tolerance > 0.0))  // +inf is allowed: it turns the accuracy check off
     throw InputError("ShootingOptions.integration_tolerance",
                      " = " + detail::format_value(integration_tolerance) + " must be > 0");
@@ -342,6 +339,7 @@ void continue_from_rest(const ClampedRod& rod,
   FollowOptions follow;
   follow.shooting = options;
   follow.adaptive = true;
+  static_assert(ShootingOptions::kMaxContinuationSteps <= FollowOptions::kMaxSubsteps);
   follow.max_substeps = options.max_continuation_steps;
   follow.final_derivatives = Derivatives::None;
   const FollowResult followed =
@@ -365,6 +363,43 @@ void continue_from_rest(const ClampedRod& rod,
 
 }  // namespace
 
+namespace {
+
+/// The two parts of estimated_failing_solve_seconds(): the iterations of a solve that does not
+/// converge, and the re-solves with more sub-steps that the accuracy check may ask for.
+double iterations_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * 4.1e-7;
+}
+double substeps_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  return 1.2e-5 * options.max_substeps * static_cast<double>(rod.intervals);
+}
+
+}  // namespace
+
+double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  // Not × rod.substeps: the accuracy check's re-solves (with more sub-steps, the same options)
+  // must pass this check as the first solve did.
+  return iterations_seconds(rod, options) + substeps_seconds(rod, options);
+}
+
+void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options) {
+  const double seconds = estimated_failing_solve_seconds(rod, options);
+  if (seconds <= kMaxEstimatedSolveSeconds) return;
+  const bool by_iterations = iterations_seconds(rod, options) >= substeps_seconds(rod, options);
+  throw InputError(
+      by_iterations ? "ShootingOptions.max_iterations" : "ShootingOptions.max_substeps",
+      " = " + std::to_string(by_iterations ? options.max_iterations : options.max_substeps) +
+          " with " + std::to_string(rod.nodes()) + " rod nodes: a solve could take about " +
+          detail::format_value(std::round(seconds)) + " s (" +
+          detail::format_value(std::round(iterations_seconds(rod, options))) +
+          " s to fail in ShootingOptions.max_iterations = " +
+          std::to_string(options.max_iterations) + ", " +
+          detail::format_value(std::round(substeps_seconds(rod, options))) +
+          " s for ShootingOptions.max_substeps = " + std::to_string(options.max_substeps) +
+          "); at most " + detail::format_value(kMaxEstimatedSolveSeconds) +
+          " s (docs/limits.md): lower one of them");
+}
+
 ShootingResult solve_equilibrium(const ClampedRod& rod,
                                  const TipCondition& tip,
                                  const BaseWrench& guess,
@@ -372,6 +407,7 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
   rod.validate();
   validate_tip(tip);
   options.validate();
+  check_solve_cost(rod, options);
   detail::require_finite("guess.force", guess.force);
   detail::require_finite("guess.moment", guess.moment);
 

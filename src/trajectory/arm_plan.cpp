@@ -12,9 +12,7 @@ namespace rodshape {
 void ArmPlanOptions::validate() const {
   detail::require_non_negative("ArmPlanOptions.reach_margin", reach_margin);
   detail::require_positive("ArmPlanOptions.replan_tightening", replan_tightening);
-  if (max_replans < 0)
-    throw InputError("ArmPlanOptions.max_replans",
-                     " = " + std::to_string(max_replans) + " must be >= 0");
+  detail::require_count("ArmPlanOptions.max_replans", max_replans, 0, kMaxReplans);
   reach.validate();
   joints.ik.validate();
 }

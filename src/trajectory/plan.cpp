@@ -14,14 +14,10 @@
 namespace rodshape {
 
 void PlanOptions::validate() const {
-  if (steps < 1)
-    throw InputError("PlanOptions.steps", " = " + std::to_string(steps) + " must be >= 1");
-  if (max_refinements < 0)
-    throw InputError("PlanOptions.max_refinements",
-                     " = " + std::to_string(max_refinements) + " must be >= 0");
-  if (tracking_substeps < 1)
-    throw InputError("PlanOptions.tracking_substeps",
-                     " = " + std::to_string(tracking_substeps) + " must be >= 1");
+  detail::require_count("PlanOptions.steps", steps, 1, kMaxSteps);
+  detail::require_count("PlanOptions.max_refinements", max_refinements, 0, kMaxRefinements);
+  detail::require_count("PlanOptions.tracking_substeps", tracking_substeps, 1,
+                        kMaxTrackingSubsteps);
   optimiser.validate();
   end_effector.validate();
   arm.validate();
@@ -29,6 +25,7 @@ void PlanOptions::validate() const {
 
 void PlanProblem::validate() const {
   rod.validate();
+  detail::require_count("PlanProblem.rod.intervals", rod.intervals, 1, kMaxIntervals);
   target.validate();
   workspace.validate();
   limits.validate();
@@ -224,9 +221,35 @@ PlanResult plan_rod(const PlanProblem& problem,
 
 }  // namespace detail
 
+double estimated_plan_seconds(const PlanProblem& problem, const PlanOptions& options) {
+  const double intervals = problem.rod.intervals;
+  const double points = static_cast<double>(problem.target.points.size());
+  const double optimise = 1.5e-4 * (1.0 + options.optimiser.multi_starts) * (points + 30.0) / 40.0;
+  const double track = options.track_between_waypoints ? 1.4e-6 * options.tracking_substeps : 0.0;
+  return intervals * options.steps * (optimise + track);
+}
+
+void check_plan_cost(const PlanProblem& problem, const PlanOptions& options) {
+  const double seconds = estimated_plan_seconds(problem, options);
+  if (seconds <= kMaxEstimatedPlanSeconds) return;
+  std::ostringstream out;
+  out.precision(2);
+  out << "the plan would take about " << seconds
+      << " s, estimated from PlanOptions.steps = " << options.steps
+      << ", ShapeOptimiserOptions.multi_starts = " << options.optimiser.multi_starts << ", "
+      << problem.rod.nodes() << " rod nodes, " << problem.target.points.size()
+      << " ShapeTarget.points";
+  if (options.track_between_waypoints)
+    out << " and PlanOptions.tracking_substeps = " << options.tracking_substeps;
+  out << "; at most " << detail::format_value(kMaxEstimatedPlanSeconds)
+      << " s (docs/limits.md): lower one of them";
+  throw InputError(out.str());
+}
+
 PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
   options.validate();
   problem.validate();
+  check_plan_cost(problem, options);
   if (problem.arm) return detail::plan_with_arm(problem, options);
   return detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));
 }

@@ -267,6 +267,81 @@ TEST_F(CliPlan, BadPlanFieldsExitTwoWithFileLineAndField) {
   }
 }
 
+TEST_F(CliPlan, UnboundedWorkIsBadInputNamedBeforePlanning) {
+  // Each of these ran out of memory or for minutes before the bounds (docs/limits.md, "Sizes").
+  struct Bad {
+    const char* name;
+    std::string text;
+    const char* message;
+  };
+  const std::vector<Bad> cases = {
+      {"speed", task_with("steps: 2", "steps: 2\n  max_linear_speed: 1e-12"),
+       ":16: trajectory.max_linear_speed = 1e-12: a move of 1 m from rest to rest would take "
+       "1e+12 s, 1e+14 samples at trajectory.rate = 100 Hz; an end-effector path has at most "
+       "1e+06 samples"},
+      {"rate", task_with("steps: 2", "steps: 2\n  rate: 1e9"),
+       ":16: trajectory.rate = 1e9 must be <= 10000"},
+      {"steps", task_with("steps: 2", "steps: 1e9"), ":15: trajectory.steps = 1e9 must be <= 1000"},
+  };
+  for (const Bad& bad : cases) {
+    SCOPED_TRACE(bad.name);
+    const fs::path task = write_task(std::string(bad.name) + "_bound.yaml", bad.text);
+    const fs::path outdir = directory_ / (std::string(bad.name) + "_bound");
+    const Outcome result = plan(task, outdir);
+    EXPECT_EQ(result.exit_code, 2);
+    expect_one_line(result.err);
+    EXPECT_EQ(result.err, "error: " + task.string() + bad.message + "\n");
+    EXPECT_FALSE(fs::exists(outdir));
+  }
+}
+
+TEST_F(CliPlan, APathWithTooManySamplesIsBadInputCountedBeforeSampling) {
+  // Each limit passes the check of a 1 m / 1 rad move (0.9e6 samples), but ten steps that each
+  // turn the tip a little, every one from rest at this slow angular acceleration, take 2.2e6.
+  const fs::path task = write_task(
+      "long_path.yaml",
+      task_with("steps: 2", "steps: 10\n  rate: 10000\n  max_angular_acceleration: 4.9e-4"));
+  const fs::path outdir = directory_ / "long_path";
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  expect_one_line(result.err);
+  EXPECT_EQ(
+      result.err.rfind(
+          "error: " + task.string() + ":14: trajectory: the end-effector path would have 2.", 0),
+      0u)
+      << result.err;
+  EXPECT_NE(result.err.find("e+06 samples (duration "), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(" s at trajectory.rate = 10000 Hz); at most 1e+06: raise the speed "
+                            "or acceleration limits, or lower trajectory.rate\n"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(outdir));
+}
+
+TEST_F(CliPlan, AnEarlierRunsPlanFilesAreRemovedBeforePlanning) {
+  // A run that stops while planning (here: the workspace excludes the initial tip; likewise a
+  // killed run) must not leave an earlier run's plan.json looking like its result.
+  const fs::path outdir = directory_ / "stale";
+  fs::create_directories(outdir);
+  for (const char* name : {"plan.json", "trajectory.csv", "plan.svg", "joint_trajectory.csv",
+                           "joint_trajectory.json", "notes.txt"})
+    std::ofstream(outdir / name) << "an earlier run\n";
+  const fs::path task = write_task(
+      "stale.yaml", kTask + "workspace:\n  box: {lower: [-1, -1, -1], upper: [1, 1, 0.25]}\n");
+  const Outcome result = plan(task, outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  for (const char* name :
+       {"plan.json", "trajectory.csv", "plan.svg", "joint_trajectory.csv", "joint_trajectory.json"})
+    EXPECT_FALSE(fs::exists(outdir / name)) << name;
+  EXPECT_TRUE(fs::exists(outdir / "notes.txt"));  // not a plan file: left alone
+
+  // A task that cannot be read leaves the directory as it was.
+  std::ofstream(outdir / "plan.json") << "an earlier run\n";
+  const fs::path bad = write_task("stale_bad.yaml", task_with("steps: 2", "steps: 0"));
+  EXPECT_EQ(plan(bad, outdir).exit_code, 2);
+  EXPECT_TRUE(fs::exists(outdir / "plan.json"));
+}
+
 TEST_F(CliPlan, FailedStepExitsThreeAndWritesAPartialPlan) {
   const fs::path task = write_task("stuck.yaml", kTask + "optimizer: {max_iterations: 1}\n");
   const fs::path outdir = directory_ / "stuck";

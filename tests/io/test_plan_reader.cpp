@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -203,6 +204,85 @@ TEST(PlanReader, NonPositiveSpeedIsNamed) {
 TEST(PlanReader, NegativeOptimizerIterationsIsNamed) {
   const std::string message = error_of(kPlan + "optimizer: {max_iterations: -1}\n");
   EXPECT_EQ(message, "plan.yaml:21: optimizer.max_iterations = -1 must be >= 0");
+}
+
+// ---- sizes: every count a user sets has a bound (docs/limits.md, "Sizes") ---------------------
+
+TEST(PlanReader, SizesBeyondTheirBoundsAreNamedAsWritten) {
+  struct Bad {
+    std::string text;
+    const char* message;
+  };
+  const std::vector<Bad> cases = {
+      {plan_with("steps: 3", "steps: 1e9"), "plan.yaml:20: trajectory.steps = 1e9 must be <= 1000"},
+      {plan_with("steps: 3", "steps: 3\n  tracking_substeps: 1e9"),
+       "plan.yaml:21: trajectory.tracking_substeps = 1e9 must be <= 1000"},
+      {plan_with("steps: 3", "steps: 3\n  max_refinements: 101"),
+       "plan.yaml:21: trajectory.max_refinements = 101 must be <= 100"},
+      {plan_with("steps: 3", "steps: 3\n  rate: 1e9"),
+       "plan.yaml:21: trajectory.rate = 1e9 must be <= 10000"},
+      {kPlan + "optimizer: {max_iterations: 10001}\n",
+       "plan.yaml:21: optimizer.max_iterations = 10001 must be <= 10000"},
+      {kPlan + "optimizer: {multi_starts: 1e6}\n",
+       "plan.yaml:21: optimizer.multi_starts = 1e6 must be <= 100"},
+      {plan_with("nodes: 51", "nodes: 5002"),
+       "plan.yaml:3: rod.nodes = 5002 must be <= 5001 for a plan"},
+  };
+  for (const Bad& bad : cases) {
+    SCOPED_TRACE(bad.message);
+    EXPECT_EQ(error_of(bad.text), bad.message);
+  }
+}
+
+TEST(PlanReader, SizesAtTheirBoundsRead) {
+  const PlanTask big_rod = parse_plan_task(plan_with("nodes: 51", "nodes: 5001"), "plan.yaml");
+  EXPECT_EQ(big_rod.problem.rod.intervals, PlanProblem::kMaxIntervals);
+  // Two nodes, so that the sizes' product stays within the estimated-time bound.
+  const PlanTask bounds = parse_plan_task(
+      testing::replaced_first(plan_with("nodes: 51", "nodes: 2"), "steps: 3",
+                              "steps: 1000\n  tracking_substeps: 1000\n  max_refinements: 100\n"
+                              "  rate: 10000\n  max_linear_speed: 0.1") +
+          "optimizer: {max_iterations: 10000, multi_starts: 100}\n",
+      "plan.yaml");
+  EXPECT_EQ(bounds.options.steps, PlanOptions::kMaxSteps);
+  EXPECT_EQ(bounds.options.tracking_substeps, PlanOptions::kMaxTrackingSubsteps);
+  EXPECT_EQ(bounds.options.max_refinements, PlanOptions::kMaxRefinements);
+  EXPECT_EQ(bounds.options.end_effector.sample_rate, EndEffectorLimits::kMaxSampleRate);
+  EXPECT_EQ(bounds.options.optimiser.multi_starts, ShapeOptimiserOptions::kMaxMultiStarts);
+}
+
+TEST(PlanReader, SizesWhoseProductWouldTakeTooLongAreNamedWithTheEstimate) {
+  const std::string big_rod = plan_with("nodes: 51", "nodes: 5001");
+  const std::string message = error_of(testing::replaced_first(big_rod, "steps: 3", "steps: 10") +
+                                       "optimizer: {multi_starts: 100}\n");
+  EXPECT_EQ(message,
+            "plan.yaml: the plan would take about 6.3e+02 s, estimated from trajectory.steps = 10, "
+            "optimizer.multi_starts = 100, 5001 rod nodes, 3 target.points and "
+            "trajectory.tracking_substeps = 10; at most 300 s (docs/limits.md): lower one of them");
+}
+
+TEST(PlanReader, SlowLimitsAreNamedWithWhatTheyWouldCost) {
+  EXPECT_EQ(error_of(plan_with("steps: 3", "steps: 3\n  max_linear_speed: 1e-12")),
+            "plan.yaml:21: trajectory.max_linear_speed = 1e-12: a move of 1 m from rest to rest "
+            "would take 1e+12 s, 1e+14 samples at trajectory.rate = 100 Hz; an end-effector path "
+            "has at most 1e+06 samples");
+  EXPECT_EQ(
+      error_of(plan_with("steps: 3", "steps: 3\n  max_angular_acceleration: 1e-12")),
+      "plan.yaml:21: trajectory.max_angular_acceleration = 1e-12: a move of 1 rad from rest "
+      "to rest would take 2e+06 s, 2e+08 samples at trajectory.rate = 100 Hz; an end-effector "
+      "path has at most 1e+06 samples");
+}
+
+TEST(PlanReader, TooManyTargetPointsOrWorkspaceSetsAreNamed) {
+  std::string points;
+  for (int i = 0; i < 1001; ++i) points += "    - [0.003, 0.000, 0.028]\n";
+  const std::string many_points =
+      kPlan.substr(0, kPlan.find("    - [0.003")) + points + kPlan.substr(kPlan.find("weights:"));
+  EXPECT_EQ(error_of(many_points), "plan.yaml:8: target.points has 1001 entries; at most 1000");
+  std::string balls;
+  for (int i = 0; i < 101; ++i) balls += "    - {center: [0, 0, 0], radius: 0.5}\n";
+  EXPECT_EQ(error_of(plan_with("    - {center: [0, 0, 0], radius: 0.5}\n", balls)),
+            "plan.yaml:17: workspace.inside has 101 entries; at most 100");
 }
 
 TEST(PlanReader, InvertedWrenchBoundIsNamed) {

@@ -159,6 +159,30 @@ TEST(TaskReader, TooFewNodesIsRejected) {
   EXPECT_EQ(message, "task.yaml:3: rod.nodes = 1 must be >= 2 (both ends are nodes)");
 }
 
+TEST(TaskReader, TooManyNodesIsRejected) {
+  const std::string message =
+      error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100002\n"));
+  EXPECT_EQ(message, "task.yaml:3: rod.nodes = 100002 must be <= 100001");
+}
+
+TEST(TaskReader, NodesTimesIterationsAndSubstepsBeyondTheirBoundIsRejectedWithTheEstimate) {
+  EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n") +
+                     "solver: {max_iterations: 1000, max_substeps: 128}\n"),
+            "task.yaml:10: solver.max_iterations = 1000 with 100001 rod nodes: a solve could take "
+            "about 441 s (287 s to fail in solver.max_iterations = 1000, 154 s for "
+            "solver.max_substeps = 128); at most 300 s (docs/limits.md): lower one of them");
+  // Either alone is fine.
+  EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n")), "");
+  EXPECT_EQ(error_of(kBandTask + "solver: {max_iterations: 10000}\n"), "");
+}
+
+TEST(TaskReader, SolverCountsBeyondTheirBoundsAreRejected) {
+  EXPECT_EQ(error_of(kBandTask + "solver: {max_iterations: 1e9}\n"),
+            "task.yaml:9: solver.max_iterations = 1e9 must be <= 10000");
+  EXPECT_EQ(error_of(kBandTask + "solver: {max_continuation_steps: 4097}\n"),
+            "task.yaml:9: solver.max_continuation_steps = 4097 must be <= 4096");
+}
+
 TEST(TaskReader, FractionalNodesIsRejected) {
   const std::string message =
       error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 10.5\n"));

@@ -51,6 +51,16 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task);
 /// take a while).
 void check_output_directory(const std::string& directory);
 
+/// The files write_plan() may write, in its order: plan.json, trajectory.csv, plan.svg,
+/// joint_trajectory.csv, joint_trajectory.json.
+const std::vector<std::string>& plan_file_names();
+
+/// Removes the plan files (plan_file_names()) of an earlier run from `directory`, if there are
+/// any, so that a run that is killed or stops with an error while planning leaves no earlier
+/// result that could be taken for its own; other files are left alone. Call it once the task has
+/// been read, before planning. Throws InputError when such a file exists and cannot be removed.
+void remove_plan_files(const std::string& directory);
+
 /// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
 /// plan is infeasible, trajectory.csv and plan.svg; with a complete joint trajectory,
 /// joint_trajectory.csv and joint_trajectory.json. Each file is written whole or not at all, and

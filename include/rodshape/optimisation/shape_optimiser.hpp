@@ -17,13 +17,18 @@
 namespace rodshape {
 
 struct ShapeOptimiserOptions {
-  int max_iterations = 500;            // IPOPT max_iter
+  /// Upper bounds (docs/limits.md, "Sizes"): an IPOPT iteration integrates the rod with its
+  /// derivatives; each start is a whole solve (about 20 ms per step for the 101-node band).
+  static constexpr int kMaxIterations = 10'000;
+  static constexpr int kMaxMultiStarts = 100;
+
+  int max_iterations = 500;            // IPOPT max_iter, 0 … kMaxIterations
   double tolerance = 1e-8;             // IPOPT tol (scaled NLP error)
   double constraint_tolerance = 1e-9;  // IPOPT constr_viol_tol, in the constraints' units
   /// Extra starts besides the given guess: the guess with each bending moment component flipped,
   /// and so on; feasible optima are ranked by elastic energy (the paper's use of the energy term).
-  int multi_starts = 0;
-  int print_level = 0;  // IPOPT print_level (0: silent)
+  int multi_starts = 0;  // 0 … kMaxMultiStarts
+  int print_level = 0;   // IPOPT print_level (0: silent)
   /// The Hessian of the Lagrangian. FiniteDifference: forward differences of its exact gradient
   /// (6 more evaluations per iteration, Newton's convergence: the paper's experiment plans in 77
   /// iterations instead of 402). LimitedMemory: IPOPT's L-BFGS, cheaper iterations and more of

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct Workspace {
     /// |q - c| for a tip pose.
     double distance(const Pose& tip) const { return (point(tip) - center).norm(); }
   };
+
+  /// Upper bound on each of inside, outside and half_spaces (docs/limits.md, "Sizes"): each is a
+  /// row of g, evaluated with its derivatives at every iteration of every step.
+  static constexpr std::size_t kMaxSets = 100;
 
   std::optional<Box> box;
   // Rows of g, in this order: box (3: p itself), inside balls, outside balls, half-spaces, reach

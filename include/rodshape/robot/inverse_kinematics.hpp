@@ -24,6 +24,11 @@
 namespace rodshape {
 
 struct IkOptions {
+  /// Upper bounds (docs/limits.md, "Sizes"): an iteration is one Jacobian and a 6×n solve; one IK
+  /// runs at every sample of a joint trajectory.
+  static constexpr int kMaxIterations = 10'000;
+  static constexpr int kMaxRestarts = 1000;
+
   double position_tolerance = 1e-10;  // converged when |p* - p| ≤ this (m) ...
   double rotation_tolerance = 1e-10;  // ... and the angle of R* Rᵀ ≤ this (rad)
   int max_iterations = 200;           // per attempt (the seed and each restart)

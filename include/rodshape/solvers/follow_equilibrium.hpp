@@ -39,6 +39,9 @@ EquilibriumPath held_tip_path(const Pose& from,
 EquilibriumPath sampled_tip_path(std::vector<TipCondition> samples);
 
 struct FollowOptions {
+  /// Upper bound of substeps and max_substeps (docs/limits.md, "Sizes"): a substep is one solve.
+  static constexpr int kMaxSubsteps = 4096;
+
   /// Each substep's direct solve (its `continuation` is not used; `output_derivatives` is the
   /// derivatives of the last substep's configuration, see final_derivatives).
   ShootingOptions shooting;

@@ -17,6 +17,11 @@
 namespace rodshape {
 
 struct ShootingOptions {
+  /// Upper bounds (docs/limits.md, "Sizes"): an iteration or a continuation step integrates the
+  /// rod with its derivatives (about 0.04 s at 100,001 nodes).
+  static constexpr int kMaxIterations = 10'000;
+  static constexpr int kMaxContinuationSteps = 4096;
+
   int max_iterations = 100;  // Levenberg–Marquardt iterations (accepted steps) per solve;
                              // the endgame adds at most 8 chord steps per attempt
   double residual_tolerance =
@@ -71,9 +76,29 @@ struct ShootingResult {
   std::string brief() const { return summary.brief(); }
 };
 
+/// The time a solve may take at worst, s, on the machine docs/limits.md was measured on, the sum
+/// of two parts measured on the band with 100,000 intervals and its tip loaded far beyond what
+/// converges:
+///  * failing: about 7 integrations with derivatives per allowed iteration (the direct solve and
+///    the continuation's stages each use them all), each 4.1e-7 s per interval:
+///    7 × max_iterations × intervals × 4.1e-7 s (100 iterations: 29 s measured and estimated);
+///  * the accuracy check's re-solves with more sub-steps (the continuation's too): about
+///    1.2e-5 s × max_substeps × intervals (16: 19 s, 64: 74 s measured).
+/// A solve that converges takes a small part of it (1.3 s there).
+double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options);
+
+/// The most estimated_failing_solve_seconds() that solve_equilibrium() accepts: rod.intervals,
+/// max_iterations and max_substeps each have their own bound, and this bounds their products
+/// (100,000 intervals with 4096 sub-steps would take hours).
+inline constexpr double kMaxEstimatedSolveSeconds = 300.0;
+
+/// Throws InputError naming max_iterations or max_substeps (whichever costs more), with the
+/// estimate, when estimated_failing_solve_seconds() exceeds kMaxEstimatedSolveSeconds.
+void check_solve_cost(const ClampedRod& rod, const ShootingOptions& options);
+
 /// Solves the equilibrium of `rod` with `tip` at s = L, starting from `guess`.
-/// Throws InputError for bad input (rod, tip condition, options); a solve that does not converge is
-/// reported in the summary's status, never thrown.
+/// Throws InputError for bad input (rod, tip condition, options, check_solve_cost()); a solve that
+/// does not converge is reported in the summary's status, never thrown.
 ShootingResult solve_equilibrium(const ClampedRod& rod,
                                  const TipCondition& tip,
                                  const BaseWrench& guess = {},

@@ -19,6 +19,20 @@
 
 namespace rodshape {
 
+/// The time plan() is expected to take, s, on the machine docs/limits.md was measured on (2 cores,
+/// Release), for a plan that needs no refinement nor re-plan: rod intervals × steps × (1.5e-4 s ×
+/// (1 + multi_starts) × (target points + 30) / 40 + 1.4e-6 s × tracking_substeps when tracking).
+/// Within a factor of about 2 of the bundled plans and of the measurements in docs/limits.md.
+double estimated_plan_seconds(const PlanProblem& problem, const PlanOptions& options);
+
+/// The most estimated_plan_seconds() that plan() accepts: each size has its own bound, and this
+/// bounds their product (1000 steps × 100 starts × 5000 intervals would take years).
+inline constexpr double kMaxEstimatedPlanSeconds = 300.0;
+
+/// Throws InputError, saying the estimate and the sizes it comes from, when
+/// estimated_plan_seconds() exceeds kMaxEstimatedPlanSeconds. plan() calls it before any work.
+void check_plan_cost(const PlanProblem& problem, const PlanOptions& options);
+
 /// Plans. Throws InputError for bad input (including an initial tip outside the workspace or, with
 /// an arm, outside its reach shell); an infeasible target, a failed step or an unreachable pose
 /// is reported in the result's status and message.

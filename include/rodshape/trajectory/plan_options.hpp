@@ -18,7 +18,9 @@ struct ArmPlanOptions {
   double reach_margin = 0.02;       // m: the shell is [r_min + margin, r_max - margin]
   double replan_tightening = 0.02;  // m: how far past an unreachable pose's wrist distance the
                                     // tightened shell ends
-  int max_replans = 3;
+  /// Each re-plan is the whole plan again.
+  static constexpr int kMaxReplans = 10;
+  int max_replans = 3;  // 0 … kMaxReplans
   ArmReachOptions reach;
   JointTrajectoryOptions joints;  // the first seed and the IK options, for the checks too
   /// Throws InputError naming the field ("ArmPlanOptions.reach_margin" etc.).
@@ -44,12 +46,19 @@ enum class ObjectiveInterpolation {
 std::string to_string(ObjectiveInterpolation interpolation);
 
 struct PlanOptions {
-  int steps = 7;  // n_inter
+  /// Upper bounds (docs/limits.md, "Sizes"). A step is one optimisation (about 10 ms for the
+  /// 101-node band, 0.7 s for 5,001 nodes) and one tracked segment; a tracking substep one solve
+  /// (about 0.15 ms at 101 nodes); a refinement one more step.
+  static constexpr int kMaxSteps = 1000;
+  static constexpr int kMaxTrackingSubsteps = 1000;
+  static constexpr int kMaxRefinements = 100;
+
+  int steps = 7;  // n_inter, 1 … kMaxSteps
   ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
   ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;
   bool track_between_waypoints = true;
-  int tracking_substeps = 10;  // continuation steps from one waypoint to the next
+  int tracking_substeps = 10;  // continuation steps from one waypoint to the next (≤ kMax…)
   /// Where the tracked rod does not arrive on the planned shape (a jump), a step is inserted
   /// halfway between the two objective sets and the segment re-planned, at most this many times.
   int max_refinements = 4;

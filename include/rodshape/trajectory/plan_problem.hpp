@@ -48,6 +48,11 @@ struct PlanArm {
 };
 
 struct PlanProblem {
+  /// Upper bound on rod.intervals for a plan (docs/limits.md, "Sizes"): every step optimises and
+  /// tracks the whole rod many times, linear in the intervals; the bundled plans take 2.5–5 s with
+  /// 5,000 intervals (the S-curve: 0.12 s with 100, 4.9 s with 5,000, 10 s with 10,000).
+  static constexpr int kMaxIntervals = 5'000;
+
   ClampedRod rod;
   ShapeTarget target;  // the objective points p_obj and the weights W1, W2
   Workspace workspace;
@@ -58,7 +63,8 @@ struct PlanProblem {
   WrenchBounds wrench_bounds;
   InitialState initial;
   std::optional<PlanArm> arm;
-  /// Throws InputError naming the field (rod, target, workspace, limits, wrench bounds).
+  /// Throws InputError naming the field (rod, target, workspace, limits, wrench bounds;
+  /// "PlanProblem.rod.intervals" above kMaxIntervals).
   void validate() const;
 };
 

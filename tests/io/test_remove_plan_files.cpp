@@ -1,0 +1,61 @@
+// test_remove_plan_files.cpp: remove_plan_files() takes an earlier run's plan files out of the
+// output directory before planning (so a killed run leaves none that look like its result), leaves
+// other files and a missing directory alone, and lists the same files write_plan() writes.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include "rodshape/io/plan_output.hpp"
+
+namespace rodshape {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_directory(const std::string& name) {
+  const fs::path directory = fs::temp_directory_path() /
+                             ("rodshape_remove_plan_files_" + std::to_string(::getpid())) / name;
+  fs::remove_all(directory);
+  fs::create_directories(directory);
+  return directory;
+}
+
+TEST(RemovePlanFiles, RemovesAnEarlierRunsPlanFilesOnly) {
+  const fs::path directory = fresh_directory("earlier");
+  for (const std::string& name : plan_file_names()) std::ofstream(directory / name) << "old\n";
+  std::ofstream(directory / "notes.txt") << "mine\n";
+  remove_plan_files(directory.string());
+  for (const std::string& name : plan_file_names())
+    EXPECT_FALSE(fs::exists(directory / name)) << name;
+  EXPECT_TRUE(fs::exists(directory / "notes.txt"));
+  fs::remove_all(directory.parent_path());
+}
+
+TEST(RemovePlanFiles, ADanglingLinkNamedPlanJsonIsRemovedNotFollowed) {
+  const fs::path directory = fresh_directory("link");
+  fs::create_symlink(directory / "nowhere", directory / "plan.json");
+  remove_plan_files(directory.string());
+  EXPECT_FALSE(fs::is_symlink(directory / "plan.json"));
+  fs::remove_all(directory.parent_path());
+}
+
+TEST(RemovePlanFiles, AMissingDirectoryIsLeftMissing) {
+  const fs::path directory = fresh_directory("missing") / "not_yet";
+  EXPECT_NO_THROW(remove_plan_files(directory.string()));
+  EXPECT_FALSE(fs::exists(directory));
+  fs::remove_all(directory.parent_path().parent_path());
+}
+
+TEST(RemovePlanFiles, NamesTheFilesWritePlanWrites) {
+  EXPECT_EQ(plan_file_names(),
+            (std::vector<std::string>{"plan.json", "trajectory.csv", "plan.svg",
+                                      "joint_trajectory.csv", "joint_trajectory.json"}));
+}
+
+}  // namespace
+}  // namespace rodshape
