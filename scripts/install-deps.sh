@@ -14,6 +14,8 @@ packages=(
   coinor-libipopt-dev      # shape optimisation (interior point)
   liborocos-kdl-dev liburdfdom-dev  # robot arms
   python3                  # test helpers
+  pybind11-dev python3-dev # the Python package (python/)
+  python3-numpy python3-pytest python3-matplotlib  # its arrays, tests and figures
 )
 
 missing=()

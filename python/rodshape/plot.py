@@ -1,7 +1,9 @@
 """rodshape.plot: figures with matplotlib (Debian's python3-matplotlib).
 
     plan_steps(plan)                   the rod at every step of a plan in 3D, with its objective
-                                       points (a rodshape.Plan, or a plan.json dict)
+                                       points (a rodshape.Plan or PlanResult, or a plan.json dict)
+    joint_trajectory(plan)             joint positions and velocities of a rodshape.Plan with an
+                                       arm, as fractions of the arm's limits
     validation_errors(validation)      the paper's errors over time of a rodshape.Validation
     plan_directory_figures(outdir)     PNGs of a `rodshape plan` output directory: joint positions
                                        and velocities against their URDF limits, the wrist against
@@ -275,20 +277,21 @@ def plan_directory_figures(outdir, output_dir=None, urdf=DEFAULT_URDF, report=pr
 
 
 def _steps_of(plan):
-    """(initial positions, [(positions, objective points)], target points) of a rodshape.Plan or
-    a plan.json dict."""
+    """(initial positions, [(positions, objective points)], target points) of a rodshape.Plan, a
+    rodshape.PlanResult or a plan.json dict."""
     if isinstance(plan, dict):
         initial = np.array(plan["initial"]["nodes"]["position"]) if plan.get("initial") else None
         steps = [(np.array(s["configuration"]["nodes"]["position"]),
                   np.array(s["objective_points"])) for s in plan["steps"]]
         return initial, steps, np.array(plan["target"]["points"])
-    initial = plan.result.initial_configuration.positions
-    steps = [(s.configuration.positions, s.objective_points) for s in plan.steps]
+    result = getattr(plan, "result", plan)  # a Plan (of a task) holds its PlanResult
+    initial = result.initial_configuration.positions
+    steps = [(s.configuration.positions, s.objective_points) for s in result.steps]
     return initial, steps, steps[-1][1] if steps else np.empty((0, 3))
 
 
 def plan_steps(plan, ax=None):
-    """The rod at every step of `plan` in 3D (grey: the initial rod; a colour ramp from the first
+    """The rod at every step of `plan` (a Plan, PlanResult or plan.json dict) in 3D (grey: the initial rod; a colour ramp from the first
     step to the last), each step's objective points as dots and the target's as red crosses."""
     if ax is None:
         fig = plt.figure(figsize=(6, 6))
@@ -329,3 +332,29 @@ def validation_errors(validation, ax=None):
     return ax.figure
 
 
+
+
+def joint_trajectory(plan, axes=None):
+    """The joint positions and velocities of a rodshape.Plan with an arm, as fractions of the
+    arm's limits (dashed: the limits), over time. Raises ValueError for a plan without an arm."""
+    joints, arm = plan.result.joints, plan.task.arm
+    if joints is None or arm is None:
+        raise ValueError("the plan has no arm (no robot section), so no joint trajectory")
+    if axes is None:
+        _, axes = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
+    ax_q, ax_v = axes
+    lower, upper, velocity = arm.lower_limits, arm.upper_limits, arm.velocity_limits
+    t, q, qdot = joints.t, joints.q, joints.qdot
+    for j, name in enumerate(joints.joint_names):
+        if np.isfinite(lower[j]) and np.isfinite(upper[j]) and upper[j] > lower[j]:
+            ax_q.plot(t, (q[:, j] - lower[j]) / (upper[j] - lower[j]), color=f"C{j}", label=name)
+        if len(qdot) and np.isfinite(velocity[j]) and velocity[j] > 0:
+            ax_v.plot(t, qdot[:, j] / velocity[j], color=f"C{j}", label=name)
+    for ax, levels in ((ax_q, (0, 1)), (ax_v, (-1, 1))):
+        for level in levels:
+            ax.axhline(level, color="k", linestyle="--", linewidth=0.9)
+    ax_q.set_ylabel("(q − lower) / (upper − lower)")
+    ax_v.set_ylabel("q̇ / velocity limit")
+    ax_v.set_xlabel("time (s)")
+    ax_q.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=8)
+    return ax_q.figure

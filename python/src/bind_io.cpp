@@ -1,6 +1,7 @@
 // bind_io.cpp: task files in, the CLI's documents out. A task read here is checked as the CLI
 // checks it (same readers, same messages), and each result's to_json() is the document the CLI
 // writes for that task (same writers).
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -83,6 +84,17 @@ void bind_tasks(py::module_& m) {
           [](PlanTask& t, const ClampedRod& rod) { t.problem.rod = rod; })
       .def_property_readonly("target_points",
                              [](const PlanTask& t) { return rows_of(t.problem.target.points); })
+      .def_property_readonly(
+          "arm",
+          [](const PlanTask& t) -> std::optional<ArmModel> {
+            if (!t.problem.arm) return std::nullopt;
+            return t.problem.arm->model;
+          },
+          "the robot section's ArmModel, or None")
+      .def_readwrite("problem", &PlanTask::problem)
+      .def_readwrite("options", &PlanTask::options)
+      .def_readwrite("plant", &PlanTask::plant, "the simulated plant (PlantModel)")
+      .def_readwrite("sensor", &PlanTask::sensor, "the simulated sensor (MarkerSensorModel)")
       .def_readonly("source", &PlanTask::source)
       .def_property_readonly("kind", [](const PlanTask&) { return "plan"; });
   m.def("read_equilibrium_task", &read_equilibrium_task, py::arg("path"),
@@ -111,6 +123,7 @@ void bind_outcomes(py::module_& m) {
       .def("to_json", &Equilibrium::to_json, "The JSON document `rodshape equilibrium` writes.");
   py::class_<Plan>(m, "Plan", "What `rodshape plan` computes for a task.")
       .def_readonly("result", &Plan::result)
+      .def_readonly("task", &Plan::task)
       .def_property_readonly("status", [](const Plan& p) { return to_string(p.result.status); })
       .def_property_readonly("steps", [](const Plan& p) { return p.result.steps; })
       .def("brief",

@@ -1,6 +1,8 @@
 // bind_sim.cpp: the simulated experiment's results (validate() is bound with the task in io).
 #include "bindings.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plan_validation.hpp"
+#include "rodshape/sim/plant_model.hpp"
 
 namespace rodshape::python {
 
@@ -12,7 +14,37 @@ py::array_t<double> array_of(const std::vector<double>& values) {
 
 }  // namespace
 
+void bind_models(py::module_& m) {
+  py::class_<PlantModel>(m, "PlantModel",
+                         "The simulated experiment's real rod, where it differs from the "
+                         "planner's (a plan task's plant section).")
+      .def(py::init<>())
+      .def_readwrite("stiffness_scale", &PlantModel::stiffness_scale, "on every stiffness, > 0")
+      .def_readwrite("length", &PlantModel::length, "m, or None: the planner's")
+      .def_readwrite("mass_per_length", &PlantModel::mass_per_length,
+                     "ρA, kg/m, or None: the planner's")
+      .def_readwrite("gravity", &PlantModel::gravity, "(3,) m/s², world frame")
+      .def_readwrite("rest_curvature", &PlantModel::rest_curvature, "ũ (3,) 1/m, or None")
+      .def_readwrite("grasp_offset", &PlantModel::grasp_offset,
+                     "the tip's actual pose in the commanded tip frame")
+      .def("validate", &PlantModel::validate)
+      .def("real_rod", &PlantModel::real_rod, py::arg("planned"),
+           "The planner's rod as the plant has it.");
+  py::class_<MarkerSensorModel>(m, "MarkerSensorModel",
+                                "Markers at even arc lengths seen by a camera (a plan task's "
+                                "sensor section).")
+      .def(py::init<>())
+      .def_readwrite("markers", &MarkerSensorModel::markers, "1 … 1000")
+      .def_readwrite("in_plane_noise", &MarkerSensorModel::in_plane_noise, "σ, m")
+      .def_readwrite("depth_noise", &MarkerSensorModel::depth_noise, "σ, m")
+      .def_readwrite("dropout", &MarkerSensorModel::dropout, "probability, [0, 1]")
+      .def_readwrite("frame_rate", &MarkerSensorModel::frame_rate, "Hz, (0, 1000]")
+      .def_readwrite("camera", &MarkerSensorModel::camera, "world_T_camera (z: the depth)")
+      .def("validate", &MarkerSensorModel::validate);
+}
+
 void bind_sim(py::module_& m) {
+  bind_models(m);
   py::class_<ShapeError>(m, "ShapeError", "The paper's error at one frame, m.")
       .def_readonly("error_3d", &ShapeError::error_3d)
       .def_readonly("error_2d", &ShapeError::error_2d)

@@ -86,6 +86,19 @@ void bind_functions(py::module_& m) {
                              [](const EquilibriumAnalysis& a) { return a.solution.configuration; })
       .def("converged", &EquilibriumAnalysis::converged)
       .def("brief", &EquilibriumAnalysis::brief);
+  m.def(
+      "analyse_equilibrium",
+      [](const ClampedRod& rod, const TipCondition& tip, const BaseWrench& guess,
+         const ShootingOptions& shooting, bool seek_stable) {
+        EquilibriumAnalysisOptions options;
+        options.seek_stable = seek_stable;
+        return analyse_equilibrium(rod, tip, guess, shooting, options);
+      },
+      py::arg("rod"), py::arg("tip"), py::arg("guess") = BaseWrench{},
+      py::arg("shooting") = ShootingOptions{}, py::arg("seek_stable") = true,
+      py::call_guard<py::gil_scoped_release>(),
+      "solve_equilibrium, the held pose's validity and the stability; when the equilibrium is "
+      "unstable and seek_stable, a stable one is sought: an EquilibriumAnalysis.");
 }
 
 }  // namespace

@@ -1,5 +1,10 @@
 // bind_trajectory.cpp: the plan's result (steps, end-effector path, tracking).
+#include <array>
+#include <optional>
+#include <string>
+
 #include "bindings.hpp"
+#include "rodshape/error.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape::python {
@@ -23,9 +28,118 @@ py::dict path_arrays(const std::vector<TimedPose>& path) {
   return d;
 }
 
+/// Per-sample vectors as an (samples, joints) array.
+py::array_t<double> samples_of(const std::vector<Eigen::VectorXd>& rows) {
+  const py::ssize_t cols = rows.empty() ? 0 : static_cast<py::ssize_t>(rows.front().size());
+  py::array_t<double> out({static_cast<py::ssize_t>(rows.size()), cols});
+  auto view = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < view.shape(0); ++i)
+    for (py::ssize_t j = 0; j < cols; ++j) view(i, j) = rows[static_cast<std::size_t>(i)](j);
+  return out;
+}
+
+void bind_joint_trajectory(py::module_& m) {
+  py::class_<JointTrajectoryResult>(m, "JointTrajectoryResult",
+                                    "The arm's joint trajectory along the end-effector path.")
+      .def_property_readonly("status",
+                             [](const JointTrajectoryResult& r) { return to_string(r.status); })
+      .def_readonly("message", &JointTrajectoryResult::message)
+      .def_readonly("joint_names", &JointTrajectoryResult::joint_names)
+      .def_property_readonly(
+          "t",
+          [](const JointTrajectoryResult& r) {
+            return py::array_t<double>(static_cast<py::ssize_t>(r.t.size()), r.t.data());
+          },
+          "(samples,) s")
+      .def_property_readonly(
+          "q", [](const JointTrajectoryResult& r) { return samples_of(r.q); },
+          "(samples, joints) rad or m")
+      .def_property_readonly(
+          "qdot", [](const JointTrajectoryResult& r) { return samples_of(r.qdot); },
+          "(samples, joints) rad/s or m/s")
+      .def_readonly("slowdown", &JointTrajectoryResult::slowdown)
+      .def_readonly("max_position_error", &JointTrajectoryResult::max_position_error, "m")
+      .def("complete", &JointTrajectoryResult::complete)
+      .def("brief", &JointTrajectoryResult::brief);
+}
+
+void bind_problem(py::module_& m) {
+  py::class_<InitialState>(m, "InitialState",
+                           "The equilibrium a plan starts from: rest(), held_at(tip pose) or "
+                           "equilibrium(base wrench or configuration).")
+      .def_static("rest", &InitialState::rest)
+      .def_static("held_at", &InitialState::held_at, py::arg("tip"))
+      .def_static("equilibrium", py::overload_cast<const BaseWrench&>(&InitialState::equilibrium),
+                  py::arg("base_wrench"))
+      .def_static("equilibrium",
+                  py::overload_cast<const RodConfiguration&>(&InitialState::equilibrium),
+                  py::arg("configuration"));
+  py::class_<PlanProblem>(m, "PlanProblem",
+                          "What a plan is asked for: the rod, the target, the grasp's released "
+                          "components, strain limits, the initial equilibrium, optionally an arm.")
+      .def(py::init([](const ClampedRod& rod, const ShapeTarget& target,
+                       const InitialState& initial, const std::array<bool, 6>& released) {
+             PlanProblem problem;
+             problem.rod = rod;
+             problem.target = target;
+             problem.initial = initial;
+             problem.grasp.released = released;
+             return problem;
+           }),
+           py::arg("rod"), py::arg("target"), py::arg("initial") = InitialState::rest(),
+           py::arg("released") = std::array<bool, 6>{})
+      .def_readwrite("rod", &PlanProblem::rod)
+      .def_readwrite("target", &PlanProblem::target)
+      .def_readwrite("initial", &PlanProblem::initial)
+      .def_property(
+          "released", [](const PlanProblem& p) { return p.grasp.released; },
+          [](PlanProblem& p, const std::array<bool, 6>& r) { p.grasp.released = r; },
+          "grasp-frame tip wrench components (fx, fy, fz, mx, my, mz) the grasp cannot transmit")
+      .def_property(
+          "max_curvature", [](const PlanProblem& p) { return p.limits.max_curvature; },
+          [](PlanProblem& p, std::optional<double> k) { p.limits.max_curvature = k; }, "1/m")
+      .def_property(
+          "arm",
+          [](const PlanProblem& p) -> std::optional<ArmModel> {
+            if (!p.arm) return std::nullopt;
+            return p.arm->model;
+          },
+          [](PlanProblem& p, std::optional<ArmModel> arm) {
+            if (arm)
+              p.arm = PlanArm{std::move(*arm), p.arm ? p.arm->placement : ArmPlacement{}};
+            else
+              p.arm.reset();
+          },
+          "the ArmModel holding the tip (placed by world_T_base), or None")
+      .def_property(
+          "world_T_base",
+          [](const PlanProblem& p) { return p.arm ? p.arm->placement.world_T_base : Pose{}; },
+          [](PlanProblem& p, const Pose& pose) {
+            if (!p.arm) throw InputError("PlanProblem.world_T_base: set PlanProblem.arm first");
+            p.arm->placement.world_T_base = pose;
+          })
+      .def("validate", &PlanProblem::validate);
+  py::class_<PlanOptions>(m, "PlanOptions")
+      .def(py::init<>())
+      .def_readwrite("steps", &PlanOptions::steps, "n_inter, 1 … 1000")
+      .def_readwrite("optimiser", &PlanOptions::optimiser)
+      .def_readwrite("track_between_waypoints", &PlanOptions::track_between_waypoints)
+      .def_readwrite("tracking_substeps", &PlanOptions::tracking_substeps)
+      .def_readwrite("max_refinements", &PlanOptions::max_refinements)
+      .def_property(
+          "max_linear_speed", [](const PlanOptions& o) { return o.end_effector.max_linear_speed; },
+          [](PlanOptions& o, double v) { o.end_effector.max_linear_speed = v; }, "m/s")
+      .def_property(
+          "sample_rate", [](const PlanOptions& o) { return o.end_effector.sample_rate; },
+          [](PlanOptions& o, double r) { o.end_effector.sample_rate = r; }, "Hz")
+      .def("validate", &PlanOptions::validate);
+}
+
 }  // namespace
 
 void bind_trajectory(py::module_& m) {
+  bind_joint_trajectory(m);
+  bind_problem(m);
   py::class_<PlanStep>(m, "PlanStep", "One optimal shape of the plan.")
       .def_readonly("fraction", &PlanStep::fraction)
       .def_readonly("inserted", &PlanStep::inserted)
@@ -56,9 +170,32 @@ void bind_trajectory(py::module_& m) {
       .def_readonly("initial_wrench", &PlanResult::initial_wrench)
       .def_readonly("tracking", &PlanResult::tracking)
       .def_property_readonly(
+          "joints",
+          [](const PlanResult& r) -> std::optional<JointTrajectoryResult> {
+            if (!r.arm) return std::nullopt;
+            return r.arm->joints;
+          },
+          "with an arm, the JointTrajectoryResult along the path, else None")
+      .def_property_readonly(
+          "arm_status",
+          [](const PlanResult& r) -> std::optional<std::string> {
+            if (!r.arm) return std::nullopt;
+            return r.arm->brief();
+          },
+          "with an arm, \"reachable: ...\" or why not, else None")
+      .def_property_readonly(
           "end_effector_path", [](const PlanResult& r) { return path_arrays(r.end_effector_path); },
           "{'t': (n,) s, 'positions': (n, 3) m, 'rotations': (n, 3, 3)}")
-      .def("complete", &PlanResult::complete);
+      .def("complete", &PlanResult::complete)
+      .def("brief", &PlanResult::brief, py::arg("steps_requested"),
+           "One line: status, steps (of steps_requested), final distance and energy, tracking.");
+  m.def(
+      "plan_problem",
+      [](const PlanProblem& problem, const PlanOptions& options) { return plan(problem, options); },
+      py::arg("problem"), py::arg("options") = PlanOptions{},
+      py::call_guard<py::gil_scoped_release>(),
+      "Plans a PlanProblem built in Python (rodshape.plan plans a task file): a PlanResult. "
+      "Raises InputError for bad input; an infeasible target or a failed step is a status.");
 }
 
 }  // namespace rodshape::python

@@ -17,6 +17,8 @@ namespace py = pybind11;
 
 void bind_core(py::module_& m);
 void bind_solvers(py::module_& m);
+void bind_optimisation(py::module_& m);
+void bind_robot(py::module_& m);
 void bind_trajectory(py::module_& m);
 void bind_sim(py::module_& m);
 void bind_io(py::module_& m);

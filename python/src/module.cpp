@@ -36,6 +36,8 @@ PYBIND11_MODULE(_rodshape, m) {
   py::register_exception<rodshape::InputError>(m, "InputError", PyExc_ValueError);
   bind_core(m);
   bind_solvers(m);
+  bind_optimisation(m);
+  bind_robot(m);
   bind_trajectory(m);
   bind_sim(m);
   bind_io(m);

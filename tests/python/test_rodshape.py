@@ -160,3 +160,86 @@ def test_plot_figures(tmp_path):
     validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
     plot.validation_errors(validation).savefig(tmp_path / "errors.png")
     assert (tmp_path / "steps.png").stat().st_size > 1000
+
+
+def test_optimise_shape_passes_through_points_of_a_reachable_shape():
+    # Oracle: points taken from an equilibrium the rod can take (a base wrench integrated) are
+    # reached by the optimum of the distance term alone (W1 = 0): its distances are 0 up to the
+    # smoothing δ = 1e-4 m and IPOPT's tolerance (Σ d²/(2δ) ≤ tol ⇒ d ≲ 1e-6 m).
+    rod = rodshape.rubber_band()
+    reference = rodshape.integrate(rod, rodshape.Wrench(force=[0.02, 0.0, 0.0],
+                                                        moment=[0.0, 0.03, 0.0]))
+    points = reference.positions[[25, 50, 75, 100]]
+    target = rodshape.ShapeTarget(points, energy_weight=0.0, distance_weight=1.0)
+    assert target.points.shape == (4, 3)
+    assert rodshape.check_feasibility(target, rod).feasible
+    result = rodshape.optimise_shape(rod, target)
+    assert result.converged(), result.brief()
+    assert result.cost.max_distance < 1e-5
+    assert len(result.cost.distances) == 4
+    assert result.configuration.positions.shape == (101, 3)
+
+
+def test_optimise_shape_respects_the_curvature_limit():
+    rod = rodshape.rubber_band()
+    target = rodshape.ShapeTarget([[0.1, 0.0, 0.1]], energy_weight=1.0, distance_weight=10.0)
+    free = rodshape.optimise_shape(rod, target)
+    kappa = np.linalg.norm(free.configuration.u, axis=1).max()
+    limited = rodshape.optimise_shape(rod, target, max_curvature=0.8 * kappa)
+    assert limited.converged(), limited.brief()
+    # The limit binds (the free optimum exceeds it) and holds at every node to IPOPT's
+    # constraint tolerance (1e-9).
+    assert np.linalg.norm(limited.configuration.u, axis=1).max() <= 0.8 * kappa + 1e-8
+    with pytest.raises(rodshape.InputError, match="max_curvature"):
+        rodshape.optimise_shape(rod, target, max_curvature=-1.0)
+
+
+def test_arm_jacobian_matches_finite_differences_of_its_kinematics():
+    arm = rodshape.panda()
+    q = rodshape.panda_ready_pose() + 0.1
+    J = arm.jacobian(q)
+    assert J.shape == (6, 7)
+    h = 1e-6  # central differences: truncation ~h², rounding ~1e-16/h
+    for j in range(7):
+        dq = np.zeros(7)
+        dq[j] = h
+        plus, minus = arm.forward_kinematics(q + dq), arm.forward_kinematics(q - dq)
+        assert np.allclose((plus.position - minus.position) / (2 * h), J[:3, j], atol=1e-8)
+        # ω from dR Rᵀ (skew-symmetric to first order)
+        W = (plus.rotation - minus.rotation) / (2 * h) @ arm.forward_kinematics(q).rotation.T
+        assert np.allclose([W[2, 1], W[0, 2], W[1, 0]], J[3:, j], atol=1e-8)
+
+
+def test_inverse_kinematics_returns_to_a_reachable_pose():
+    arm = rodshape.panda()
+    goal_q = rodshape.panda_ready_pose() + np.array([0.2, -0.1, 0.1, 0.2, -0.1, 0.1, 0.2])
+    goal = arm.forward_kinematics(goal_q)
+    result = rodshape.solve_ik(arm, goal)
+    assert result.converged(), result.brief()
+    reached = arm.forward_kinematics(result.q)
+    assert np.linalg.norm(reached.position - goal.position) <= 1e-10
+    assert np.all(result.q >= arm.lower_limits) and np.all(result.q <= arm.upper_limits)
+    far = rodshape.Pose(position=[3.0, 0.0, 0.5])
+    assert rodshape.solve_ik(arm, far).status == "out_of_reach"
+    with pytest.raises(rodshape.InputError):
+        arm.forward_kinematics(np.zeros(3))
+
+
+def test_a_plan_with_an_arm_has_a_joint_trajectory_within_the_limits(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    from rodshape import plot
+    plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_panda_s_curve.yaml")))
+    joints, arm = plan.result.joints, plan.task.arm
+    assert joints.complete(), joints.brief()
+    assert joints.q.shape == (len(joints.t), arm.joints) == joints.qdot.shape
+    assert np.all(np.diff(joints.t) > 0)
+    assert np.all(joints.q >= arm.lower_limits - 1e-12)
+    assert np.all(joints.q <= arm.upper_limits + 1e-12)
+    assert np.all(np.abs(joints.qdot) <= arm.velocity_limits * (1 + 1e-9))
+    plot.joint_trajectory(plan).savefig(tmp_path / "joints.png")
+    assert (tmp_path / "joints.png").stat().st_size > 1000
+    no_arm = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
+    assert no_arm.result.joints is None
+    with pytest.raises(ValueError):
+        plot.joint_trajectory(no_arm)
