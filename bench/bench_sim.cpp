@@ -1,6 +1,7 @@
 // Benchmarks of the closed loop's checkpoint on the paper's experiment (the band at N = 100, ten
 // objective points, seven steps): the state estimate from ten markers, and the re-plan of the
-// remaining steps from it. One checkpoint is one estimate plus one re-plan.
+// remaining steps from it (all of them, or the next only: the closed loop's default horizon). One
+// checkpoint is one estimate plus one re-plan.
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
@@ -55,15 +56,17 @@ void BM_CheckpointEstimate(benchmark::State& state) {
 }
 
 /// The re-plan of the last `range(0)` steps from the equilibrium before them (no tracking, as the
-/// closed loop re-plans).
+/// closed loop re-plans), all of them (`range(1)` = 0) or the next only (a horizon of 1).
 void BM_CheckpointReplan(benchmark::State& state) {
   const Scene& s = scene();
   const int remaining = static_cast<int>(state.range(0));
+  const int horizon = static_cast<int>(state.range(1));
   const PlanStep& here = s.plan.steps[s.plan.steps.size() - remaining - 1];
   PlanProblem rest = s.problem;
   rest.initial = InitialState::equilibrium(here.solution.base_wrench);
   PlanOptions options;
   options.steps = remaining;
+  options.horizon = horizon;
   options.track_between_waypoints = false;
   for (auto _ : state) {
     const PlanResult again = rodshape::plan(rest, options);
@@ -73,6 +76,13 @@ void BM_CheckpointReplan(benchmark::State& state) {
 }
 
 BENCHMARK(BM_CheckpointEstimate)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CheckpointReplan)->Arg(1)->Arg(3)->Arg(6)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CheckpointReplan)
+    ->ArgNames({"remaining", "horizon"})
+    ->Args({1, 0})
+    ->Args({3, 0})
+    ->Args({6, 0})
+    ->Args({3, 1})
+    ->Args({6, 1})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -122,6 +122,8 @@ void bind_problem(py::module_& m) {
   py::class_<PlanOptions>(m, "PlanOptions")
       .def(py::init<>())
       .def_readwrite("steps", &PlanOptions::steps, "n_inter, 1 … 1000")
+      .def_readwrite("horizon", &PlanOptions::horizon,
+                     "plan only the first `horizon` steps (0: all): a receding horizon")
       .def_readwrite("optimiser", &PlanOptions::optimiser)
       .def_readwrite("track_between_waypoints", &PlanOptions::track_between_waypoints)
       .def_readwrite("tracking_substeps", &PlanOptions::tracking_substeps)
@@ -165,6 +167,7 @@ void bind_trajectory(py::module_& m) {
           "status", [](const PlanResult& r) { return to_string(r.status); },
           "complete, snap_through, partial or infeasible")
       .def_readonly("message", &PlanResult::message)
+      .def_readonly("horizon", &PlanResult::horizon, "the steps planned under a horizon, else 0")
       .def_readonly("steps", &PlanResult::steps)
       .def_readonly("initial_configuration", &PlanResult::initial_configuration)
       .def_readonly("initial_wrench", &PlanResult::initial_wrench)

@@ -73,7 +73,7 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
 ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   loop.expect_mapping({"estimate_stiffness", "gravity", "estimate_grasp_offset", "replan",
                        "checkpoint_frames", "tip_position_sigma", "tip_rotation_sigma",
-                       "prior_sigma"});
+                       "prior_sigma", "horizon"});
   ClosedLoopOptions options;
   if (const YamlField offset = loop.get("estimate_grasp_offset"); offset.present())
     options.estimate_grasp_offset = offset.boolean();
@@ -88,6 +88,8 @@ ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   read_number_into(loop, "prior_sigma", options.estimation.prior_sigma);
   if (const YamlField frames = loop.get("checkpoint_frames"); frames.present())
     options.checkpoint_frames = frames.integer();
+  if (const YamlField horizon = loop.get("horizon"); horizon.present())
+    options.horizon = horizon.integer();
   loop.located([&] { options.validate(); });
   return options;
 }

@@ -2,6 +2,7 @@
 // checkpoint (closed_loop.hpp).
 #include "rodshape/sim/closed_loop.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -33,6 +34,13 @@ struct Remaining {
     for (const PlanStep& step : steps) {
       end_effector.push_back(step.end_effector);
       wrench.push_back(step.solution.base_wrench);
+    }
+  }
+  /// The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
+  void replace_first(const std::vector<PlanStep>& steps) {
+    for (std::size_t k = 0; k < steps.size() && k < end_effector.size(); ++k) {
+      end_effector[k] = steps[k].end_effector;
+      wrench[k] = steps[k].solution.base_wrench;
     }
   }
   void pop() {
@@ -177,12 +185,13 @@ class Loop {
     rest.arm.reset();  // the arm's joint trajectory is not needed to correct the rod's path
     PlanOptions options = options_;
     options.steps = static_cast<int>(remaining_.end_effector.size());
+    options.horizon = std::min(loop_.horizon, options.steps);
     options.track_between_waypoints = false;
     try {
       const PlanResult again = plan(rest, options);
       c.message = again.brief(options.steps);
       if (again.status != PlanStatus::Complete) return;
-      remaining_.take(again.steps);
+      remaining_.replace_first(again.steps);
       c.replanned = true;
     } catch (const InputError& error) {
       c.message = std::string("plan kept: the re-plan was refused: ") + error.what();
@@ -206,6 +215,10 @@ class Loop {
 
 void ClosedLoopOptions::validate() const {
   estimation.validate();
+  if (horizon < 0 || horizon > PlanOptions::kMaxSteps)
+    throw InputError("ClosedLoopOptions.horizon", " = " + std::to_string(horizon) +
+                                                      " must be in [0, " +
+                                                      std::to_string(PlanOptions::kMaxSteps) + "]");
   if (checkpoint_frames < 1 || checkpoint_frames > 1000)
     throw InputError("ClosedLoopOptions.checkpoint_frames",
                      " = " + std::to_string(checkpoint_frames) + " must be in [1, 1000]");

@@ -15,6 +15,7 @@ namespace rodshape {
 
 void PlanOptions::validate() const {
   detail::require_count("PlanOptions.steps", steps, 1, kMaxSteps);
+  detail::require_count("PlanOptions.horizon", horizon, 0, steps);
   detail::require_count("PlanOptions.max_refinements", max_refinements, 0, kMaxRefinements);
   detail::require_count("PlanOptions.tracking_substeps", tracking_substeps, 1,
                         kMaxTrackingSubsteps);
@@ -69,6 +70,7 @@ std::string PlanResult::brief(int steps_requested) const {
   const int completed = static_cast<int>(steps.size());
   out << to_string(status) << " plan, " << completed << " steps (" << steps_requested
       << " requested";
+  if (horizon > 0) out << ", a horizon of " << horizon;
   if (tracking.refinements > 0)
     out << ", " << tracking.refinements << " inserted where the rod would jump";
   out << ")";
@@ -198,6 +200,10 @@ PlanResult plan_rod(const PlanProblem& problem,
   loop.path = {problem.rod.clamp.position, result.initial_points, problem.target.points,
                options.interpolation};
   loop.pending = objective_sets(loop.path, options.steps);
+  if (options.planned_steps() < options.steps) {  // a receding horizon: the first sets only
+    loop.pending.resize(static_cast<std::size_t>(options.planned_steps()));
+    result.horizon = options.planned_steps();
+  }
   loop.history.last = loop.history.before = initial.wrench;
   loop.from = initial_end_effector;
   loop.tracked = initial.wrench;
@@ -226,7 +232,7 @@ double estimated_plan_seconds(const PlanProblem& problem, const PlanOptions& opt
   const double points = static_cast<double>(problem.target.points.size());
   const double optimise = 1.5e-4 * (1.0 + options.optimiser.multi_starts) * (points + 30.0) / 40.0;
   const double track = options.track_between_waypoints ? 1.4e-6 * options.tracking_substeps : 0.0;
-  return intervals * options.steps * (optimise + track);
+  return intervals * options.planned_steps() * (optimise + track);
 }
 
 void check_plan_cost(const PlanProblem& problem, const PlanOptions& options) {
@@ -235,7 +241,7 @@ void check_plan_cost(const PlanProblem& problem, const PlanOptions& options) {
   std::ostringstream out;
   out.precision(2);
   out << "the plan would take about " << seconds
-      << " s, estimated from PlanOptions.steps = " << options.steps
+      << " s, estimated from PlanOptions.steps = " << options.planned_steps()
       << ", ShapeOptimiserOptions.multi_starts = " << options.optimiser.multi_starts << ", "
       << problem.rod.nodes() << " rod nodes, " << problem.target.points.size()
       << " ShapeTarget.points";

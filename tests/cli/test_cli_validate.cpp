@@ -78,7 +78,7 @@ TEST_F(CliValidate, AFixedSeedRepeatsBitForBit) {
   EXPECT_NE(read_file(outdir() / "validation.csv"), first);
 }
 
-TEST_F(CliValidate, BadPlantOrSensorIsOneLineNamingTheFieldAndNothingIsWritten) {
+TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritten) {
   const std::pair<const char*, const char*> cases[] = {
       {"plant: {stiffnes_scale: 0.85}\n", "plant.stiffnes_scale: unknown key"},
       {"plant: {stiffness_scale: 0}\n", "plant.stiffness_scale = 0 must be > 0"},
@@ -86,6 +86,8 @@ TEST_F(CliValidate, BadPlantOrSensorIsOneLineNamingTheFieldAndNothingIsWritten) 
       {"sensor: {noise: {in_plane: -0.001}}\n", "sensor.noise.in_plane = -0.001 must be >= 0"},
       {"sensor: {dropout: 1.5}\n", "sensor.dropout = 1.5 must be in [0, 1]"},
       {"sensor: {wrench_noise: {force: -1}}\n", "sensor.wrench_noise.force = -1 must be >= 0"},
+      {"closed_loop: {horizon: -1}\n", "closed_loop.horizon = -1 must be in [0, 1000]"},
+      {"closed_loop: {horizon: 1.5}\n", "closed_loop.horizon"},
   };
   for (const auto& [section, message] : cases) {
     SCOPED_TRACE(section);

@@ -266,5 +266,39 @@ TEST(ClosedLoop, ReducesTheFinalErrorOfAMismatchedPlant) {
       << open_loop.runs.front().final.true_error;
 }
 
+TEST(ClosedLoop, AHorizonOfOneStepGivesTheSameRunAsReplanningEverything) {
+  // At a checkpoint, the next waypoint's step starts from the estimate towards the same objective
+  // set whatever the horizon, and the later steps are re-planned at later checkpoints: the runs are
+  // equal bit for bit, with one optimisation per checkpoint instead of one per remaining step.
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  MarkerSensorModel sensor;  // with noise: the estimates differ from the truth, equally in both
+  options.loop.horizon = 0;  // re-plan every remaining step
+  const ValidationResult all = validate_plan(band_problem(), band_plan(), plant, sensor, options);
+  options.loop.horizon = 1;
+  const ValidationResult next = validate_plan(band_problem(), band_plan(), plant, sensor, options);
+  ASSERT_EQ(all.status, ValidationStatus::Complete) << all.brief();
+  ASSERT_EQ(next.status, ValidationStatus::Complete) << next.brief();
+  const ValidationRun &a = all.runs.front(), &b = next.runs.front();
+  ASSERT_EQ(a.checkpoints.size(), 2u);
+  ASSERT_EQ(b.checkpoints.size(), 2u);
+  for (std::size_t k = 0; k < a.checkpoints.size(); ++k) {
+    EXPECT_TRUE(b.checkpoints[k].replanned) << b.checkpoints[k].message;
+    EXPECT_EQ(a.checkpoints[k].estimate.base_wrench.to_vector(),
+              b.checkpoints[k].estimate.base_wrench.to_vector());
+  }
+  EXPECT_NE(b.checkpoints.front().message.find("a horizon of 1"), std::string::npos)
+      << b.checkpoints.front().message;
+  EXPECT_EQ(a.error_3d, b.error_3d);
+  EXPECT_EQ(a.true_error, b.true_error);
+  EXPECT_EQ(a.final.true_error, b.final.true_error);
+  options.loop.horizon = -1;
+  EXPECT_THROW(validate_plan(band_problem(), band_plan(), plant, sensor, options), InputError);
+}
+
 }  // namespace
 }  // namespace rodshape

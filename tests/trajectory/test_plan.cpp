@@ -124,6 +124,42 @@ TEST(PlanResult, WorkspaceThatExcludesTheInitialTipIsBadInput) {
   }
 }
 
+TEST(PlanResult, AHorizonPlansTheFirstStepsOfTheWholePlan) {
+  // A receding horizon plans the first sets of the same n_inter, from the same start: its steps
+  // are the whole plan's first steps, bit for bit, and its path ends at the last of them.
+  PlanOptions options;
+  options.steps = 5;
+  const PlanResult whole = rodshape::plan(bend_request(), options);
+  options.horizon = 2;
+  const PlanResult part = rodshape::plan(bend_request(), options);
+  ASSERT_EQ(whole.status, PlanStatus::Complete) << whole.message;
+  ASSERT_EQ(part.status, PlanStatus::Complete) << part.message;
+  EXPECT_EQ(whole.horizon, 0);
+  EXPECT_EQ(part.horizon, 2);
+  ASSERT_EQ(part.steps.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(part.steps[k].fraction, whole.steps[k].fraction);
+    EXPECT_EQ(part.steps[k].solution.base_wrench.to_vector(),
+              whole.steps[k].solution.base_wrench.to_vector());
+  }
+  EXPECT_DOUBLE_EQ(part.steps.back().fraction, 2.0 / 5.0);
+  EXPECT_TRUE(part.end_effector_path.back().pose.position.isApprox(
+      part.steps.back().end_effector.position, 1e-15));
+  EXPECT_NE(part.brief(options.steps).find("a horizon of 2"), std::string::npos);
+  // horizon = steps is the whole plan; beyond it, or negative, is bad input.
+  options.horizon = 5;
+  EXPECT_EQ(rodshape::plan(bend_request(), options).horizon, 0);
+  for (int bad : {-1, 6}) {
+    options.horizon = bad;
+    try {
+      rodshape::plan(bend_request(), options);
+      ADD_FAILURE() << "expected InputError for horizon " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("PlanOptions.horizon"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(PlanResult, BadStepCountNamesTheField) {
   PlanOptions options;
   options.steps = 0;

@@ -2,7 +2,8 @@
 // each waypoint (a checkpoint) the rod's state is estimated from what the sensors see
 // (estimate_state: base wrench and, optionally, a stiffness scale) and the rest of the plan is made
 // again from the estimated equilibrium with the updated model (plan() with
-// InitialState::equilibrium and as many steps as remain).
+// InitialState::equilibrium and as many steps as remain, of which the first `horizon` are
+// optimised: the later ones are re-planned at later checkpoints anyway).
 #pragma once
 
 #include <string>
@@ -23,6 +24,12 @@ struct ClosedLoopOptions {
   EstimationOptions estimation;
   /// Re-plan the remaining steps from each estimate (false: estimate only, the plan unchanged).
   bool replan = true;
+  /// The steps optimised at a re-plan (PlanOptions::horizon), 0 … PlanOptions::kMaxSteps; 0: all
+  /// that remain. The next waypoint is all the arm needs before the next checkpoint, and its step
+  /// is the same whatever the horizon (the objective sets towards the target are the same, and the
+  /// first step starts from the estimate), so a horizon of 1 gives the same run as re-planning
+  /// everything, with one optimisation per checkpoint instead of as many as steps remain.
+  int horizon = 1;
   /// Also estimate where the gripper really holds the tip: the tip pose is then fitted with the
   /// standard deviations below around the pose believed so far (instead of
   /// estimation.tip_position_sigma around the commanded one), and the re-plans use the corrected

@@ -54,6 +54,13 @@ struct PlanOptions {
   static constexpr int kMaxRefinements = 100;
 
   int steps = 7;  // n_inter, 1 … kMaxSteps
+  /// A receding horizon: plan only the first `horizon` of the `steps` objective sets (0 … steps;
+  /// 0: all of them). The plan then ends at fraction horizon / steps of the way, not at the target;
+  /// PlanResult::horizon says so. The closed loop uses it to re-plan only the next waypoint at a
+  /// checkpoint (the later ones are re-planned at later checkpoints).
+  int horizon = 0;
+  /// The steps plan() optimises: steps, or horizon when it cuts them short.
+  int planned_steps() const { return horizon > 0 && horizon < steps ? horizon : steps; }
   ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
   ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;

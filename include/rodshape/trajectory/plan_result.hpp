@@ -90,7 +90,10 @@ struct ArmPlanResult {
 struct PlanResult {
   PlanStatus status = PlanStatus::Infeasible;
   std::string message;
-  int failed_step = -1;           // the step whose optimisation failed (Partial), else -1
+  int failed_step = -1;  // the step whose optimisation failed (Partial), else -1
+  /// With PlanOptions::horizon: the steps planned (of the sets towards the target), else 0. A
+  /// Complete plan with a horizon ends short of the target, on purpose.
+  int horizon = 0;
   FeasibilityResult feasibility;  // of the target, for this rod (Infeasible: why not)
   BaseWrench initial_wrench;
   RodConfiguration initial_configuration;
