@@ -68,8 +68,8 @@ std::string to_string(PlanStatus status) {
 std::string PlanResult::brief(int steps_requested) const {
   std::ostringstream out;
   const int completed = static_cast<int>(steps.size());
-  out << to_string(status) << " plan, " << completed << " steps (" << steps_requested
-      << " requested";
+  out << to_string(status) << " plan, " << completed << (completed == 1 ? " step (" : " steps (")
+      << steps_requested << " requested";
   if (horizon > 0) out << ", a horizon of " << horizon;
   if (tracking.refinements > 0)
     out << ", " << tracking.refinements << " inserted where the rod would jump";
