@@ -73,7 +73,7 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
 ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   loop.expect_mapping({"estimate_stiffness", "gravity", "estimate_grasp_offset", "replan",
                        "checkpoint_frames", "tip_position_sigma", "tip_rotation_sigma",
-                       "prior_sigma", "horizon"});
+                       "prior_sigma", "horizon", "significance"});
   ClosedLoopOptions options;
   if (const YamlField offset = loop.get("estimate_grasp_offset"); offset.present())
     options.estimate_grasp_offset = offset.boolean();
@@ -86,6 +86,7 @@ ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   read_number_into(loop, "tip_position_sigma", options.estimation.tip_position_sigma);
   read_number_into(loop, "tip_rotation_sigma", options.estimation.tip_rotation_sigma);
   read_number_into(loop, "prior_sigma", options.estimation.prior_sigma);
+  read_number_into(loop, "significance", options.significance);
   if (const YamlField frames = loop.get("checkpoint_frames"); frames.present())
     options.checkpoint_frames = frames.integer();
   if (const YamlField horizon = loop.get("horizon"); horizon.present())

@@ -67,6 +67,9 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"grasp_offset", io_detail::json_pose(c.grasp_offset)},
                     {"residual", json_number(c.estimate.residual)},
                     {"converged", c.estimate.converged},
+                    {"chi2_drop", json_number(c.estimate.prior_chi2 - c.estimate.chi2)},
+                    {"parameters", c.estimate.parameters},
+                    {"significant", c.significant},
                     {"replanned", c.replanned},
                     {"message", c.message}});
   return list;

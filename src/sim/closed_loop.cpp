@@ -68,6 +68,7 @@ class Loop {
 
   ClosedLoopRun run(const PlanResult& plan) {
     remaining_.take(plan.steps);
+    fresh_ = static_cast<int>(plan.steps.size());
     Pose from = plan.end_effector_path.front().pose;
     BaseWrench w = plan.initial_wrench;
     double t = plan.end_effector_path.front().t;
@@ -79,6 +80,7 @@ class Loop {
       t = part.last.t;
       const BaseWrench planned = remaining_.wrench.front();
       remaining_.pop();
+      fresh_ = std::max(0, fresh_ - 1);
       if (!remaining_.end_effector.empty()) checkpoint(t, waypoint, from, planned);
     }
     return std::move(run_);
@@ -164,22 +166,37 @@ class Loop {
     }
     c.estimate = estimate_state(problem_.rod, compose(commanded, offset_), end_effector, seen,
                                 averaged, {planned, scale_, load_}, estimation);
-    if (c.estimate.converged) {
+    c.significant = c.estimate.converged && significant(c.estimate);
+    if (c.significant) {  // the rod is not as believed: correct the model and the grasp
       scale_ = c.estimate.stiffness_scale;
       load_ = c.estimate.load_factor;
       if (loop_.estimate_grasp_offset)
         offset_ = compose(inverse(commanded), c.estimate.configuration.tip());
     }
     c.grasp_offset = offset_;
-    c.message = "plan kept";
-    if (loop_.replan && c.estimate.converged) replan(c);
+    c.message = c.significant || !c.estimate.converged
+                    ? "plan kept"
+                    : "plan kept: the estimate is within the noise of the plan's state";
+    if (loop_.replan && c.significant)
+      replan(c, c.estimate.base_wrench);
+    else if (loop_.replan && fresh_ == 0)  // the next step was planned with other beliefs
+      replan(c, planned);
     run_.checkpoints.push_back(std::move(c));
   }
 
-  void replan(Checkpoint& c) {
+  /// The fit's drop of χ² from the plan's state beyond k + significance · √(2k).
+  bool significant(const StateEstimate& e) const {
+    if (loop_.significance < 0.0) return true;
+    const double k = e.parameters;
+    return e.prior_chi2 - e.chi2 > k + loop_.significance * std::sqrt(2.0 * k);
+  }
+
+  /// The remaining steps made again from the equilibrium of `from` with the beliefs so far (the
+  /// first `horizon` of them optimised; those are then fresh).
+  void replan(Checkpoint& c, const BaseWrench& from) {
     PlanProblem rest = problem_;
     rest.rod = estimated_rod(problem_.rod, scale_, load_, loop_.estimation.gravity);
-    rest.initial = InitialState::equilibrium(c.estimate.base_wrench);
+    rest.initial = InitialState::equilibrium(from);
     // Commanded end-effector poses that put the real tip (commanded · offset) where the plan wants.
     rest.grasp.tip_to_end_effector = compose(inverse(offset_), problem_.grasp.tip_to_end_effector);
     rest.arm.reset();  // the arm's joint trajectory is not needed to correct the rod's path
@@ -192,6 +209,7 @@ class Loop {
       c.message = again.brief(options.steps);
       if (again.status != PlanStatus::Complete) return;
       remaining_.replace_first(again.steps);
+      fresh_ = static_cast<int>(again.steps.size());
       c.replanned = true;
     } catch (const InputError& error) {
       c.message = std::string("plan kept: the re-plan was refused: ") + error.what();
@@ -207,7 +225,10 @@ class Loop {
   const PlantOptions& plant_;
   Remaining remaining_;
   double scale_ = 1.0, load_ = 0.0;  // the model's corrections so far
-  Pose offset_;                      // the grasp offset believed so far
+  /// How many of the remaining steps were planned with the beliefs held now (the rest were made
+  /// before the last correction, beyond a re-plan's horizon).
+  int fresh_ = 0;
+  Pose offset_;  // the grasp offset believed so far
   ClosedLoopRun run_;
 };
 
@@ -215,6 +236,8 @@ class Loop {
 
 void ClosedLoopOptions::validate() const {
   estimation.validate();
+  if (!std::isfinite(significance))
+    throw InputError("ClosedLoopOptions.significance", " must be finite");
   if (horizon < 0 || horizon > PlanOptions::kMaxSteps)
     throw InputError("ClosedLoopOptions.horizon", " = " + std::to_string(horizon) +
                                                       " must be in [0, " +

@@ -237,11 +237,14 @@ StateEstimate estimate_state(const ClampedRod& model,
   Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
   lm.setMaxfev(10 * options.max_iterations);
   Eigen::VectorXd x = problem.start();
-  const auto status = lm.minimize(x);
-
-  StateEstimate estimate;
   Eigen::VectorXd r(problem.values());
   problem.residual(x, r, nullptr);
+  StateEstimate estimate;
+  estimate.prior_chi2 = r.squaredNorm();
+  estimate.parameters = problem.inputs();
+  const auto status = lm.minimize(x);
+  problem.residual(x, r, nullptr);
+  estimate.chi2 = r.squaredNorm();
   estimate.base_wrench = BaseWrench::from_vector(x.head<6>());
   estimate.stiffness_scale = problem.scale_of(x);
   estimate.load_factor = problem.load_of(x);

@@ -266,6 +266,36 @@ TEST(ClosedLoop, ReducesTheFinalErrorOfAMismatchedPlant) {
       << open_loop.runs.front().final.true_error;
 }
 
+TEST(ClosedLoop, EstimatesWithinTheNoiseOfAnExactPlanChangeNothing) {
+  // The plant is the planner's model: the estimates differ from the plan's states by the averaged
+  // markers' noise only (their drop of χ² from the plan's state is about χ² with k degrees of
+  // freedom), so none passes the gate (k + 3√(2k)) and the plant ends exactly where the open loop's
+  // does. Acting on every estimate instead re-plans from noisy states and moves the end.
+  ValidationOptions options;
+  const ValidationResult open =
+      validate_plan(band_problem(), band_plan(), PlantModel{}, MarkerSensorModel{}, options);
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  const ValidationResult gated =
+      validate_plan(band_problem(), band_plan(), PlantModel{}, MarkerSensorModel{}, options);
+  ASSERT_EQ(gated.status, ValidationStatus::Complete) << gated.brief();
+  for (const Checkpoint& c : gated.runs.front().checkpoints) {
+    EXPECT_TRUE(c.estimate.converged) << c.message;
+    EXPECT_FALSE(c.significant) << c.estimate.prior_chi2 - c.estimate.chi2;
+    EXPECT_FALSE(c.replanned) << c.message;
+    EXPECT_LT(c.estimate.chi2, c.estimate.prior_chi2);  // the fit is at least as good as the prior
+  }
+  // The same final pose; the closed loop drives the plant segment by segment, so its solves run
+  // along other samples and agree to the shooting tolerance (1e-10), not bit for bit.
+  EXPECT_NEAR(gated.runs.front().final.true_error, open.runs.front().final.true_error, 1e-9);
+  options.loop.significance = -1.0;
+  const ValidationResult always =
+      validate_plan(band_problem(), band_plan(), PlantModel{}, MarkerSensorModel{}, options);
+  for (const Checkpoint& c : always.runs.front().checkpoints) EXPECT_TRUE(c.replanned) << c.message;
+  EXPECT_GT(std::abs(always.runs.front().final.true_error - open.runs.front().final.true_error),
+            1e-6);
+}
+
 TEST(ClosedLoop, AHorizonOfOneStepGivesTheSameRunAsReplanningEverything) {
   // At a checkpoint, the next waypoint's step starts from the estimate towards the same objective
   // set whatever the horizon, and the later steps are re-planned at later checkpoints: the runs are

@@ -3,7 +3,10 @@
 // (estimate_state: base wrench and, optionally, a stiffness scale) and the rest of the plan is made
 // again from the estimated equilibrium with the updated model (plan() with
 // InitialState::equilibrium and as many steps as remain, of which the first `horizon` are
-// optimised: the later ones are re-planned at later checkpoints anyway).
+// optimised: the later ones are re-planned at later checkpoints anyway). An estimate that does not
+// differ from the plan's state by more than the markers' noise (`significance`) changes nothing:
+// the plan goes on (its next step re-planned from the plan's own state if it was made before the
+// last correction).
 #pragma once
 
 #include <string>
@@ -24,11 +27,18 @@ struct ClosedLoopOptions {
   EstimationOptions estimation;
   /// Re-plan the remaining steps from each estimate (false: estimate only, the plan unchanged).
   bool replan = true;
+  /// Act on an estimate (take its model corrections and re-plan) only when it differs from what
+  /// the plan expects by more than noise: when the fit's drop of χ² from the plan's state,
+  /// prior_chi2 - chi2, exceeds k + significance · √(2k), k the parameters fitted (the mean of
+  /// χ²_k plus `significance` of its standard deviations). Else the plan and the beliefs are kept,
+  /// and no estimate noise enters the rest of the path. < 0: act on every estimate.
+  double significance = 3.0;
   /// The steps optimised at a re-plan (PlanOptions::horizon), 0 … PlanOptions::kMaxSteps; 0: all
   /// that remain. The next waypoint is all the arm needs before the next checkpoint, and its step
   /// is the same whatever the horizon (the objective sets towards the target are the same, and the
   /// first step starts from the estimate), so a horizon of 1 gives the same run as re-planning
-  /// everything, with one optimisation per checkpoint instead of as many as steps remain.
+  /// everything (up to IPOPT's warm start where a stale step is re-planned from the plan's state),
+  /// with one optimisation per checkpoint instead of as many as steps remain.
   int horizon = 1;
   /// Also estimate where the gripper really holds the tip: the tip pose is then fitted with the
   /// standard deviations below around the pose believed so far (instead of
@@ -51,7 +61,8 @@ struct Checkpoint {
   double t = 0.0;    // s
   int waypoint = 0;  // 1 … n - 1: the waypoint just reached
   StateEstimate estimate;
-  Pose grasp_offset;  // believed after this checkpoint (identity unless estimated)
+  Pose grasp_offset;         // believed after this checkpoint (identity unless estimated)
+  bool significant = false;  // the estimate differs from the plan beyond noise (see significance)
   bool replanned = false;
   std::string message;  // the re-plan's brief, or why the plan was kept
 };

@@ -54,6 +54,11 @@ struct StateEstimate {
   /// √(Σ r² / rows) of the weighted residuals: about 1 when the model explains the measurements to
   /// their noise.
   double residual = 0.0;
+  /// Σ r² of the weighted residuals at the estimate, and at the prior (where the fit started): the
+  /// drop prior_chi2 - chi2 is about χ² with `parameters` degrees of freedom when the prior is the
+  /// truth, and larger when the measurements say otherwise.
+  double chi2 = 0.0, prior_chi2 = 0.0;
+  int parameters = 6;  // the unknowns fitted: w, and the stiffness scale and λ when estimated
   int iterations = 0;
   RodConfiguration configuration;  // of the estimate (the model with the scale applied)
   std::string message;
