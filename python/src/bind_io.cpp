@@ -95,6 +95,7 @@ void bind_tasks(py::module_& m) {
       .def_readwrite("options", &PlanTask::options)
       .def_readwrite("plant", &PlanTask::plant, "the simulated plant (PlantModel)")
       .def_readwrite("sensor", &PlanTask::sensor, "the simulated sensor (MarkerSensorModel)")
+      .def_readwrite("closed_loop", &PlanTask::closed_loop, "the ClosedLoopOptions")
       .def_readonly("source", &PlanTask::source)
       .def_property_readonly("kind", [](const PlanTask&) { return "plan"; });
   m.def("read_equilibrium_task", &read_equilibrium_task, py::arg("path"),

@@ -1,5 +1,6 @@
 // bind_sim.cpp: the simulated experiment's results (validate() is bound with the task in io).
 #include "bindings.hpp"
+#include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/sim/plant_model.hpp"
@@ -43,8 +44,40 @@ void bind_models(py::module_& m) {
       .def("validate", &MarkerSensorModel::validate);
 }
 
+void bind_closed_loop(py::module_& m) {
+  py::class_<ClosedLoopOptions>(
+      m, "ClosedLoopOptions", "The closed loop's checkpoints (a plan task's closed_loop section).")
+      .def(py::init<>())
+      .def_readwrite("replan", &ClosedLoopOptions::replan)
+      .def_readwrite("significance", &ClosedLoopOptions::significance,
+                     "act on an estimate when its χ² drop exceeds k + significance·√(2k); < 0: "
+                     "on every estimate")
+      .def_readwrite("horizon", &ClosedLoopOptions::horizon, "steps optimised per re-plan; 0: all")
+      .def_readwrite("estimate_grasp_offset", &ClosedLoopOptions::estimate_grasp_offset)
+      .def_readwrite("checkpoint_frames", &ClosedLoopOptions::checkpoint_frames)
+      .def("validate", &ClosedLoopOptions::validate);
+  py::class_<StateEstimate>(m, "StateEstimate", "The rod's state fitted to what the sensors saw.")
+      .def_readonly("converged", &StateEstimate::converged)
+      .def_readonly("base_wrench", &StateEstimate::base_wrench)
+      .def_readonly("stiffness_scale", &StateEstimate::stiffness_scale)
+      .def_readonly("load_factor", &StateEstimate::load_factor, "λ, the weight's factor")
+      .def_readonly("residual", &StateEstimate::residual)
+      .def_readonly("chi2", &StateEstimate::chi2)
+      .def_readonly("prior_chi2", &StateEstimate::prior_chi2)
+      .def_readonly("parameters", &StateEstimate::parameters);
+  py::class_<Checkpoint>(m, "Checkpoint", "One checkpoint of a closed-loop run.")
+      .def_readonly("t", &Checkpoint::t, "s")
+      .def_readonly("waypoint", &Checkpoint::waypoint)
+      .def_readonly("estimate", &Checkpoint::estimate)
+      .def_readonly("grasp_offset", &Checkpoint::grasp_offset)
+      .def_readonly("significant", &Checkpoint::significant)
+      .def_readonly("replanned", &Checkpoint::replanned)
+      .def_readonly("message", &Checkpoint::message);
+}
+
 void bind_sim(py::module_& m) {
   bind_models(m);
+  bind_closed_loop(m);
   py::class_<ShapeError>(m, "ShapeError", "The paper's error at one frame, m.")
       .def_readonly("error_3d", &ShapeError::error_3d)
       .def_readonly("error_2d", &ShapeError::error_2d)
@@ -66,6 +99,7 @@ void bind_sim(py::module_& m) {
       .def_property_readonly("true_error",
                              [](const ValidationRun& r) { return array_of(r.true_error); })
       .def_readonly("final", &ValidationRun::final)
+      .def_readonly("checkpoints", &ValidationRun::checkpoints)
       .def_readonly("events", &ValidationRun::events);
 }
 

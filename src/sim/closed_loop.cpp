@@ -179,8 +179,13 @@ class Loop {
                     : "plan kept: the estimate is within the noise of the plan's state";
     if (loop_.replan && c.significant)
       replan(c, c.estimate.base_wrench);
-    else if (loop_.replan && fresh_ == 0)  // the next step was planned with other beliefs
+    else if (loop_.replan && fresh_ == 0) {  // the next step was planned with other beliefs
       replan(c, planned);
+      c.message =
+          "estimate within the noise of the plan's state; the next step, made before the "
+          "last correction, made again from the plan's state: " +
+          c.message;
+    }
     run_.checkpoints.push_back(std::move(c));
   }
 

@@ -243,3 +243,21 @@ def test_a_plan_with_an_arm_has_a_joint_trajectory_within_the_limits(tmp_path):
     assert no_arm.result.joints is None
     with pytest.raises(ValueError):
         plot.joint_trajectory(no_arm)
+
+
+def test_closed_loop_options_and_checkpoints():
+    task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
+    task.plant.grasp_offset = rodshape.Pose(position=[0.002, 0.0, 0.0])
+    assert task.closed_loop.horizon == 1 and task.closed_loop.significance == 3.0
+    run = rodshape.validate(task, runs=1, seed=3, closed_loop=True).runs[0]
+    assert len(run.checkpoints) == 6  # at every waypoint but the last of seven
+    first = run.checkpoints[0]
+    # A 2 mm grasp offset is far beyond the averaged markers' noise: the first estimate acts.
+    assert first.significant and first.replanned, first.message
+    assert first.estimate.prior_chi2 - first.estimate.chi2 > 6 + 3 * np.sqrt(12)
+    task.closed_loop.significance = 1e9  # never significant: nothing is corrected
+    kept = rodshape.validate(task, runs=1, seed=3, closed_loop=True).runs[0]
+    assert not any(c.significant or c.replanned for c in kept.checkpoints)
+    task.closed_loop.horizon = -1
+    with pytest.raises(rodshape.InputError, match="horizon"):
+        rodshape.validate(task, closed_loop=True)
