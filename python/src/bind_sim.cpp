@@ -55,6 +55,8 @@ void bind_closed_loop(py::module_& m) {
       .def_readwrite("horizon", &ClosedLoopOptions::horizon, "steps optimised per re-plan; 0: all")
       .def_readwrite("estimate_grasp_offset", &ClosedLoopOptions::estimate_grasp_offset)
       .def_readwrite("checkpoint_frames", &ClosedLoopOptions::checkpoint_frames)
+      .def_readwrite("fuse", &ClosedLoopOptions::fuse,
+                     "each estimate's posterior is the next one's prior (recursive least squares)")
       .def("validate", &ClosedLoopOptions::validate);
   py::class_<StateEstimate>(m, "StateEstimate", "The rod's state fitted to what the sensors saw.")
       .def_readonly("converged", &StateEstimate::converged)
@@ -64,7 +66,14 @@ void bind_closed_loop(py::module_& m) {
       .def_readonly("residual", &StateEstimate::residual)
       .def_readonly("chi2", &StateEstimate::chi2)
       .def_readonly("prior_chi2", &StateEstimate::prior_chi2)
-      .def_readonly("parameters", &StateEstimate::parameters);
+      .def_readonly("parameters", &StateEstimate::parameters)
+      .def_readonly("stiffness_sigma", &StateEstimate::stiffness_sigma,
+                    "posterior standard deviation of log(stiffness scale); 0 if not estimated")
+      .def_readonly("load_factor_sigma", &StateEstimate::load_factor_sigma,
+                    "posterior standard deviation of λ; 0 if not estimated")
+      .def_readonly(
+          "tip_covariance", &StateEstimate::tip_covariance,
+          "6×6 posterior covariance of the tip pose (position m, world; angle rad, body)");
   py::class_<Checkpoint>(m, "Checkpoint", "One checkpoint of a closed-loop run.")
       .def_readonly("t", &Checkpoint::t, "s")
       .def_readonly("waypoint", &Checkpoint::waypoint)

@@ -73,7 +73,7 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
 ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   loop.expect_mapping({"estimate_stiffness", "gravity", "estimate_grasp_offset", "replan",
                        "checkpoint_frames", "tip_position_sigma", "tip_rotation_sigma",
-                       "prior_sigma", "horizon", "significance"});
+                       "prior_sigma", "horizon", "significance", "fuse"});
   ClosedLoopOptions options;
   if (const YamlField offset = loop.get("estimate_grasp_offset"); offset.present())
     options.estimate_grasp_offset = offset.boolean();
@@ -83,6 +83,7 @@ ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
     options.estimation.gravity = gravity.vector3();
   if (const YamlField replan = loop.get("replan"); replan.present())
     options.replan = replan.boolean();
+  if (const YamlField fuse = loop.get("fuse"); fuse.present()) options.fuse = fuse.boolean();
   read_number_into(loop, "tip_position_sigma", options.estimation.tip_position_sigma);
   read_number_into(loop, "tip_rotation_sigma", options.estimation.tip_rotation_sigma);
   read_number_into(loop, "prior_sigma", options.estimation.prior_sigma);

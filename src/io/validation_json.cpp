@@ -64,6 +64,8 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"base_wrench", io_detail::json_wrench(c.estimate.base_wrench)},
                     {"stiffness_scale", c.estimate.stiffness_scale},
                     {"load_factor", c.estimate.load_factor},
+                    {"stiffness_sigma", json_number(c.estimate.stiffness_sigma)},
+                    {"load_factor_sigma", json_number(c.estimate.load_factor_sigma)},
                     {"grasp_offset", io_detail::json_pose(c.grasp_offset)},
                     {"residual", json_number(c.estimate.residual)},
                     {"converged", c.estimate.converged},

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "closed_loop_beliefs.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -159,21 +160,15 @@ class Loop {
     c.waypoint = waypoint;
     // The tip where the gripper is believed to hold it.
     const Pose commanded = compose(end_effector, inverse(problem_.grasp.tip_to_end_effector));
-    EstimationOptions estimation = loop_.estimation;
-    if (loop_.estimate_grasp_offset) {
-      estimation.tip_position_sigma = loop_.grasp_offset_position_sigma;
-      estimation.tip_rotation_sigma = loop_.grasp_offset_rotation_sigma;
-    }
-    c.estimate = estimate_state(problem_.rod, compose(commanded, offset_), end_effector, seen,
-                                averaged, {planned, scale_, load_}, estimation);
+    c.estimate =
+        estimate_state(problem_.rod, compose(commanded, beliefs_.fused.offset), end_effector, seen,
+                       averaged, beliefs_.prior(planned), beliefs_.estimation(loop_, commanded),
+                       beliefs_.hypothesis(planned));
     c.significant = c.estimate.converged && significant(c.estimate);
-    if (c.significant) {  // the rod is not as believed: correct the model and the grasp
-      scale_ = c.estimate.stiffness_scale;
-      load_ = c.estimate.load_factor;
-      if (loop_.estimate_grasp_offset)
-        offset_ = compose(inverse(commanded), c.estimate.configuration.tip());
-    }
-    c.grasp_offset = offset_;
+    if (c.estimate.converged && (c.significant || loop_.fuse))
+      beliefs_.take(c.estimate, commanded, loop_);
+    if (c.significant) beliefs_.acting = beliefs_.fused;  // the rod is not as the plan believes
+    c.grasp_offset = beliefs_.acting.offset;
     c.message = c.significant || !c.estimate.converged
                     ? "plan kept"
                     : "plan kept: the estimate is within the noise of the plan's state";
@@ -200,10 +195,12 @@ class Loop {
   /// first `horizon` of them optimised; those are then fresh).
   void replan(Checkpoint& c, const BaseWrench& from) {
     PlanProblem rest = problem_;
-    rest.rod = estimated_rod(problem_.rod, scale_, load_, loop_.estimation.gravity);
+    rest.rod = estimated_rod(problem_.rod, beliefs_.acting.stiffness_scale,
+                             beliefs_.acting.load_factor, loop_.estimation.gravity);
     rest.initial = InitialState::equilibrium(from);
     // Commanded end-effector poses that put the real tip (commanded · offset) where the plan wants.
-    rest.grasp.tip_to_end_effector = compose(inverse(offset_), problem_.grasp.tip_to_end_effector);
+    rest.grasp.tip_to_end_effector =
+        compose(inverse(beliefs_.acting.offset), problem_.grasp.tip_to_end_effector);
     rest.arm.reset();  // the arm's joint trajectory is not needed to correct the rod's path
     PlanOptions options = options_;
     options.steps = static_cast<int>(remaining_.end_effector.size());
@@ -229,11 +226,10 @@ class Loop {
   const ClosedLoopOptions& loop_;
   const PlantOptions& plant_;
   Remaining remaining_;
-  double scale_ = 1.0, load_ = 0.0;  // the model's corrections so far
   /// How many of the remaining steps were planned with the beliefs held now (the rest were made
   /// before the last correction, beyond a re-plan's horizon).
   int fresh_ = 0;
-  Pose offset_;  // the grasp offset believed so far
+  closed_loop_detail::Beliefs beliefs_;  // the model's corrections and the grasp offset so far
   ClosedLoopRun run_;
 };
 

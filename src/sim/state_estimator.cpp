@@ -42,6 +42,7 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
         prior_(prior),
         options_(options),
         units_(model.properties.bending_wrench_units()),
+        tip_whitening_(tip_whitening(options)),
         scale_index_(options.estimate_stiffness ? 6 : -1),
         load_index_(options.gravity ? (options.estimate_stiffness ? 7 : 6) : -1) {}
 
@@ -59,6 +60,24 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     x.head<6>() = prior_.base_wrench.to_vector();
     if (scale_index_ >= 0) x(scale_index_) = std::log(prior_.stiffness_scale);
     if (load_index_ >= 0) x(load_index_) = prior_.load_factor;
+    return x;
+  }
+  /// W with Wᵀ W = Σ_tip⁻¹: W = L⁻¹ for Σ_tip = L Lᵀ, or diag(1/σ) from the two sigmas.
+  static Matrix6d tip_whitening(const EstimationOptions& options) {
+    if (options.tip_covariance)
+      return options.tip_covariance->llt().matrixL().solve(Matrix6d::Identity());
+    Vector6d weights;
+    weights << Eigen::Vector3d::Constant(1.0 / options.tip_position_sigma),
+        Eigen::Vector3d::Constant(1.0 / options.tip_rotation_sigma);
+    return weights.asDiagonal();
+  }
+
+  /// x at `h`.
+  InputType at(const StateHypothesis& h) const {
+    InputType x(inputs());
+    x.head<6>() = h.base_wrench.to_vector();
+    if (scale_index_ >= 0) x(scale_index_) = std::log(h.stiffness_scale);
+    if (load_index_ >= 0) x(load_index_) = h.load_factor;
     return x;
   }
   double scale_of(const InputType& x) const {
@@ -108,10 +127,28 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     row += 6;
     // The priors of the scale and λ (their columns are differenced in df()).
     if (scale_index_ >= 0)
-      r(row++) =
-          (x(scale_index_) - std::log(prior_.stiffness_scale)) / options_.stiffness_prior_sigma;
+      r(row++) = (x(scale_index_) - std::log(prior_.stiffness_scale)) /
+                 prior_.stiffness_sigma.value_or(options_.stiffness_prior_sigma);
     if (load_index_ >= 0)
-      r(row++) = (x(load_index_) - prior_.load_factor) / options_.load_prior_sigma;
+      r(row++) = (x(load_index_) - prior_.load_factor) /
+                 prior_.load_factor_sigma.value_or(options_.load_prior_sigma);
+  }
+
+  /// The posterior's spread at x: Σ = (JᵀJ)⁻¹ (the residuals are weighted), reported as the
+  /// scale's and λ's standard deviations and the tip pose's covariance J_tip Σ J_tipᵀ.
+  void posterior(const InputType& x, StateEstimate& estimate) {
+    JacobianType J;
+    df(x, J);
+    const Eigen::MatrixXd information = J.transpose() * J;
+    const Eigen::MatrixXd sigma =
+        information.ldlt().solve(Eigen::MatrixXd::Identity(inputs(), inputs()));
+    if (scale_index_ >= 0) estimate.stiffness_sigma = std::sqrt(sigma(scale_index_, scale_index_));
+    if (load_index_ >= 0) estimate.load_factor_sigma = std::sqrt(sigma(load_index_, load_index_));
+    const int row = 3 * static_cast<int>(data_.markers.size());  // the held tip's rows
+    const Eigen::MatrixXd tip_jacobian =
+        tip_whitening_.triangularView<Eigen::Lower>().solve(J.middleRows(row, 6));
+    const Matrix6d covariance = tip_jacobian * sigma * tip_jacobian.transpose();
+    estimate.tip_covariance = 0.5 * (covariance + covariance.transpose());
   }
 
   const RodConfiguration& configuration() const { return configuration_; }
@@ -133,12 +170,14 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
   /// The tip where the arm holds it: position and body-frame rotation error.
   void held_tip(Eigen::VectorXd& r, JacobianType* J, int& row) const {
     const Pose tip = configuration_.tip();
-    r.segment<3>(row) = (tip.position - data_.tip.position) / options_.tip_position_sigma;
-    r.segment<3>(row + 3) =
-        log_so3(data_.tip.rotation.transpose() * tip.rotation) / options_.tip_rotation_sigma;
+    Vector6d error;
+    error << tip.position - data_.tip.position,
+        log_so3(data_.tip.rotation.transpose() * tip.rotation);
+    r.segment<6>(row) = tip_whitening_ * error;
     if (J) {
-      J->block<3, 6>(row, 0) = configuration_.tip_dp_dw / options_.tip_position_sigma;
-      J->block<3, 6>(row + 3, 0) = configuration_.tip_dtheta_dw / options_.tip_rotation_sigma;
+      Matrix6d dtip_dw;
+      dtip_dw << configuration_.tip_dp_dw, configuration_.tip_dtheta_dw;
+      J->block<6, 6>(row, 0) = tip_whitening_ * dtip_dw;
     }
     row += 6;
   }
@@ -169,6 +208,7 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
   StatePrior prior_;
   const EstimationOptions& options_;
   Vector6d units_;
+  Matrix6d tip_whitening_;
   int scale_index_, load_index_;
   RodConfiguration configuration_;
 };
@@ -198,6 +238,12 @@ void EstimationOptions::validate() const {
   detail::require_positive("EstimationOptions.stiffness_prior_sigma", stiffness_prior_sigma);
   if (gravity) detail::require_finite("EstimationOptions.gravity", *gravity);
   detail::require_positive("EstimationOptions.load_prior_sigma", load_prior_sigma);
+  if (tip_covariance) {
+    const Matrix6d& c = *tip_covariance;
+    if (!c.allFinite() || !c.isApprox(c.transpose(), 1e-12) || c.llt().info() != Eigen::Success)
+      throw InputError("EstimationOptions.tip_covariance",
+                       " must be finite, symmetric and positive definite");
+  }
   if (max_iterations < 1 || max_iterations > 1000)
     throw InputError("EstimationOptions.max_iterations",
                      " = " + std::to_string(max_iterations) + " must be in [1, 1000]");
@@ -225,10 +271,15 @@ StateEstimate estimate_state(const ClampedRod& model,
                              const SensorFrame& seen,
                              const MarkerSensorModel& sensor,
                              const StatePrior& prior,
-                             const EstimationOptions& options) {
+                             const EstimationOptions& options,
+                             const std::optional<StateHypothesis>& hypothesis) {
   options.validate();
   detail::require_positive("StatePrior.stiffness_scale", prior.stiffness_scale);
   detail::require_finite("StatePrior.load_factor", prior.load_factor);
+  if (prior.stiffness_sigma)
+    detail::require_positive("StatePrior.stiffness_sigma", *prior.stiffness_sigma);
+  if (prior.load_factor_sigma)
+    detail::require_positive("StatePrior.load_factor_sigma", *prior.load_factor_sigma);
   if (options.gravity && !(model.properties.mass_per_length > 0.0))
     throw InputError("EstimationOptions.gravity",
                      ": the rod's mass per length is not known, so its weight cannot be estimated");
@@ -236,12 +287,16 @@ StateEstimate estimate_state(const ClampedRod& model,
   EstimationProblem problem(model, data, sensor, prior, options);
   Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
   lm.setMaxfev(10 * options.max_iterations);
-  Eigen::VectorXd x = problem.start();
   Eigen::VectorXd r(problem.values());
-  problem.residual(x, r, nullptr);
+  if (hypothesis) {
+    detail::require_positive("StateHypothesis.stiffness_scale", hypothesis->stiffness_scale);
+    detail::require_finite("StateHypothesis.load_factor", hypothesis->load_factor);
+  }
+  problem.residual(hypothesis ? problem.at(*hypothesis) : problem.start(), r, nullptr);
   StateEstimate estimate;
   estimate.prior_chi2 = r.squaredNorm();
   estimate.parameters = problem.inputs();
+  Eigen::VectorXd x = problem.start();
   const auto status = lm.minimize(x);
   problem.residual(x, r, nullptr);
   estimate.chi2 = r.squaredNorm();
@@ -250,10 +305,11 @@ StateEstimate estimate_state(const ClampedRod& model,
   estimate.load_factor = problem.load_of(x);
   estimate.residual = std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
   estimate.iterations = static_cast<int>(lm.iterations());
-  estimate.configuration = problem.configuration();
   estimate.converged = r.allFinite() &&
                        status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
                        status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation;
+  if (estimate.converged) problem.posterior(x, estimate);
+  estimate.configuration = problem.configuration();
   estimate.message = estimate.converged ? "converged" : "the fit did not converge";
   return estimate;
 }

@@ -88,6 +88,8 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
       {"sensor: {wrench_noise: {force: -1}}\n", "sensor.wrench_noise.force = -1 must be >= 0"},
       {"closed_loop: {horizon: -1}\n", "closed_loop.horizon = -1 must be in [0, 1000]"},
       {"closed_loop: {horizon: 1.5}\n", "closed_loop.horizon"},
+      {"closed_loop: {fuse: 2}\n", "closed_loop.fuse"},
+      {"closed_loop: {fusion: true}\n", "closed_loop.fusion: unknown key"},
   };
   for (const auto& [section, message] : cases) {
     SCOPED_TRACE(section);

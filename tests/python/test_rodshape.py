@@ -255,6 +255,11 @@ def test_closed_loop_options_and_checkpoints():
     # A 2 mm grasp offset is far beyond the averaged markers' noise: the first estimate acts.
     assert first.significant and first.replanned, first.message
     assert first.estimate.prior_chi2 - first.estimate.chi2 > 6 + 3 * np.sqrt(12)
+    assert task.closed_loop.fuse
+    cov = np.asarray(first.estimate.tip_covariance)
+    assert cov.shape == (6, 6) and np.allclose(cov, cov.T) and np.all(np.linalg.eigvalsh(cov) > 0)
+    # The tip is placed to a fraction of a millimetre (markers averaged over 15 frames).
+    assert np.sqrt(np.trace(cov[:3, :3])) < 1e-3
     task.closed_loop.significance = 1e9  # never significant: nothing is corrected
     kept = rodshape.validate(task, runs=1, seed=3, closed_loop=True).runs[0]
     assert not any(c.significant or c.replanned for c in kept.checkpoints)

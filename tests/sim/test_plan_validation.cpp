@@ -330,5 +330,44 @@ TEST(ClosedLoop, AHorizonOfOneStepGivesTheSameRunAsReplanningEverything) {
   EXPECT_THROW(validate_plan(band_problem(), band_plan(), plant, sensor, options), InputError);
 }
 
+TEST(ClosedLoop, FusedEstimatesAddUpAcrossCheckpoints) {
+  // The paper's mismatch seen through the Kinect-like noise, with a checkpoint at each of 5
+  // waypoints. Each estimate alone knows the weight and the grasp offset to the averaged markers'
+  // noise; fused (each posterior the next prior) the information of the checkpoints adds up, so the
+  // beliefs the plan ends with are tighter and the plant ends nearer the points (the mean over 6
+  // seeds; measured 0.16 against 0.28 mm). The posterior of the weight's factor shrinks from
+  // checkpoint to checkpoint.
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.gravity = {0.0, 0.0, -9.81};
+  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.runs = 6;
+  options.planning.steps = 6;
+  options.loop.estimation.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  PlanOptions planning;
+  planning.steps = 6;
+  const PlanResult plan = rodshape::plan(band_problem(), planning);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief(6);
+  auto mean_final = [&](bool fuse) {
+    options.loop.fuse = fuse;
+    const ValidationResult result =
+        validate_plan(band_problem(), plan, plant, MarkerSensorModel{}, options);
+    EXPECT_EQ(result.status, ValidationStatus::Complete) << result.brief();
+    double mean = 0.0;
+    for (const ValidationRun& run : result.runs) mean += run.final.true_error / options.runs;
+    for (const ValidationRun& run : result.runs) {
+      for (std::size_t k = 1; fuse && k < run.checkpoints.size(); ++k) {
+        EXPECT_LT(run.checkpoints[k].estimate.load_factor_sigma,
+                  run.checkpoints[k - 1].estimate.load_factor_sigma);
+      }
+    }
+    return mean;
+  };
+  const double fused = mean_final(true), alone = mean_final(false);
+  EXPECT_LT(fused, alone) << "fused " << fused << " m, each estimate alone " << alone << " m";
+}
+
 }  // namespace
 }  // namespace rodshape

@@ -6,7 +6,10 @@
 // optimised: the later ones are re-planned at later checkpoints anyway). An estimate that does not
 // differ from the plan's state by more than the markers' noise (`significance`) changes nothing:
 // the plan goes on (its next step re-planned from the plan's own state if it was made before the
-// last correction).
+// last correction). The static parameters (weight, stiffness scale, grasp offset) are estimated
+// recursively (`fuse`): each estimate's posterior is the next one's prior, and each estimate is
+// tested against what the plan assumes, so the checkpoints' information adds up while estimates
+// within the noise still change nothing.
 #pragma once
 
 #include <string>
@@ -50,6 +53,12 @@ struct ClosedLoopOptions {
   /// waypoint) for checkpoint_frames / frame_rate seconds, and each marker's visible positions are
   /// averaged, dividing the noise by √checkpoint_frames. 1 ≤ checkpoint_frames ≤ 1000.
   int checkpoint_frames = 15;
+  /// Recursive estimation of the static parameters (stiffness scale, λ, grasp offset): each
+  /// estimate acted on leaves its posterior standard deviations as the next estimate's prior
+  /// (instead of the fixed ones of `estimation` and below), so the checkpoints' information adds
+  /// up. Assumes the model's form is right: model errors the parameters cannot absorb make the
+  /// beliefs over-confident.
+  bool fuse = true;
   /// Throws InputError naming the field.
   void validate() const;
   double grasp_offset_position_sigma = 5e-3;  // m

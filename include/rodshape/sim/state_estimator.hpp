@@ -26,6 +26,10 @@ struct EstimationOptions {
   bool estimate_stiffness = false;
   double tip_position_sigma = 1e-4;  // m: how well the arm knows where it holds the tip
   double tip_rotation_sigma = 1e-3;  // rad
+  /// The held tip's full covariance (position in m, world frame, then the rotation's body-frame
+  /// angle in rad), symmetric positive definite; given, it replaces the two sigmas above (a
+  /// recursive estimate passes an earlier posterior this way).
+  std::optional<Matrix6d> tip_covariance;
   /// The prior's standard deviation, in bending units (EI/L² for forces, EI/L for moments): weak,
   /// it only picks the branch where the measurements do not.
   double prior_sigma = 10.0;
@@ -39,8 +43,20 @@ struct EstimationOptions {
   void validate() const;
 };
 
-/// Where the fit starts and what it is weakly pulled to.
+/// Where the fit starts and what it is pulled to. The standard deviations of the scale and λ,
+/// when given, replace EstimationOptions' (a recursive estimate: an earlier estimate's posterior
+/// as this one's prior).
 struct StatePrior {
+  BaseWrench base_wrench;
+  double stiffness_scale = 1.0;
+  double load_factor = 0.0;                              // λ
+  std::optional<double> stiffness_sigma = std::nullopt;  // on log(scale)
+  std::optional<double> load_factor_sigma = std::nullopt;
+};
+
+/// The state an estimate is tested against (StateEstimate::prior_chi2): the base wrench and the
+/// model's corrections that the plan assumes. Absent, the prior's mean.
+struct StateHypothesis {
   BaseWrench base_wrench;
   double stiffness_scale = 1.0;
   double load_factor = 0.0;  // λ
@@ -54,26 +70,32 @@ struct StateEstimate {
   /// √(Σ r² / rows) of the weighted residuals: about 1 when the model explains the measurements to
   /// their noise.
   double residual = 0.0;
-  /// Σ r² of the weighted residuals at the estimate, and at the prior (where the fit started): the
-  /// drop prior_chi2 - chi2 is about χ² with `parameters` degrees of freedom when the prior is the
-  /// truth, and larger when the measurements say otherwise.
+  /// Σ r² of the weighted residuals at the estimate, and at the hypothesis (the prior's mean unless
+  /// one is given): the drop prior_chi2 - chi2 is about χ² with `parameters` degrees of freedom
+  /// when the hypothesis is the truth, and larger when the measurements say otherwise.
   double chi2 = 0.0, prior_chi2 = 0.0;
   int parameters = 6;  // the unknowns fitted: w, and the stiffness scale and λ when estimated
   int iterations = 0;
+  /// The posterior's standard deviations (Gauss–Newton, (JᵀJ)⁻¹ of the weighted residuals at the
+  /// estimate) of log(stiffness scale) and λ when estimated (else 0), and the covariance of the
+  /// estimated tip pose (position in m, then the rotation's body-frame angle in rad).
+  double stiffness_sigma = 0.0, load_factor_sigma = 0.0;
+  Matrix6d tip_covariance = Matrix6d::Zero();
   RodConfiguration configuration;  // of the estimate (the model with the scale applied)
   std::string message;
 };
 
 /// Estimates the state of `model` (the planner's rod) held at `tip` (the commanded tip pose) from
 /// the frame `seen` of `sensor`, the gripper at `end_effector` (for the wrist wrench), starting
-/// from and weakly pulled to `prior`.
+/// from and pulled to `prior`; its χ² is also evaluated at `hypothesis`.
 StateEstimate estimate_state(const ClampedRod& model,
                              const Pose& tip,
                              const Pose& end_effector,
                              const SensorFrame& seen,
                              const MarkerSensorModel& sensor,
                              const StatePrior& prior,
-                             const EstimationOptions& options = {});
+                             const EstimationOptions& options = {},
+                             const std::optional<StateHypothesis>& hypothesis = std::nullopt);
 
 /// `rod` with every stiffness multiplied by `scale`.
 ClampedRod with_stiffness_scale(const ClampedRod& rod, double scale);
