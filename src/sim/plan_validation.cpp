@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "rodshape/error.hpp"
+#include "rodshape/robot/arm_placement.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -138,6 +139,21 @@ std::vector<double> frame_times(double t0, double t1, double rate) {
   return times;
 }
 
+bool drives_joints(const PlanProblem& problem, const PlanResult& plan) {
+  return problem.arm && plan.arm && plan.arm->joints.complete() && !plan.arm->joints.t.empty();
+}
+
+std::vector<TimedPose> commanded_path(const PlanProblem& problem, const PlanResult& plan) {
+  if (!drives_joints(problem, plan)) return plan.end_effector_path;
+  const JointTrajectoryResult& joints = plan.arm->joints;
+  std::vector<TimedPose> path;
+  path.reserve(joints.t.size());
+  for (std::size_t k = 0; k < joints.t.size(); ++k)
+    path.push_back(
+        {joints.t[k], end_effector_pose(problem.arm->model, problem.arm->placement, joints.q[k])});
+  return path;
+}
+
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
@@ -147,8 +163,11 @@ ValidationResult validate_plan(const PlanProblem& problem,
   sensor.validate();
   if (plan.end_effector_path.empty())
     throw InputError("PlanResult.end_effector_path", ": the plan has no path to carry out");
-  const std::vector<TimedPose>& path = plan.end_effector_path;
+  // The closed loop commands end-effector poses: its re-planned steps have no joint trajectory.
   ValidationResult result;
+  result.driven_by_joints = !options.closed_loop && drives_joints(problem, plan);
+  const std::vector<TimedPose> path =
+      result.driven_by_joints ? commanded_path(problem, plan) : plan.end_effector_path;
   // Stage 1: the real rod. Stage 2: the plant along the commanded path, from the plan's start.
   result.real_rod = plant.real_rod(problem.rod);
   result.plant =

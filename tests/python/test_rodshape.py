@@ -142,6 +142,7 @@ def test_validate_repeats_bit_for_bit_and_writes_the_clis_files(tmp_path):
     a = rodshape.validate(task, runs=2, seed=5)
     b = rodshape.validate(task, runs=2, seed=5)
     assert a.status == "complete"
+    assert not a.driven_by_joints  # no arm: the end-effector path
     assert np.array_equal(a.runs[1].error_3d, b.runs[1].error_3d)
     assert a.runs[0].final.true_error < 1e-3
     names = a.write(str(tmp_path))
@@ -239,6 +240,9 @@ def test_a_plan_with_an_arm_has_a_joint_trajectory_within_the_limits(tmp_path):
     assert np.all(np.abs(joints.qdot) <= arm.velocity_limits * (1 + 1e-9))
     plot.joint_trajectory(plan).savefig(tmp_path / "joints.png")
     assert (tmp_path / "joints.png").stat().st_size > 1000
+    validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_panda_s_curve.yaml")))
+    assert validation.driven_by_joints
+    assert json.loads(validation.to_json())["driven_by"] == "joint_trajectory"
     no_arm = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
     assert no_arm.result.joints is None
     with pytest.raises(ValueError):

@@ -7,9 +7,11 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/task_reader.hpp"
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan.hpp"
+#include "support/eigen_compare.hpp"
 
 namespace rodshape {
 namespace {
@@ -367,6 +369,47 @@ TEST(ClosedLoop, FusedEstimatesAddUpAcrossCheckpoints) {
   };
   const double fused = mean_final(true), alone = mean_final(false);
   EXPECT_LT(fused, alone) << "fused " << fused << " m, each estimate alone " << alone << " m";
+}
+
+// With an arm, the plant is driven by the joint trajectory through the arm's forward kinematics:
+// the poses the hand really takes. IK holds each sample to 1e-10 m and rad (IkOptions), so the
+// plant ends where the end-effector path would have driven it, to the plant's solver tolerance.
+TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
+  const PlanTask task =
+      read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml");
+  const PlanResult plan = rodshape::plan(task.problem, task.options);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  ASSERT_TRUE(plan.arm && plan.arm->joints.complete());
+  const JointTrajectoryResult& joints = plan.arm->joints;
+  ASSERT_TRUE(drives_joints(task.problem, plan));
+  const std::vector<TimedPose> commanded = commanded_path(task.problem, plan);
+  ASSERT_EQ(commanded.size(), joints.t.size());
+  for (std::size_t k = 0; k < commanded.size(); ++k) EXPECT_EQ(commanded[k].t, joints.t[k]);
+  const Pose& planned_end = plan.end_effector_path.back().pose;
+  EXPECT_LE((commanded.back().pose.position - planned_end.position).norm(), 1e-9);
+  EXPECT_LE(testing::rotation_angle(commanded.back().pose.rotation, planned_end.rotation), 1e-9);
+
+  const ValidationResult by_joints = validate_plan(task.problem, plan, {}, noiseless());
+  ASSERT_EQ(by_joints.status, ValidationStatus::Complete) << by_joints.brief();
+  EXPECT_TRUE(by_joints.driven_by_joints);
+  EXPECT_EQ(by_joints.plant.solves, static_cast<int>(commanded.size()));
+  PlanResult without_joints = plan;
+  without_joints.arm->joints.status = JointTrajectoryStatus::NotRun;
+  EXPECT_FALSE(drives_joints(task.problem, without_joints));
+  const ValidationResult by_path = validate_plan(task.problem, without_joints, {}, noiseless());
+  ASSERT_EQ(by_path.status, ValidationStatus::Complete) << by_path.brief();
+  EXPECT_FALSE(by_path.driven_by_joints);
+  // Same rod, same final pose to 1e-9 m: the same last equilibrium (residual 1e-10, scaled).
+  const RodConfiguration& a = by_joints.plant.last.configuration;
+  const RodConfiguration& b = by_path.plant.last.configuration;
+  double deviation = 0.0;
+  for (int i = 0; i < a.nodes(); ++i) deviation = std::max(deviation, (a.p[i] - b.p[i]).norm());
+  EXPECT_LT(deviation, 1e-8);
+  EXPECT_NEAR(by_joints.runs[0].final.true_error, by_path.runs[0].final.true_error, 1e-8);
+  // The closed loop re-plans end-effector poses, which have no joint trajectory.
+  ValidationOptions closed;
+  closed.closed_loop = true;
+  EXPECT_FALSE(validate_plan(task.problem, plan, {}, noiseless(), closed).driven_by_joints);
 }
 
 }  // namespace
