@@ -4,7 +4,8 @@
 // velocity-limit check). The plan itself is made once, outside the timing. Then the arm's reach
 // (shoulder, wrist, range of their distance: 4096 FK samples and refinement) and the whole plan
 // with the arm (reach shell in the workspace, IK of every step's pose, joint trajectory), for the
-// S-curve and for the reach-limit example, where the shell is active in the last step.
+// S-curve and for the reach-limit example, where the shell is active in the last step. And one
+// closed-loop segment's joints (IK along the next waypoint's path, from the arm's joints).
 #include <benchmark/benchmark.h>
 
 #include <numbers>
@@ -64,6 +65,30 @@ void BM_JointTrajectoryPaperExperiment(benchmark::State& state) {
   state.counters["slowdown"] = joints.slowdown;
 }
 
+/// One closed-loop segment of the S-curve plan with the arm: the next waypoint's path (sampled as
+/// the plan's) solved by IK from the joints at the waypoint before it, as at every checkpoint.
+void BM_JointSegmentCheckpoint(benchmark::State& state) {
+  const PlanTask task = read_plan_task(kSource + "/examples/plan_panda_s_curve.yaml");
+  const PlanResult plan = rodshape::plan(task.problem, task.options);
+  if (!task.problem.arm || !plan.arm || plan.arm->waypoint_q.size() < 4) {
+    state.SkipWithError("the S-curve plan has no arm's waypoints");
+    return;
+  }
+  const std::size_t k = plan.arm->waypoint_q.size() / 2;  // a segment in the middle
+  const std::vector<TimedPose> segment = time_parameterize(
+      {plan.steps[k - 2].end_effector, plan.steps[k - 1].end_effector}, task.options.end_effector);
+  JointTrajectoryOptions options = task.options.arm.joints;
+  options.seed = plan.arm->waypoint_q[k - 1];
+  const PlanArm& arm = *task.problem.arm;
+  JointTrajectoryResult joints;
+  for (auto _ : state) {
+    joints = joint_trajectory(arm.model, segment, arm.placement, options);
+    benchmark::DoNotOptimize(joints.q.data());
+  }
+  if (!joints.complete()) state.SkipWithError(joints.message.c_str());
+  state.counters["samples"] = static_cast<double>(joints.t.size());
+}
+
 void BM_ArmReachPanda(benchmark::State& state) {
   const ArmModel arm = samples::panda();
   ArmReach reach;
@@ -99,3 +124,4 @@ BENCHMARK_CAPTURE(BM_PlanWithArm, ReachLimit, "plan_panda_reach_limit.yaml")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_IkWarm)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_JointTrajectoryPaperExperiment)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_JointSegmentCheckpoint)->Unit(benchmark::kMillisecond);

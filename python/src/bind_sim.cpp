@@ -109,7 +109,8 @@ void bind_sim(py::module_& m) {
                              [](const ValidationRun& r) { return array_of(r.true_error); })
       .def_readonly("final", &ValidationRun::final)
       .def_readonly("checkpoints", &ValidationRun::checkpoints)
-      .def_readonly("events", &ValidationRun::events);
+      .def_readonly("events", &ValidationRun::events)
+      .def_readonly("driven_by_joints", &ValidationRun::driven_by_joints);
 }
 
 }  // namespace rodshape::python

@@ -9,6 +9,7 @@
 
 #include "closed_loop_beliefs.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/sim/commanded_path.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
@@ -68,6 +69,9 @@ class Loop {
         plant_(plant) {}
 
   ClosedLoopRun run(const PlanResult& plan) {
+    if (drives_joints(problem_, plan)) joints_ = plan.arm->joints.q.front();
+    run_.driven_by_joints = joints_.has_value();
+    if (plan.arm && plan.arm->shell) shell_ = plan.arm->shell;
     remaining_.take(plan.steps);
     fresh_ = static_cast<int>(plan.steps.size());
     Pose from = plan.end_effector_path.front().pose;
@@ -93,6 +97,7 @@ class Loop {
     std::vector<TimedPose> path =
         time_parameterize({from, remaining_.end_effector.front()}, options_.end_effector);
     for (TimedPose& sample : path) sample.t += t;
+    if (joints_) path = hand_path(path);
     const double rate = sensor_.model().frame_rate;
     PlantRun part = drive_plant(rod_, problem_.grasp, plant_offset_, path, w,
                                 frames_within(t, path.back().t, rate, first), plant_);
@@ -104,6 +109,27 @@ class Loop {
     }
     append(part);
     return part;
+  }
+
+  /// The segment as the hand moves along it: IK at every sample, from the joints the arm has
+  /// (joint_trajectory(), re-timed where the joints' velocity limits ask), through the arm's FK.
+  std::vector<TimedPose> hand_path(const std::vector<TimedPose>& path) {
+    JointTrajectoryOptions options = options_.arm.joints;
+    options.seed = *joints_;
+    const PlanArm& arm = *problem_.arm;
+    const JointTrajectoryResult trajectory =
+        joint_trajectory(arm.model, path, arm.placement, options);
+    if (trajectory.complete()) {
+      joints_ = trajectory.q.back();
+      return hand_poses(arm, trajectory);
+    }
+    joints_.reset();
+    run_.driven_by_joints = false;
+    if (!run_.checkpoints.empty())
+      run_.checkpoints.back().message += "; the arm has no joint path to the next waypoint (" +
+                                         trajectory.message +
+                                         "): the rest is driven along the end-effector poses";
+    return path;
   }
 
   void append(const PlantRun& part) {
@@ -201,7 +227,10 @@ class Loop {
     // Commanded end-effector poses that put the real tip (commanded · offset) where the plan wants.
     rest.grasp.tip_to_end_effector =
         compose(inverse(beliefs_.acting.offset), problem_.grasp.tip_to_end_effector);
-    rest.arm.reset();  // the arm's joint trajectory is not needed to correct the rod's path
+    // The arm's own planning (its reach, IK checks and joints) is not re-run; its reach shell is
+    // kept in the workspace, and each segment's joints are solved as the arm gets there.
+    rest.arm.reset();
+    if (shell_) rest.workspace.reach = shell_;
     PlanOptions options = options_;
     options.steps = static_cast<int>(remaining_.end_effector.size());
     options.horizon = std::min(loop_.horizon, options.steps);
@@ -229,6 +258,8 @@ class Loop {
   /// How many of the remaining steps were planned with the beliefs held now (the rest were made
   /// before the last correction, beyond a re-plan's horizon).
   int fresh_ = 0;
+  std::optional<Eigen::VectorXd> joints_;       // the arm's joints at the last waypoint
+  std::optional<Workspace::ReachShell> shell_;  // the plan's reach shell
   closed_loop_detail::Beliefs beliefs_;  // the model's corrections and the grasp offset so far
   ClosedLoopRun run_;
 };

@@ -2,11 +2,12 @@
 // path, the sensor's runs, the errors at each frame.
 #include "rodshape/sim/plan_validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "rodshape/error.hpp"
-#include "rodshape/robot/arm_placement.hpp"
+#include "rodshape/sim/commanded_path.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -67,6 +68,7 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
   run.checkpoints = std::move(loop.checkpoints);
   run.events = loop.plant.events;
   run.plant_final = loop.plant.last;
+  run.driven_by_joints = loop.driven_by_joints;
   plant_run = std::move(loop.plant);
   return run;
 }
@@ -139,21 +141,6 @@ std::vector<double> frame_times(double t0, double t1, double rate) {
   return times;
 }
 
-bool drives_joints(const PlanProblem& problem, const PlanResult& plan) {
-  return problem.arm && plan.arm && plan.arm->joints.complete() && !plan.arm->joints.t.empty();
-}
-
-std::vector<TimedPose> commanded_path(const PlanProblem& problem, const PlanResult& plan) {
-  if (!drives_joints(problem, plan)) return plan.end_effector_path;
-  const JointTrajectoryResult& joints = plan.arm->joints;
-  std::vector<TimedPose> path;
-  path.reserve(joints.t.size());
-  for (std::size_t k = 0; k < joints.t.size(); ++k)
-    path.push_back(
-        {joints.t[k], end_effector_pose(problem.arm->model, problem.arm->placement, joints.q[k])});
-  return path;
-}
-
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
@@ -163,20 +150,21 @@ ValidationResult validate_plan(const PlanProblem& problem,
   sensor.validate();
   if (plan.end_effector_path.empty())
     throw InputError("PlanResult.end_effector_path", ": the plan has no path to carry out");
-  // The closed loop commands end-effector poses: its re-planned steps have no joint trajectory.
   ValidationResult result;
-  result.driven_by_joints = !options.closed_loop && drives_joints(problem, plan);
-  const std::vector<TimedPose> path =
-      result.driven_by_joints ? commanded_path(problem, plan) : plan.end_effector_path;
-  // Stage 1: the real rod. Stage 2: the plant along the commanded path, from the plan's start.
+  // Stage 1: the real rod. Stage 2 (open loop): the plant along the commanded path, from the
+  // plan's start; the runs differ in what the sensor sees. Closed loop: each run drives its own.
   result.real_rod = plant.real_rod(problem.rod);
-  result.plant =
-      drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
-                  frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
+  if (!options.closed_loop) {
+    const std::vector<TimedPose> path = commanded_path(problem, plan);
+    result.plant =
+        drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
+                    frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
+  }
   for (int k = 0; k < options.runs; ++k) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
     if (!options.closed_loop) {
       result.runs.push_back(observe_run(result, problem.target.points, sensor, seed));
+      result.runs.back().driven_by_joints = drives_joints(problem, plan);
       continue;
     }
     PlantRun plant_run;
@@ -184,6 +172,9 @@ ValidationResult validate_plan(const PlanProblem& problem,
         closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run));
     if (k == 0) result.plant = std::move(plant_run);
   }
+  result.driven_by_joints =
+      std::all_of(result.runs.begin(), result.runs.end(),
+                  [](const ValidationRun& run) { return run.driven_by_joints; });
   judge(result);
   return result;
 }

@@ -242,6 +242,7 @@ def test_a_plan_with_an_arm_has_a_joint_trajectory_within_the_limits(tmp_path):
     assert (tmp_path / "joints.png").stat().st_size > 1000
     validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_panda_s_curve.yaml")))
     assert validation.driven_by_joints
+    assert all(run.driven_by_joints for run in validation.runs)
     assert json.loads(validation.to_json())["driven_by"] == "joint_trajectory"
     no_arm = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
     assert no_arm.result.joints is None

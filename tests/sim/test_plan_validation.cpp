@@ -9,6 +9,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/sim/commanded_path.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan.hpp"
 #include "support/eigen_compare.hpp"
@@ -35,6 +36,13 @@ const PlanResult& band_plan() {
     return rodshape::plan(band_problem(), options);
   }();
   return plan;
+}
+
+/// The largest distance between the nodes of two configurations of the same rod.
+double max_node_distance(const RodConfiguration& a, const RodConfiguration& b) {
+  double distance = 0.0;
+  for (int i = 0; i < a.nodes(); ++i) distance = std::max(distance, (a.p[i] - b.p[i]).norm());
+  return distance;
 }
 
 MarkerSensorModel noiseless() {
@@ -125,12 +133,9 @@ TEST(PlanValidation, IdenticalPlantFollowsThePlanAndItsTrueErrorIsThePlans) {
   EXPECT_TRUE(result.plant.events.empty());
   // The plant's last equilibrium is the plan's last shape: the same rod held at the same pose,
   // followed on the same branch; they agree to the solvers' tolerance (residual 1e-10, scaled).
-  const RodConfiguration& planned = plan.steps.back().solution.configuration;
-  const RodConfiguration& real = result.plant.last.configuration;
-  double deviation = 0.0;
-  for (int i = 0; i < real.nodes(); ++i)
-    deviation = std::max(deviation, (real.p[i] - planned.p[i]).norm());
-  EXPECT_LT(deviation, 1e-8);
+  EXPECT_LT(
+      max_node_distance(result.plant.last.configuration, plan.steps.back().solution.configuration),
+      1e-8);
   // So the true final error is the plan's mean distance (to that tolerance).
   const ShapeCostBreakdown& cost = plan.steps.back().solution.cost;
   double mean = 0.0;
@@ -400,16 +405,29 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
   ASSERT_EQ(by_path.status, ValidationStatus::Complete) << by_path.brief();
   EXPECT_FALSE(by_path.driven_by_joints);
   // Same rod, same final pose to 1e-9 m: the same last equilibrium (residual 1e-10, scaled).
-  const RodConfiguration& a = by_joints.plant.last.configuration;
-  const RodConfiguration& b = by_path.plant.last.configuration;
-  double deviation = 0.0;
-  for (int i = 0; i < a.nodes(); ++i) deviation = std::max(deviation, (a.p[i] - b.p[i]).norm());
-  EXPECT_LT(deviation, 1e-8);
+  EXPECT_LT(max_node_distance(by_joints.plant.last.configuration, by_path.plant.last.configuration),
+            1e-8);
   EXPECT_NEAR(by_joints.runs[0].final.true_error, by_path.runs[0].final.true_error, 1e-8);
-  // The closed loop re-plans end-effector poses, which have no joint trajectory.
+  // The closed loop solves each segment's joints from the arm's as it goes: with an exact plant
+  // and noise-free markers it changes nothing, and ends on the same equilibrium.
   ValidationOptions closed;
   closed.closed_loop = true;
-  EXPECT_FALSE(validate_plan(task.problem, plan, {}, noiseless(), closed).driven_by_joints);
+  const ValidationResult loop = validate_plan(task.problem, plan, {}, noiseless(), closed);
+  ASSERT_EQ(loop.status, ValidationStatus::Complete) << loop.brief();
+  EXPECT_TRUE(loop.driven_by_joints);
+  for (const Checkpoint& c : loop.runs[0].checkpoints) EXPECT_FALSE(c.replanned) << c.message;
+  EXPECT_LT(max_node_distance(loop.plant.last.configuration, by_joints.plant.last.configuration),
+            1e-8);
+  // An arm that cannot reach the path (its base moved 1 m away after planning): the closed loop's
+  // IK fails and the plant follows the end-effector poses instead, to the same end.
+  PlanProblem moved = task.problem;
+  moved.arm->placement.world_T_base.position.x() -= 1.0;
+  const ValidationResult unreachable = validate_plan(moved, plan, {}, noiseless(), closed);
+  ASSERT_EQ(unreachable.status, ValidationStatus::Complete) << unreachable.brief();
+  EXPECT_FALSE(unreachable.driven_by_joints);
+  EXPECT_LT(
+      max_node_distance(unreachable.plant.last.configuration, by_path.plant.last.configuration),
+      1e-8);
 }
 
 }  // namespace

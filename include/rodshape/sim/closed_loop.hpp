@@ -83,6 +83,11 @@ struct ClosedLoopRun {
   std::vector<SensorFrame> frames;
   std::vector<ShapeError> errors;  // one per frame
   std::vector<Checkpoint> checkpoints;
+  /// With an arm (a plan with a complete joint trajectory), each segment is solved by IK from the
+  /// arm's joints and the plant follows the hand's poses (commanded_path.hpp). A segment without
+  /// an IK solution and the rest of the run follow the end-effector poses: false, and the
+  /// checkpoint before it says so.
+  bool driven_by_joints = false;
 };
 
 /// Carries out `plan` (of `problem`, made with `options`) on `rod` (the real one, held with

@@ -46,6 +46,9 @@ struct ValidationRun {
   std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
   std::vector<PlantEvent> events;       // the plant's, in this run
   PlantFrame plant_final;               // the plant's last equilibrium in this run
+  /// The plant followed the arm's joint trajectory through its forward kinematics (closed loop:
+  /// every segment's, by IK from the arm's joints; see ClosedLoopRun).
+  bool driven_by_joints = false;
 };
 
 enum class ValidationStatus {
@@ -60,9 +63,8 @@ struct ValidationResult {
   std::string message;
   ClampedRod real_rod;  // the plant's rod (PlantModel::real_rod of the planner's)
   PlantRun plant;       // its frames, events and last equilibrium (closed loop: the first run's)
-  /// What the open-loop plant was driven by: the arm's joint trajectory through its forward
-  /// kinematics (a plan with an arm and a complete joint trajectory), else the end-effector path.
-  /// The closed loop commands end-effector poses (its re-plans have no joint trajectory).
+  /// Every run's plant followed the arm's joint trajectory through its forward kinematics (a plan
+  /// with an arm and a complete joint trajectory; commanded_path()), else the end-effector path.
   bool driven_by_joints = false;
   std::vector<ValidationRun> runs;
   /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run".
@@ -71,14 +73,6 @@ struct ValidationResult {
 
 /// The frame times of a path from t0 to t1 at `rate`: t0 + k / rate, and t1 if not among them.
 std::vector<double> frame_times(double t0, double t1, double rate);
-
-/// Whether `plan` has an arm's complete joint trajectory (and `problem` the arm) to drive a plant.
-bool drives_joints(const PlanProblem& problem, const PlanResult& plan);
-
-/// The end-effector poses the arm really commands: world_T_ee = world_T_base · FK(q) · flange_T_ee
-/// at the joint trajectory's samples (and times, re-timed when it was slowed) when `plan` has one
-/// that is complete and `problem` has the arm; else the plan's end-effector path.
-std::vector<TimedPose> commanded_path(const PlanProblem& problem, const PlanResult& plan);
 
 /// Validates `plan` (of `problem`, with a non-empty end-effector path) on `plant` seen by
 /// `sensor`, driven along commanded_path(). Throws InputError for bad input (a plan without a path,
