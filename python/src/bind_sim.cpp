@@ -52,6 +52,11 @@ void bind_closed_loop(py::module_& m) {
       .def_readwrite("significance", &ClosedLoopOptions::significance,
                      "act on an estimate when its χ² drop exceeds k + significance·√(2k); < 0: "
                      "on every estimate")
+      .def_readwrite("max_residual", &ClosedLoopOptions::max_residual,
+                     "use an estimate only when its RMS weighted residual is at most this")
+      .def_readwrite("max_energy_ratio", &ClosedLoopOptions::max_energy_ratio,
+                     "take a re-planned step only when its energy is at most this × the replaced "
+                     "step's")
       .def_readwrite("horizon", &ClosedLoopOptions::horizon, "steps optimised per re-plan; 0: all")
       .def_readwrite("estimate_grasp_offset", &ClosedLoopOptions::estimate_grasp_offset)
       .def_readwrite("checkpoint_frames", &ClosedLoopOptions::checkpoint_frames)
@@ -79,6 +84,7 @@ void bind_closed_loop(py::module_& m) {
       .def_readonly("waypoint", &Checkpoint::waypoint)
       .def_readonly("estimate", &Checkpoint::estimate)
       .def_readonly("grasp_offset", &Checkpoint::grasp_offset)
+      .def_readonly("consistent", &Checkpoint::consistent)
       .def_readonly("significant", &Checkpoint::significant)
       .def_readonly("replanned", &Checkpoint::replanned)
       .def_readonly("message", &Checkpoint::message);

@@ -73,7 +73,8 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
 ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   loop.expect_mapping({"estimate_stiffness", "gravity", "estimate_grasp_offset", "replan",
                        "checkpoint_frames", "tip_position_sigma", "tip_rotation_sigma",
-                       "prior_sigma", "horizon", "significance", "fuse"});
+                       "prior_sigma", "horizon", "significance", "fuse", "max_residual",
+                       "max_energy_ratio"});
   ClosedLoopOptions options;
   if (const YamlField offset = loop.get("estimate_grasp_offset"); offset.present())
     options.estimate_grasp_offset = offset.boolean();
@@ -88,6 +89,8 @@ ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {
   read_number_into(loop, "tip_rotation_sigma", options.estimation.tip_rotation_sigma);
   read_number_into(loop, "prior_sigma", options.estimation.prior_sigma);
   read_number_into(loop, "significance", options.significance);
+  read_number_into(loop, "max_residual", options.max_residual);
+  read_number_into(loop, "max_energy_ratio", options.max_energy_ratio);
   if (const YamlField frames = loop.get("checkpoint_frames"); frames.present())
     options.checkpoint_frames = frames.integer();
   if (const YamlField horizon = loop.get("horizon"); horizon.present())

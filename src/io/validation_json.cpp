@@ -71,6 +71,7 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"converged", c.estimate.converged},
                     {"chi2_drop", json_number(c.estimate.prior_chi2 - c.estimate.chi2)},
                     {"parameters", c.estimate.parameters},
+                    {"consistent", c.consistent},
                     {"significant", c.significant},
                     {"replanned", c.replanned},
                     {"message", c.message}});

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "closed_loop_beliefs.hpp"
+#include "replan_gentleness.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -30,12 +32,14 @@ std::vector<double> frames_within(double t0, double t1, double rate, bool includ
 struct Remaining {
   std::vector<Pose> end_effector;
   std::vector<BaseWrench> wrench;
+  std::vector<double> energy;
   void take(const std::vector<PlanStep>& steps) {
     end_effector.clear();
     wrench.clear();
     for (const PlanStep& step : steps) {
       end_effector.push_back(step.end_effector);
       wrench.push_back(step.solution.base_wrench);
+      energy.push_back(step.solution.configuration.energy);
     }
   }
   /// The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
@@ -43,11 +47,13 @@ struct Remaining {
     for (std::size_t k = 0; k < steps.size() && k < end_effector.size(); ++k) {
       end_effector[k] = steps[k].end_effector;
       wrench[k] = steps[k].solution.base_wrench;
+      energy[k] = steps[k].solution.configuration.energy;
     }
   }
   void pop() {
     end_effector.erase(end_effector.begin());
     wrench.erase(wrench.begin());
+    energy.erase(energy.begin());
   }
 };
 
@@ -190,24 +196,36 @@ class Loop {
         estimate_state(problem_.rod, compose(commanded, beliefs_.fused.offset), end_effector, seen,
                        averaged, beliefs_.prior(planned), beliefs_.estimation(loop_, commanded),
                        beliefs_.hypothesis(planned));
-    c.significant = c.estimate.converged && significant(c.estimate);
-    if (c.estimate.converged && (c.significant || loop_.fuse))
-      beliefs_.take(c.estimate, commanded, loop_);
+    c.consistent = c.estimate.converged && c.estimate.residual <= loop_.max_residual;
+    c.significant = c.consistent && significant(c.estimate);
+    if (c.consistent && (c.significant || loop_.fuse)) beliefs_.take(c.estimate, commanded, loop_);
     if (c.significant) beliefs_.acting = beliefs_.fused;  // the rod is not as the plan believes
     c.grasp_offset = beliefs_.acting.offset;
-    c.message = c.significant || !c.estimate.converged
-                    ? "plan kept"
-                    : "plan kept: the estimate is within the noise of the plan's state";
+    c.message = kept_message(c);
     if (loop_.replan && c.significant)
       replan(c, c.estimate.base_wrench);
     else if (loop_.replan && fresh_ == 0) {  // the next step was planned with other beliefs
+      const std::string kept = c.message;
       replan(c, planned);
-      c.message =
-          "estimate within the noise of the plan's state; the next step, made before the "
-          "last correction, made again from the plan's state: " +
-          c.message;
+      c.message = kept +
+                  "; the next step, made before the last correction, made again from the plan's "
+                  "state: " +
+                  c.message;
     }
     run_.checkpoints.push_back(std::move(c));
+  }
+
+  /// Why an estimate not acted on was not.
+  std::string kept_message(const Checkpoint& c) const {
+    if (c.significant || !c.estimate.converged) return "plan kept";
+    if (!c.consistent) {
+      std::ostringstream out;
+      out.precision(3);
+      out << "plan kept: the model does not explain the markers (residual " << c.estimate.residual
+          << " > max_residual " << loop_.max_residual << "); the estimate is not used";
+      return out.str();
+    }
+    return "plan kept: the estimate is within the noise of the plan's state";
   }
 
   /// The fit's drop of χ² from the plan's state beyond k + significance · √(2k).
@@ -239,6 +257,13 @@ class Loop {
       const PlanResult again = plan(rest, options);
       c.message = again.brief(options.steps);
       if (again.status != PlanStatus::Complete) return;
+      if (const std::string coiled =
+              closed_loop_detail::not_gentle(again.steps, again.initial_configuration.energy,
+                                             remaining_.energy, loop_.max_energy_ratio);
+          !coiled.empty()) {
+        c.message = "plan kept: " + coiled + " (" + c.message + ")";
+        return;
+      }
       remaining_.replace_first(again.steps);
       fresh_ = static_cast<int>(again.steps.size());
       c.replanned = true;
@@ -270,6 +295,10 @@ void ClosedLoopOptions::validate() const {
   estimation.validate();
   if (!std::isfinite(significance))
     throw InputError("ClosedLoopOptions.significance", " must be finite");
+  if (!(max_residual > 0.0) || !std::isfinite(max_residual))
+    throw InputError("ClosedLoopOptions.max_residual", " must be finite and > 0");
+  if (!(max_energy_ratio >= 1.0) || !std::isfinite(max_energy_ratio))
+    throw InputError("ClosedLoopOptions.max_energy_ratio", " must be finite and >= 1");
   if (horizon < 0 || horizon > PlanOptions::kMaxSteps)
     throw InputError("ClosedLoopOptions.horizon", " = " + std::to_string(horizon) +
                                                       " must be in [0, " +

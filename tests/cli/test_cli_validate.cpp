@@ -90,6 +90,9 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
       {"closed_loop: {horizon: 1.5}\n", "closed_loop.horizon"},
       {"closed_loop: {fuse: 2}\n", "closed_loop.fuse"},
       {"closed_loop: {fusion: true}\n", "closed_loop.fusion: unknown key"},
+      {"closed_loop: {max_residual: 0}\n", "closed_loop.max_residual must be finite and > 0"},
+      {"closed_loop: {max_energy_ratio: 0.9}\n",
+       "closed_loop.max_energy_ratio must be finite and >= 1"},
   };
   for (const auto& [section, message] : cases) {
     SCOPED_TRACE(section);

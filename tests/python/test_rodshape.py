@@ -259,6 +259,8 @@ def test_closed_loop_options_and_checkpoints():
     first = run.checkpoints[0]
     # A 2 mm grasp offset is far beyond the averaged markers' noise: the first estimate acts.
     assert first.significant and first.replanned, first.message
+    assert first.consistent and first.estimate.residual <= task.closed_loop.max_residual == 2.0
+    assert task.closed_loop.max_energy_ratio == 1.5
     assert first.estimate.prior_chi2 - first.estimate.chi2 > 6 + 3 * np.sqrt(12)
     assert task.closed_loop.fuse
     cov = np.asarray(first.estimate.tip_covariance)
@@ -270,4 +272,8 @@ def test_closed_loop_options_and_checkpoints():
     assert not any(c.significant or c.replanned for c in kept.checkpoints)
     task.closed_loop.horizon = -1
     with pytest.raises(rodshape.InputError, match="horizon"):
+        rodshape.validate(task, closed_loop=True)
+    task.closed_loop.horizon = 1
+    task.closed_loop.max_energy_ratio = 0.5
+    with pytest.raises(rodshape.InputError, match="max_energy_ratio"):
         rodshape.validate(task, closed_loop=True)

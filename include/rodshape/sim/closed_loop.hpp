@@ -9,7 +9,9 @@
 // last correction). The static parameters (weight, stiffness scale, grasp offset) are estimated
 // recursively (`fuse`): each estimate's posterior is the next one's prior, and each estimate is
 // tested against what the plan assumes, so the checkpoints' information adds up while estimates
-// within the noise still change nothing.
+// within the noise still change nothing. Two guards: an estimate the model cannot explain
+// (`max_residual`) is not used, and a re-plan whose step is a coiled optimum, with much more energy
+// than the step it replaces (`max_energy_ratio`), is refused: the path stays gentle.
 #pragma once
 
 #include <string>
@@ -36,6 +38,16 @@ struct ClosedLoopOptions {
   /// χ²_k plus `significance` of its standard deviations). Else the plan and the beliefs are kept,
   /// and no estimate noise enters the rest of the path. < 0: act on every estimate.
   double significance = 3.0;
+  /// Use an estimate (fuse it, act on it) only when the model explains what the sensors see: its
+  /// RMS weighted residual (StateEstimate::residual, about 1 at the sensors' noise) is at most
+  /// this. A fit beyond it is a shape the model cannot represent (an unmodelled effect, a local
+  /// minimum): acting on its parameters would re-plan for a rod that is not there. > 0.
+  double max_residual = 2.0;
+  /// A re-plan is taken only when each re-planned step's shape has at most max_energy_ratio × the
+  /// elastic energy of the step it replaces (or of the state it starts from, if more). Correcting
+  /// the model changes a step's energy by about the correction (tens of percent); a larger rise is
+  /// another, coiled optimum of the step, and the path to it would not be gentle. ≥ 1.
+  double max_energy_ratio = 1.5;
   /// The steps optimised at a re-plan (PlanOptions::horizon), 0 … PlanOptions::kMaxSteps; 0: all
   /// that remain. The next waypoint is all the arm needs before the next checkpoint, and its step
   /// is the same whatever the horizon (the objective sets towards the target are the same, and the
@@ -71,6 +83,7 @@ struct Checkpoint {
   int waypoint = 0;  // 1 … n - 1: the waypoint just reached
   StateEstimate estimate;
   Pose grasp_offset;         // believed after this checkpoint (identity unless estimated)
+  bool consistent = false;   // converged and residual ≤ max_residual: the model explains the data
   bool significant = false;  // the estimate differs from the plan beyond noise (see significance)
   bool replanned = false;
   std::string message;  // the re-plan's brief, or why the plan was kept
