@@ -386,9 +386,16 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     EXPECT_EQ(task.problem.target.points.size(), name == "plan_partial_hook.yaml" ? 5u : 10u);
     EXPECT_EQ(task.options.steps, 7);
     EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_"));
+    if (name == "plan_panda_closed_loop.yaml") {  // the one with every section of `validate`
+      EXPECT_DOUBLE_EQ(task.plant.stiffness_scale, 0.85);
+      EXPECT_DOUBLE_EQ(task.plant.grasp_offset.position.x(), 0.002);
+      EXPECT_DOUBLE_EQ(task.sensor.dropout, 0.05);
+      EXPECT_TRUE(task.sensor.wrist.has_value());
+      EXPECT_TRUE(task.closed_loop.estimation.gravity.has_value());
+    }
     ++count;
   }
-  EXPECT_EQ(count, 9);
+  EXPECT_EQ(count, 10);
 }
 
 // ---- the robot section --------------------------------------------------------------------------
