@@ -142,7 +142,7 @@ void bind_outcomes(py::module_& m) {
                              [](const Validation& v) { return to_string(v.result.status); })
       .def_property_readonly("runs", [](const Validation& v) { return v.result.runs; })
       .def_property_readonly(
-          "driven_by_joints", [](const Validation& v) { return v.result.driven_by_joints; },
+          "driven_by_joints", [](const Validation& v) { return v.result.driven_by_joints(); },
           "True when the plant was driven by the arm's joint trajectory through its forward "
           "kinematics (validation.json driven_by).")
       .def("brief", [](const Validation& v) { return v.result.brief(); })

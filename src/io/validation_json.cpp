@@ -115,7 +115,7 @@ std::string validation_json(const ValidationResult& result,
       {"duration", plan.end_effector_path.empty() ? 0.0 : plan.end_effector_path.back().t}};
   j["plant"] = plant_object(result, task.plant);
   j["sensor"] = sensor_object(task.sensor);
-  j["driven_by"] = result.driven_by_joints ? "joint_trajectory" : "end_effector_path";
+  j["driven_by"] = result.driven_by_joints() ? "joint_trajectory" : "end_effector_path";
   j["plant_solves"] = result.plant.solves;
   Json runs = Json::array();
   for (const ValidationRun& run : result.runs) runs.push_back(run_object(run));

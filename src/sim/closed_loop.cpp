@@ -18,6 +18,8 @@ namespace rodshape {
 
 namespace {
 
+using closed_loop_detail::planned_waypoint;
+
 /// The frame times of the global grid k / rate within (t0, t1], and t1 itself.
 std::vector<double> frames_within(double t0, double t1, double rate, bool include_start) {
   std::vector<double> times;
@@ -27,35 +29,6 @@ std::vector<double> frames_within(double t0, double t1, double rate, bool includ
   if (times.empty() || times.back() < t1) times.push_back(t1);
   return times;
 }
-
-/// The waypoints still ahead and the planned base wrench at each (the estimator's prior).
-struct Remaining {
-  std::vector<Pose> end_effector;
-  std::vector<BaseWrench> wrench;
-  std::vector<double> energy;
-  void take(const std::vector<PlanStep>& steps) {
-    end_effector.clear();
-    wrench.clear();
-    for (const PlanStep& step : steps) {
-      end_effector.push_back(step.end_effector);
-      wrench.push_back(step.solution.base_wrench);
-      energy.push_back(step.solution.configuration.energy);
-    }
-  }
-  /// The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
-  void replace_first(const std::vector<PlanStep>& steps) {
-    for (std::size_t k = 0; k < steps.size() && k < end_effector.size(); ++k) {
-      end_effector[k] = steps[k].end_effector;
-      wrench[k] = steps[k].solution.base_wrench;
-      energy[k] = steps[k].solution.configuration.energy;
-    }
-  }
-  void pop() {
-    end_effector.erase(end_effector.begin());
-    wrench.erase(wrench.begin());
-    energy.erase(energy.begin());
-  }
-};
 
 class Loop {
  public:
@@ -76,24 +49,24 @@ class Loop {
 
   ClosedLoopRun run(const PlanResult& plan) {
     if (drives_joints(problem_, plan)) joints_ = plan.arm->joints.q.front();
-    run_.driven_by_joints = joints_.has_value();
-    if (plan.arm && plan.arm->shell) shell_ = plan.arm->shell;
-    remaining_.take(plan.steps);
+    if (plan.arm) shell_ = plan.arm->shell;
+    for (const PlanStep& step : plan.steps) remaining_.push_back(planned_waypoint(step));
     fresh_ = static_cast<int>(plan.steps.size());
     Pose from = plan.end_effector_path.front().pose;
     BaseWrench w = plan.initial_wrench;
     double t = plan.end_effector_path.front().t;
-    for (int waypoint = 1; !remaining_.end_effector.empty(); ++waypoint) {
+    for (int waypoint = 1; !remaining_.empty(); ++waypoint) {
       const PlantRun part = drive_segment(from, w, t, waypoint == 1);
       if (part.lost) break;
-      from = remaining_.end_effector.front();
+      from = remaining_.front().end_effector;
       w = part.last.base_wrench;
       t = part.last.t;
-      const BaseWrench planned = remaining_.wrench.front();
-      remaining_.pop();
+      const BaseWrench planned = remaining_.front().wrench;
+      remaining_.erase(remaining_.begin());
       fresh_ = std::max(0, fresh_ - 1);
-      if (!remaining_.end_effector.empty()) checkpoint(t, waypoint, from, planned);
+      if (!remaining_.empty()) checkpoint(t, waypoint, from, planned);
     }
+    run_.driven_by_joints = joints_.has_value();  // reset when a segment had no IK solution
     return std::move(run_);
   }
 
@@ -101,7 +74,7 @@ class Loop {
   /// The plant from `from` to the next waypoint, its frames seen and their errors recorded.
   PlantRun drive_segment(const Pose& from, const BaseWrench& w, double t, bool first) {
     std::vector<TimedPose> path =
-        time_parameterize({from, remaining_.end_effector.front()}, options_.end_effector);
+        time_parameterize({from, remaining_.front().end_effector}, options_.end_effector);
     for (TimedPose& sample : path) sample.t += t;
     if (joints_) path = hand_path(path);
     const double rate = sensor_.model().frame_rate;
@@ -130,7 +103,6 @@ class Loop {
       return hand_poses(arm, trajectory);
     }
     joints_.reset();
-    run_.driven_by_joints = false;
     if (!run_.checkpoints.empty())
       run_.checkpoints.back().message += "; the arm has no joint path to the next waypoint (" +
                                          trajectory.message +
@@ -250,21 +222,22 @@ class Loop {
     rest.arm.reset();
     if (shell_) rest.workspace.reach = shell_;
     PlanOptions options = options_;
-    options.steps = static_cast<int>(remaining_.end_effector.size());
+    options.steps = static_cast<int>(remaining_.size());
     options.horizon = std::min(loop_.horizon, options.steps);
     options.track_between_waypoints = false;
     try {
       const PlanResult again = plan(rest, options);
       c.message = again.brief(options.steps);
       if (again.status != PlanStatus::Complete) return;
-      if (const std::string coiled =
-              closed_loop_detail::not_gentle(again.steps, again.initial_configuration.energy,
-                                             remaining_.energy, loop_.max_energy_ratio);
+      if (const std::string coiled = closed_loop_detail::not_gentle(
+              again.steps, again.initial_configuration.energy, remaining_, loop_.max_energy_ratio);
           !coiled.empty()) {
         c.message = "plan kept: " + coiled + " (" + c.message + ")";
         return;
       }
-      remaining_.replace_first(again.steps);
+      // The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
+      for (std::size_t k = 0; k < again.steps.size() && k < remaining_.size(); ++k)
+        remaining_[k] = planned_waypoint(again.steps[k]);
       fresh_ = static_cast<int>(again.steps.size());
       c.replanned = true;
     } catch (const InputError& error) {
@@ -279,7 +252,7 @@ class Loop {
   MarkerSensor& sensor_;
   const ClosedLoopOptions& loop_;
   const PlantOptions& plant_;
-  Remaining remaining_;
+  std::vector<closed_loop_detail::PlannedWaypoint> remaining_;  // the waypoints still ahead
   /// How many of the remaining steps were planned with the beliefs held now (the rest were made
   /// before the last correction, beyond a re-plan's horizon).
   int fresh_ = 0;

@@ -6,13 +6,13 @@
 namespace rodshape {
 
 bool drives_joints(const PlanProblem& problem, const PlanResult& plan) {
-  return problem.arm && plan.arm && plan.arm->joints.complete() && !plan.arm->joints.t.empty();
+  return problem.arm && plan.arm && plan.arm->joints.complete();  // complete: ≥ 1 sample
 }
 
 std::vector<TimedPose> hand_poses(const PlanArm& arm, const JointTrajectoryResult& joints) {
   std::vector<TimedPose> path;
   path.reserve(joints.t.size());
-  for (std::size_t k = 0; k < joints.t.size() && k < joints.q.size(); ++k)
+  for (std::size_t k = 0; k < joints.t.size(); ++k)
     path.push_back({joints.t[k], end_effector_pose(arm.model, arm.placement, joints.q[k])});
   return path;
 }

@@ -141,6 +141,11 @@ std::vector<double> frame_times(double t0, double t1, double rate) {
   return times;
 }
 
+bool ValidationResult::driven_by_joints() const {
+  return std::all_of(runs.begin(), runs.end(),
+                     [](const ValidationRun& run) { return run.driven_by_joints; });
+}
+
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
@@ -160,11 +165,12 @@ ValidationResult validate_plan(const PlanProblem& problem,
         drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
                     frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
   }
+  const bool open_loop_by_joints = drives_joints(problem, plan);
   for (int k = 0; k < options.runs; ++k) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
     if (!options.closed_loop) {
       result.runs.push_back(observe_run(result, problem.target.points, sensor, seed));
-      result.runs.back().driven_by_joints = drives_joints(problem, plan);
+      result.runs.back().driven_by_joints = open_loop_by_joints;
       continue;
     }
     PlantRun plant_run;
@@ -172,9 +178,6 @@ ValidationResult validate_plan(const PlanProblem& problem,
         closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run));
     if (k == 0) result.plant = std::move(plant_run);
   }
-  result.driven_by_joints =
-      std::all_of(result.runs.begin(), result.runs.end(),
-                  [](const ValidationRun& run) { return run.driven_by_joints; });
   judge(result);
   return result;
 }

@@ -8,11 +8,11 @@ namespace rodshape::closed_loop_detail {
 
 std::string not_gentle(const std::vector<PlanStep>& steps,
                        double start_energy,
-                       const std::vector<double>& replaced_energy,
+                       const std::vector<PlannedWaypoint>& replaced,
                        double ratio) {
-  for (std::size_t k = 0; k < steps.size() && k < replaced_energy.size(); ++k) {
+  for (std::size_t k = 0; k < steps.size() && k < replaced.size(); ++k) {
     const double energy = steps[k].solution.configuration.energy;
-    const double reference = std::max(replaced_energy[k], start_energy);
+    const double reference = std::max(replaced[k].energy, start_energy);
     if (energy <= ratio * reference) continue;
     std::ostringstream out;
     out.precision(3);

@@ -54,13 +54,9 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
            (unknowns(options) - 6);
   }
 
-  /// x = (w, [log scale], [λ]) from the prior.
+  /// x = (w, [log scale], [λ]) at the prior's mean.
   InputType start() const {
-    InputType x(inputs());
-    x.head<6>() = prior_.base_wrench.to_vector();
-    if (scale_index_ >= 0) x(scale_index_) = std::log(prior_.stiffness_scale);
-    if (load_index_ >= 0) x(load_index_) = prior_.load_factor;
-    return x;
+    return at({prior_.base_wrench, prior_.stiffness_scale, prior_.load_factor});
   }
   /// W with Wᵀ W = Σ_tip⁻¹: W = L⁻¹ for Σ_tip = L Lᵀ, or diag(1/σ) from the two sigmas.
   static Matrix6d tip_whitening(const EstimationOptions& options) {
@@ -72,7 +68,7 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     return weights.asDiagonal();
   }
 
-  /// x at `h`.
+  /// x = (w, [log scale], [λ]) at `h`.
   InputType at(const StateHypothesis& h) const {
     InputType x(inputs());
     x.head<6>() = h.base_wrench.to_vector();

@@ -45,6 +45,16 @@ double max_node_distance(const RodConfiguration& a, const RodConfiguration& b) {
   return distance;
 }
 
+/// The paper's mismatch (docs/validation.md): 15 % softer, the weight the planner neglects, the
+/// tip held 2 mm off along its x axis.
+PlantModel paper_mismatch() {
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.gravity = {0.0, 0.0, -9.81};
+  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  return plant;
+}
+
 MarkerSensorModel noiseless() {
   MarkerSensorModel sensor;
   sensor.in_plane_noise = 0.0;
@@ -245,10 +255,7 @@ TEST(ClosedLoop, ReducesTheFinalErrorOfAMismatchedPlant) {
   // loop, the plant ends on a shape the plan did not mean; closing the loop at each waypoint
   // (estimate the wrench, the weight and the grasp offset; re-plan the rest) brings the true final
   // error well below it. Noise-free markers, so that the comparison is exact.
-  PlantModel plant;
-  plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
-  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  const PlantModel plant = paper_mismatch();
   ValidationOptions open;
   const ValidationResult open_loop =
       validate_plan(band_problem(), band_plan(), plant, noiseless(), open);
@@ -344,10 +351,7 @@ TEST(ClosedLoop, FusedEstimatesAddUpAcrossCheckpoints) {
   // beliefs the plan ends with are tighter and the plant ends nearer the points (the mean over 6
   // seeds; measured 0.16 against 0.28 mm). The posterior of the weight's factor shrinks from
   // checkpoint to checkpoint.
-  PlantModel plant;
-  plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
-  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  const PlantModel plant = paper_mismatch();
   ValidationOptions options;
   options.closed_loop = true;
   options.runs = 6;
@@ -396,14 +400,14 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
 
   const ValidationResult by_joints = validate_plan(task.problem, plan, {}, noiseless());
   ASSERT_EQ(by_joints.status, ValidationStatus::Complete) << by_joints.brief();
-  EXPECT_TRUE(by_joints.driven_by_joints);
+  EXPECT_TRUE(by_joints.driven_by_joints());
   EXPECT_EQ(by_joints.plant.solves, static_cast<int>(commanded.size()));
   PlanResult without_joints = plan;
   without_joints.arm->joints.status = JointTrajectoryStatus::NotRun;
   EXPECT_FALSE(drives_joints(task.problem, without_joints));
   const ValidationResult by_path = validate_plan(task.problem, without_joints, {}, noiseless());
   ASSERT_EQ(by_path.status, ValidationStatus::Complete) << by_path.brief();
-  EXPECT_FALSE(by_path.driven_by_joints);
+  EXPECT_FALSE(by_path.driven_by_joints());
   // Same rod, same final pose to 1e-9 m: the same last equilibrium (residual 1e-10, scaled).
   EXPECT_LT(max_node_distance(by_joints.plant.last.configuration, by_path.plant.last.configuration),
             1e-8);
@@ -414,7 +418,7 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
   closed.closed_loop = true;
   const ValidationResult loop = validate_plan(task.problem, plan, {}, noiseless(), closed);
   ASSERT_EQ(loop.status, ValidationStatus::Complete) << loop.brief();
-  EXPECT_TRUE(loop.driven_by_joints);
+  EXPECT_TRUE(loop.driven_by_joints());
   for (const Checkpoint& c : loop.runs[0].checkpoints) EXPECT_FALSE(c.replanned) << c.message;
   EXPECT_LT(max_node_distance(loop.plant.last.configuration, by_joints.plant.last.configuration),
             1e-8);
@@ -424,7 +428,7 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
   moved.arm->placement.world_T_base.position.x() -= 1.0;
   const ValidationResult unreachable = validate_plan(moved, plan, {}, noiseless(), closed);
   ASSERT_EQ(unreachable.status, ValidationStatus::Complete) << unreachable.brief();
-  EXPECT_FALSE(unreachable.driven_by_joints);
+  EXPECT_FALSE(unreachable.driven_by_joints());
   EXPECT_LT(
       max_node_distance(unreachable.plant.last.configuration, by_path.plant.last.configuration),
       1e-8);
@@ -438,9 +442,7 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
 // replaces is refused, and the run ends within a millimetre, like the other seeds.
 TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
   PlanTask task = read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_c_arc.yaml");
-  task.plant.stiffness_scale = 0.85;
-  task.plant.gravity = {0.0, 0.0, -9.81};
-  task.plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  task.plant = paper_mismatch();
   task.plant.rest_curvature = Eigen::Vector3d(0.5, 0.3, 0.0);
   task.plant.factors.EIx = 1.2;
   task.plant.factors.EIy = 0.9;
@@ -455,7 +457,7 @@ TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
   const ValidationResult result =
       validate_plan(task.problem, plan, task.plant, task.sensor, options);
   ASSERT_EQ(result.status, ValidationStatus::Complete) << result.brief();
-  EXPECT_LT(result.runs[0].final.true_error, 1e-3);
+  EXPECT_LT(result.runs[0].final.true_error, 1e-3);  // issue 10's aim
   for (const Checkpoint& c : result.runs[0].checkpoints) EXPECT_TRUE(c.consistent) << c.message;
   // Without the test, the plant bent towards the coiled step is a shape the model cannot explain
   // (residuals of 50-70 σ): those estimates are neither fused nor acted on (max_residual).
@@ -472,7 +474,7 @@ TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
         << c.message;
   }
   EXPECT_GT(inconsistent, 0);
-  EXPECT_GT(coiled.runs[0].final.true_error, 5e-3);
+  EXPECT_GT(coiled.runs[0].final.true_error, 1e-3);  // beyond issue 10's aim
 }
 
 }  // namespace

@@ -63,10 +63,10 @@ struct ValidationResult {
   std::string message;
   ClampedRod real_rod;  // the plant's rod (PlantModel::real_rod of the planner's)
   PlantRun plant;       // its frames, events and last equilibrium (closed loop: the first run's)
+  std::vector<ValidationRun> runs;
   /// Every run's plant followed the arm's joint trajectory through its forward kinematics (a plan
   /// with an arm and a complete joint trajectory; commanded_path()), else the end-effector path.
-  bool driven_by_joints = false;
-  std::vector<ValidationRun> runs;
+  bool driven_by_joints() const;
   /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run".
   std::string brief() const;
 };
