@@ -36,6 +36,10 @@ struct ArmModel::Impl {
   std::string robot_name;
   std::string base_link;
   std::string tip_link;
+  // The chain as read, never evaluated: KDL's Joint::pose() and Segment::pose() cache the last pose
+  // in mutable members, so evaluating one chain from two threads is a data race (copies of an
+  // ArmModel share this Impl). Every evaluation works on its own copy (evaluable_chain()); copying
+  // only reads these members, which nothing ever writes here.
   KDL::Chain chain;
   std::vector<JointInfo> joints;
   double reach = 0.0;
@@ -247,6 +251,9 @@ Pose to_pose(const KDL::Frame& frame) {
   return pose;
 }
 
+/// A copy of `prototype` that this call alone evaluates (see ArmModel::Impl::chain).
+KDL::Chain evaluable_chain(const KDL::Chain& prototype) { return prototype; }
+
 KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
   KDL::JntArray array(static_cast<unsigned>(q.size()));
   array.data = q;
@@ -376,7 +383,8 @@ Eigen::VectorXd ArmModel::clamp_to_limits(const Eigen::VectorXd& q) const {
 
 Pose ArmModel::forward_kinematics(const Eigen::VectorXd& q) const {
   check_size(q, "q");
-  KDL::ChainFkSolverPos_recursive solver(impl_->chain);
+  const KDL::Chain chain = evaluable_chain(impl_->chain);
+  KDL::ChainFkSolverPos_recursive solver(chain);
   KDL::Frame base_T_tip;
   const int code = solver.JntToCart(to_kdl(q), base_T_tip);
   if (code < 0) throw RodshapeError("KDL forward kinematics failed: " + std::to_string(code));
@@ -387,7 +395,8 @@ void ArmModel::forward_kinematics(const Eigen::VectorXd& q,
                                   Pose& base_T_tip,
                                   Eigen::Matrix<double, 6, Eigen::Dynamic>& J_twist_q) const {
   base_T_tip = forward_kinematics(q);
-  KDL::ChainJntToJacSolver solver(impl_->chain);
+  const KDL::Chain chain = evaluable_chain(impl_->chain);
+  KDL::ChainJntToJacSolver solver(chain);
   KDL::Jacobian jacobian(static_cast<unsigned>(joints()));
   const int code = solver.JntToJac(to_kdl(q), jacobian);
   if (code < 0) throw RodshapeError("KDL Jacobian failed: " + std::to_string(code));
@@ -401,8 +410,9 @@ std::vector<JointAxis> ArmModel::joint_axes(const Eigen::VectorXd& q) const {
   axes.reserve(impl_->joints.size());
   KDL::Frame base_T_parent = KDL::Frame::Identity();  // the frame the next segment hangs from
   int j = 0;
-  for (unsigned i = 0; i < impl_->chain.getNrOfSegments(); ++i) {
-    const KDL::Segment& segment = impl_->chain.getSegment(i);
+  const KDL::Chain chain = evaluable_chain(impl_->chain);
+  for (unsigned i = 0; i < chain.getNrOfSegments(); ++i) {
+    const KDL::Segment& segment = chain.getSegment(i);
     const KDL::Joint& joint = segment.getJoint();
     double q_segment = 0.0;
     if (joint.getType() != KDL::Joint::Fixed) {

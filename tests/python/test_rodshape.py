@@ -124,6 +124,17 @@ def test_plans_in_threads_equal_plans_in_series():
     assert parallel == serial
 
 
+def test_one_arm_task_planned_from_threads_equals_the_serial_plan():
+    # Issue 24 item 1: the threads share the task's arm model (copies of one KDL description); each
+    # evaluation must work on its own chain, or results differ (the reach shell off by centimetres).
+    task = rodshape.load_task(str(EXAMPLES / "plan_panda_s_curve.yaml"))
+    serial = rodshape.plan(task).to_json()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=3) as pool:
+        parallel = list(pool.map(lambda _: rodshape.plan(task).to_json(), range(6)))
+    for result in parallel:
+        assert result == serial
+
+
 def test_plan_result_arrays():
     plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
     assert plan.status == "complete"
