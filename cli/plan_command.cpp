@@ -38,6 +38,10 @@ int report_status(const std::string& task_path, const PlanResult& result) {
       std::cerr << "error: " << task_path
                 << ": snap-through: " << fields_in_task_names(result.message) << "\n";
       return kPartialPlan;
+    case PlanStatus::Collision:
+      std::cerr << "error: " << task_path << ": collision: " << fields_in_task_names(result.message)
+                << "\n";
+      return kPartialPlan;
     case PlanStatus::Partial:
       std::cerr << "error: " << task_path
                 << ": partial plan: " << fields_in_task_names(result.message) << "; wrote the "

@@ -39,4 +39,8 @@ void CrossSection::validate(const std::string& field) const {
   }
 }
 
+double CrossSection::circumscribed_radius() const {
+  return shape == Shape::Rectangle ? 0.5 * std::hypot(width, height) : radius;
+}
+
 }  // namespace rodshape

@@ -9,7 +9,9 @@
 #include <string>
 
 #include "io/yaml_field.hpp"
+#include "rodshape/core/cross_section.hpp"
 #include "rodshape/core/pose.hpp"
+#include "rodshape/core/scene.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
 #include "rodshape/optimisation/shape_optimiser.hpp"
@@ -56,6 +58,12 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options);
 
 /// `optimizer`: max_iterations, tolerance, constraint_tolerance, multi_starts, print_level.
 void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options);
+
+/// `scene`: clearance, margin and reach (into `options`), obstacles (a list of {shape, name, and
+/// the shape's fields}). Needs the rod's section (its circumscribed radius is the rod's).
+Scene read_scene_section(const YamlField& scene,
+                         const std::optional<CrossSection>& section,
+                         PlanOptions& options);
 
 /// `robot`: urdf (relative to `task_directory` unless absolute), base_link, tip_link, base (a
 /// pose), flange_to_end_effector (a pose), seed (joint positions). Reads the URDF; its errors are

@@ -46,6 +46,7 @@ const std::vector<io_detail::KeyHint>& equilibrium_hints() {
       {"trajectory", "trajectory is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"optimizer", "optimizer is a section of plan tasks (rodshape plan); equilibrium has solver"},
       {"robot", "robot is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"scene", "scene is a section of plan tasks (rodshape plan), not of equilibrium"},
   };
   return hints;
 }
@@ -57,7 +58,7 @@ const std::vector<std::string_view>& plan_sections() {
       "workspace", "grasp",         "initial",
       "limits",    "wrench_bounds", "trajectory",
       "optimizer", "robot",         "plant",
-      "sensor",    "closed_loop"};
+      "sensor",    "closed_loop",   "scene"};
   return sections;
 }
 
@@ -73,11 +74,14 @@ const std::vector<io_detail::KeyHint>& plan_hints() {
   return hints;
 }
 
-/// The sections both commands share: rod, gravity, distributed_load, base.
-ClampedRod read_clamped_rod(const YamlField& root) {
+/// The sections both commands share: rod, gravity, distributed_load, base. The rod's section, when
+/// given, into `section` (a scene needs it).
+ClampedRod read_clamped_rod(const YamlField& root,
+                            std::optional<CrossSection>* section_out = nullptr) {
   ClampedRod rod;
   const YamlField rod_field = root.require("rod");
   const io_detail::RodSection section = io_detail::read_rod_section(rod_field);
+  if (section_out != nullptr) *section_out = section.description.section;
   rod.properties = io_detail::build_rod_properties(section, rod_field);
   rod.intervals = section.nodes - 1;
   rod.load = io_detail::read_distributed_load(root, section);
@@ -137,7 +141,8 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   task.source = source_name;
   task.lines = root.key_lines(2);
   PlanProblem& problem = task.problem;
-  problem.rod = read_clamped_rod(root);
+  std::optional<CrossSection> section;
+  problem.rod = read_clamped_rod(root, &section);
   if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
     root.get("rod").get("nodes").fail_value(
         "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
@@ -171,6 +176,8 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     task.sensor = io_detail::read_sensor_section(sensor);
   if (const YamlField loop = root.get("closed_loop"); loop.present())
     task.closed_loop = io_detail::read_closed_loop_section(loop);
+  if (const YamlField scene = root.get("scene"); scene.present())
+    problem.scene = io_detail::read_scene_section(scene, section, task.options);
   if (const YamlField robot = root.get("robot"); robot.present()) {
     io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
                                   task);

@@ -142,6 +142,7 @@ bool accept(const ClampedRod& rod,
     state.stability = assess_stability(with_substeps(rod_at(rod, path, sigma), solved.summary),
                                        solved.configuration);
   const bool unstable = state.stability && !state.stability->stable && !state.stability->degenerate;
+  if (options.observer) options.observer(sigma, solved.configuration);
   result.sigma = sigma;
   result.base_wrench = solved.base_wrench;
   result.configuration = std::move(solved.configuration);

@@ -3,12 +3,15 @@
 #include "rodshape/trajectory/plan.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
 #include "arm_replanning.hpp"
 #include "plan_stages.hpp"
+#include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "scene_stages.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -22,6 +25,12 @@ void PlanOptions::validate() const {
   optimiser.validate();
   end_effector.validate();
   arm.validate();
+  detail::require_non_negative("PlanOptions.scene_margin", scene_margin);
+  if (scene_margin > kMaxSceneMargin)
+    throw InputError("PlanOptions.scene_margin",
+                     " = " + detail::format_value(scene_margin) +
+                         " must be <= " + detail::format_value(kMaxSceneMargin));
+  detail::require_positive("PlanOptions.scene_reach", scene_reach);
 }
 
 void PlanProblem::validate() const {
@@ -37,6 +46,8 @@ void PlanProblem::validate() const {
     detail::require_finite("PlanProblem.initial.base_wrench.force", initial.base_wrench.force);
     detail::require_finite("PlanProblem.initial.base_wrench.moment", initial.base_wrench.moment);
   }
+  scene.validate();
+  scene.check_clamp(rod.clamp.position);
 }
 
 std::string to_string(ObjectiveInterpolation interpolation) {
@@ -61,6 +72,8 @@ std::string to_string(PlanStatus status) {
       return "partial";
     case PlanStatus::Infeasible:
       return "infeasible";
+    case PlanStatus::Collision:
+      return "collision";
   }
   return "unknown";
 }
@@ -91,6 +104,11 @@ std::string PlanResult::brief(int steps_requested) const {
     }
     if (tracking.jump) out << "; tracking: " << tracking.note;
   }
+  if (scene && std::isfinite(scene->min_gap)) {
+    out << "; least gap to the scene " << std::setprecision(3) << scene->min_gap * 1e3
+        << " mm (obstacle " << scene->obstacle_label << ", clearance " << scene->clearance * 1e3
+        << " mm)";
+  }
   if (arm && arm->shell) {
     out << "; reach shell " << std::setprecision(3) << arm->shell->inner_radius << "–"
         << arm->shell->outer_radius << " m";
@@ -115,26 +133,78 @@ struct StepLoop {
   ObjectivePath path;
   std::vector<ObjectiveSet> pending;
   StepHistory history;
-  Pose from;             // the last waypoint (the tracked rod's end-effector pose)
-  BaseWrench tracked;    // the tracked rod's base wrench there
-  bool tracking = true;  // false past a jump: following the plan then means nothing
+  Pose from;                     // the last waypoint (the tracked rod's end-effector pose)
+  BaseWrench tracked;            // the tracked rod's base wrench there
+  bool tracking = true;          // false past a jump: following the plan then means nothing
+  std::vector<double> required;  // with a scene: the gap each obstacle requires
 };
 
+/// One step's optimum. With a scene, its optimisation keeps the rod clear of the obstacles near
+/// its start and its points; an obstacle the optimum then comes too near to joins them and the
+/// step is solved again (a few rounds at most: each adds at least one obstacle).
+ShapeResult solve_step(const PlanProblem& problem,
+                       const PlanOptions& options,
+                       const ShapeTarget& target,
+                       ShapeProblem& unconstrained,
+                       const BaseWrench& start,
+                       const StepLoop& loop,
+                       PlanResult& result) {
+  if (problem.scene.empty())
+    return optimise_step(problem, target, unconstrained, start, options.optimiser);
+  constexpr int kMaxRounds = 4;
+  const RodConfiguration start_shape = integrate(problem.rod, start, Derivatives::None);
+  const double margin = options.scene_margin * problem.scene.clearance;
+  std::vector<int> forced;
+  for (int round = 1;; ++round) {
+    const Clearance clearance =
+        scene_stages::step_clearance(problem.scene, loop.required, start_shape, target.points,
+                                     options.scene_reach, margin, forced);
+    ShapeResult solution =
+        optimise_step(problem, target, unconstrained, start, options.optimiser, clearance);
+    const std::vector<int> violated =
+        solution.converged() ? scene_stages::violated_obstacles(problem.scene, loop.required,
+                                                                solution.configuration, clearance)
+                             : std::vector<int>{};
+    if (violated.empty() || round == kMaxRounds) {
+      result.scene->obstacles_per_step.push_back(
+          static_cast<int>(clearance.scene.obstacles.size()));
+      return solution;
+    }
+    forced.insert(forced.end(), violated.begin(), violated.end());
+  }
+}
+
+/// Keeps the least gap of a tracked segment (step `step`, 1-based) in the plan's scene result.
+void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& gap, int step) {
+  SceneResult& scene = *result.scene;
+  if (!(gap.margin < scene.margin)) return;
+  scene.min_gap = gap.gap;
+  scene.margin = gap.margin;
+  scene.step = step;
+  scene.s = (gap.segment + gap.t) * problem.rod.step();
+  scene.obstacle = gap.obstacle;
+  scene.obstacle_label =
+      problem.scene.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
+}
+
 /// Steps 3–6: one optimal shape per objective set, each warm-started from the last and tracked
-/// from the last waypoint; where the rod would jump, a set halfway is inserted and the segment
-/// planned again. Returns false when a step's optimisation fails (the plan is then Partial).
+/// from the last waypoint; where the rod would jump, or come nearer to an obstacle than the
+/// clearance, a set halfway is inserted and the segment planned again. Returns false when a
+/// step's optimisation fails (the plan is then Partial).
 bool plan_steps(const PlanProblem& problem,
                 const PlanOptions& options,
                 StepLoop& loop,
                 PlanResult& result) {
+  const bool scene = !problem.scene.empty();
   for (std::size_t next = 0; next < loop.pending.size();) {
     const ObjectiveSet& set = loop.pending[next];
     ShapeTarget target = problem.target;
-    target.points = set.points;
+    target.points =
+        scene ? scene_stages::clear_of_scene(problem.scene, loop.required, set.points) : set.points;
     ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                                problem.wrench_bounds);
     const BaseWrench start = warm_start(unconstrained, loop.history, set.fraction);
-    ShapeResult solution = optimise_step(problem, target, unconstrained, start, options.optimiser);
+    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
     const int number = static_cast<int>(result.steps.size()) + 1;
     if (!solution.converged()) {
       result.status = PlanStatus::Partial;
@@ -145,17 +215,20 @@ bool plan_steps(const PlanProblem& problem,
     }
     const Pose end_effector =
         compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
-    PlanStep step{set.fraction, set.inserted, set.points, std::move(solution), end_effector};
+    PlanStep step{set.fraction, set.inserted, target.points, std::move(solution), end_effector};
     if (loop.tracking) {
-      const SegmentTracking segment =
-          track_segment(problem, options, loop.from, loop.tracked, step, number);
-      if (segment.jump && result.tracking.refinements < options.max_refinements) {
+      const SegmentTracking segment = track_segment(problem, options, loop.from, loop.tracked, step,
+                                                    number, scene ? &loop.required : nullptr);
+      if ((segment.jump || segment.collision) &&
+          result.tracking.refinements < options.max_refinements) {
         const ObjectiveSet half = halfway_set(loop.path, loop.history.f_last, set);
         loop.pending.insert(loop.pending.begin() + static_cast<std::ptrdiff_t>(next), half);
         ++result.tracking.refinements;
         continue;
       }
       record(result.tracking, segment, static_cast<int>(result.steps.size()));
+      if (segment.gap) record_gap(result, problem, *segment.gap, number);
+      if (segment.collision && result.scene->note.empty()) result.scene->note = segment.note;
       if (segment.jump) loop.tracking = false;
       loop.tracked = segment.arrived;
       loop.from = end_effector;
@@ -165,6 +238,27 @@ bool plan_steps(const PlanProblem& problem,
     ++next;
   }
   return true;
+}
+
+/// With a scene: the gaps the obstacles require, and the initial shape's gap (bad input when the
+/// rod starts nearer to an obstacle than that).
+void start_scene(const PlanProblem& problem,
+                 const RodConfiguration& initial,
+                 StepLoop& loop,
+                 PlanResult& result) {
+  loop.required = problem.scene.required_gaps(problem.rod.clamp.position);
+  result.scene = SceneResult{};
+  result.scene->clearance = problem.scene.clearance;
+  const SceneGap gap = problem.scene.least_gap(initial.p, loop.required);
+  record_gap(result, problem, gap, 0);
+  if (!result.scene->clear()) {
+    std::ostringstream out;
+    out.precision(3);
+    out << ": the initial rod comes within " << gap.gap * 1e3 << " mm of obstacle "
+        << result.scene->obstacle_label << " at s = " << result.scene->s << " m (required "
+        << (gap.gap - gap.margin) * 1e3 << " mm)";
+    throw InputError("PlanProblem.initial", out.str());
+  }
 }
 
 /// The tracking's closing note.
@@ -188,6 +282,17 @@ PlanResult plan_rod(const PlanProblem& problem,
   // 2. Is the target within reach at all?
   result.feasibility =
       check_feasibility(problem.target, problem.rod, problem.limits.max_axial_strain.value_or(0.0));
+  StepLoop loop;
+  if (!problem.scene.empty()) {
+    start_scene(problem, initial.configuration, loop, result);
+    if (result.feasibility.feasible) {
+      if (const auto blocked =
+              scene_stages::target_clear(problem.scene, loop.required, problem.target.points)) {
+        result.feasibility.feasible = false;
+        result.feasibility.reason = *blocked;
+      }
+    }
+  }
   if (!result.feasibility.feasible) {
     result.status = PlanStatus::Infeasible;
     result.message = result.feasibility.reason;
@@ -196,7 +301,6 @@ PlanResult plan_rod(const PlanProblem& problem,
   // 3. p_init on the initial shape, and the sets.
   result.initial_points =
       plan_stages::initial_points(problem, options, initial, result.feasibility);
-  StepLoop loop;
   loop.path = {problem.rod.clamp.position, result.initial_points, problem.target.points,
                options.interpolation};
   loop.pending = objective_sets(loop.path, options.steps);
@@ -218,6 +322,10 @@ PlanResult plan_rod(const PlanProblem& problem,
     result.status = PlanStatus::SnapThrough;
     result.message = "the rod would not follow the plan towards waypoint " +
                      std::to_string(result.tracking.jump_step + 1) + ": " + result.tracking.note;
+  }
+  if (result.status == PlanStatus::Complete && result.scene && !result.scene->clear()) {
+    result.status = PlanStatus::Collision;
+    result.message = "the rod would not stay clear of the scene: " + result.scene->note;
   }
   // 7. The timed end-effector path through the waypoints.
   result.end_effector_path =
@@ -255,6 +363,10 @@ void check_plan_cost(const PlanProblem& problem, const PlanOptions& options) {
 PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
   options.validate();
   problem.validate();
+  if (!problem.scene.empty() && !options.track_between_waypoints)
+    throw InputError("PlanOptions.track_between_waypoints",
+                     " must be true with a scene: the rod is checked clear of it between "
+                     "waypoints by following it");
   check_plan_cost(problem, options);
   if (problem.arm) return detail::plan_with_arm(problem, options);
   return detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));

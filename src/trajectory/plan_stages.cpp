@@ -160,13 +160,14 @@ ShapeResult optimise_step(const PlanProblem& problem,
                           const ShapeTarget& target,
                           ShapeProblem& unconstrained,
                           const BaseWrench& start,
-                          const ShapeOptimiserOptions& options) {
+                          const ShapeOptimiserOptions& options,
+                          const Clearance& clearance) {
   ShapeResult solution = optimise_shape(unconstrained, start, options);
   const bool has_inequalities = !problem.workspace.unbounded() || problem.limits.max_curvature ||
-                                problem.limits.max_axial_strain;
+                                problem.limits.max_axial_strain || !clearance.empty();
   if (!has_inequalities) return solution;
   ShapeProblem full(problem.rod, target, problem.workspace, problem.grasp, problem.limits,
-                    problem.wrench_bounds);
+                    problem.wrench_bounds, clearance);
   if (solution.converged()) {
     // The inequalities hold at the unconstrained optimum: it is a local optimum of the full
     // problem too, with multipliers 0.
@@ -186,12 +187,20 @@ SegmentTracking track_segment(const PlanProblem& problem,
                               const Pose& from,
                               const BaseWrench& w,
                               const PlanStep& step,
-                              int waypoint) {
+                              int waypoint,
+                              const std::vector<double>* required) {
   constexpr double kJumpDeviation = 1e-3;  // m
   FollowOptions follow;
   follow.substeps = options.tracking_substeps;
   follow.final_derivatives = Derivatives::AllNodes;  // for the stability test on arrival
   follow.arrival_stability = true;
+  std::optional<SceneGap> least;
+  if (required != nullptr) {
+    follow.observer = [&](double, const RodConfiguration& c) {
+      const SceneGap gap = problem.scene.least_gap(c.p, *required);
+      if (!least || gap.margin < least->margin) least = gap;
+    };
+  }
   const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
   const Pose to = step.end_effector;
   const Grasp& grasp = problem.grasp;
@@ -204,6 +213,8 @@ SegmentTracking track_segment(const PlanProblem& problem,
                                                    &step.solution.configuration, kJumpDeviation);
   SegmentTracking segment;
   segment.jump = !followed.followed();
+  segment.gap = least;
+  segment.collision = least && !(least->margin >= -SceneResult::kTolerance);
   for (const FollowedState& state : followed.states) {
     segment.peak_energy = std::max(segment.peak_energy, state.energy);
     segment.peak_curvature = std::max(segment.peak_curvature, state.max_curvature);
@@ -226,6 +237,16 @@ SegmentTracking track_segment(const PlanProblem& problem,
   } else if (followed.event == FollowEvent::Unstable)
     segment.note =
         "the tracked equilibrium at waypoint " + std::to_string(waypoint) + " is unstable";
+  if (segment.collision && segment.note.empty()) {
+    const Obstacle& obstacle = problem.scene.obstacles[static_cast<std::size_t>(least->obstacle)];
+    std::ostringstream out;
+    out.precision(3);
+    out << "on the way to waypoint " << waypoint << " the rod comes within " << least->gap * 1e3
+        << " mm of obstacle " << obstacle.label(least->obstacle)
+        << " at s = " << (least->segment + least->t) * problem.rod.step() << " m (required "
+        << (least->gap - least->margin) * 1e3 << " mm)";
+    segment.note = out.str();
+  }
   return segment;
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "rodshape/core/scene.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -70,11 +71,14 @@ BaseWrench warm_start(ShapeProblem& unconstrained, const StepHistory& history, d
 /// 4. One step's optimum: first without the inequalities (workspace, strain limits), which are
 /// inactive for most steps and whose barrier terms would still bend the interior-point path; if
 /// its optimum violates them, the full problem from the warm start, then from that optimum.
+/// With a scene, `clearance` holds the step's obstacles (scene_stages::step_clearance): a block of
+/// the full problem.
 ShapeResult optimise_step(const PlanProblem& problem,
                           const ShapeTarget& target,
                           ShapeProblem& unconstrained,
                           const BaseWrench& start,
-                          const ShapeOptimiserOptions& options);
+                          const ShapeOptimiserOptions& options,
+                          const Clearance& clearance = {});
 
 /// 5. The held rod followed from the end-effector pose `from` (base wrench `w`) to `step`'s
 /// waypoint, and compared on arrival with the planned shape: farther than 1 mm, unstable, or lost
@@ -86,14 +90,19 @@ struct SegmentTracking {
   double peak_energy = 0.0;     // over the followed substeps, J
   double peak_curvature = 0.0;  // over the followed substeps, 1/m
   std::optional<double> energy_released;  // on another branch: planned minus arrived energy, J
+  /// With a scene: the least gap over the substeps, and whether it is below the required one.
+  std::optional<SceneGap> gap;
+  bool collision = false;
   std::string note;
 };
+/// With `scene` and `required` (Scene::required_gaps), the gap of every substep is measured.
 SegmentTracking track_segment(const PlanProblem& problem,
                               const PlanOptions& options,
                               const Pose& from,
                               const BaseWrench& w,
                               const PlanStep& step,
-                              int waypoint);
+                              int waypoint,
+                              const std::vector<double>* required = nullptr);
 /// Adds a segment to the tracking result (its first jump is the result's).
 void record(TrackingResult& tracking, const SegmentTracking& segment, int step_index);
 

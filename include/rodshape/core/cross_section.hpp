@@ -26,6 +26,10 @@ struct CrossSection {
   /// Saint-Venant's series, J = a b³ (1/3 - 0.21 (b/a)(1 - b⁴/(12 a⁴))), a ≥ b, which is within
   /// 0.5%.
   double torsion_constant() const;
+  /// The radius of the circle around the section: half the rectangle's diagonal, the circle's
+  /// radius. The rod's surface lies within it of the centreline (a scene's clearance is kept by
+  /// it).
+  double circumscribed_radius() const;
 
   /// Throws InputError naming `field` (e.g. "rod.section") when a dimension is not finite and > 0.
   void validate(const std::string& field = "CrossSection") const;

@@ -1,15 +1,21 @@
 // shape_problem.hpp: the paper's optimisation over the base wrench w = (n(0), m(0)):
 //   min_w F(w) = W1/(2L) ∫ (Δvᵀ K_tra Δv + Δuᵀ K_rot Δu) ds + W2 Σᵢ dist(Γ, p_obj,i)
-//   s.t. (p(L), R(L)) ∈ Ws, grasp wrench components = 0, strain limits, w_lower ≤ w ≤ w_upper,
+//   s.t. (p(L), R(L)) ∈ Ws, grasp wrench components = 0, strain limits, clearance to the scene,
+//        w_lower ≤ w ≤ w_upper,
 // with F, g and their exact first derivatives from one integration with all-node derivatives.
+// g is a stack of named constraint blocks (constraint_block.hpp), one per kind of constraint.
 // Note W1/(2L) ∫ (…) ds = W1 E / L with E the elastic energy.
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/scene.hpp"
+#include "rodshape/optimisation/constraint_block.hpp"
 #include "rodshape/optimisation/curve_distance.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
@@ -27,6 +33,18 @@ struct ShapeCostBreakdown {
   double max_distance = 0.0;
 };
 
+/// The obstacles a shape keeps its rod clear of (for a plan's step: those near its rod, chosen
+/// once, so that the rows stay fixed) and the gap each one requires (Scene::required_gaps, or
+/// more).
+struct Clearance {
+  Scene scene;
+  std::vector<double> required;  // one per scene obstacle, m
+  std::vector<int> indices;      // optional: each obstacle's index in a larger scene (messages)
+  bool empty() const { return scene.empty(); }
+  /// Throws InputError naming "Clearance.required" when the sizes differ or a gap is not finite.
+  void validate() const;
+};
+
 class ShapeProblem {
  public:
   /// Validates everything (InputError naming the field) and sizes every buffer once.
@@ -35,14 +53,25 @@ class ShapeProblem {
                Workspace workspace = {},
                Grasp grasp = {},
                StrainLimits limits = {},
-               WrenchBounds wrench_bounds = {});
+               WrenchBounds wrench_bounds = {},
+               Clearance clearance = {});
+  ShapeProblem(const ShapeProblem& other);
+  ShapeProblem& operator=(const ShapeProblem&) = delete;
+  ShapeProblem(ShapeProblem&&) noexcept = default;
+  ~ShapeProblem();
 
-  /// How many rows of g each block has; the blocks follow each other in this order (see
-  /// shape_problem.cpp): workspace (on the tip pose), grasp (one per released entry), curvature
-  /// (one per node), axial strain (one per node, Cosserat only).
+  /// How many rows of g each block has; the blocks follow each other in this order:
+  /// workspace (on the tip pose), grasp (one per released entry), curvature (one per node), axial
+  /// strain (one per node, Cosserat only), clearance (one per obstacle and segment).
   struct RowBlocks {
-    int workspace = 0, grasp = 0, curvature = 0, axial = 0;
+    int workspace = 0, grasp = 0, curvature = 0, axial = 0, clearance = 0;
   };
+  /// The blocks in their order, each with the first row it owns.
+  struct BlockRows {
+    std::string name;
+    int first = 0, count = 0;
+  };
+  std::vector<BlockRows> blocks() const;
 
   int constraint_count() const { return constraint_count_; }
   const RowBlocks& row_blocks() const { return rows_; }
@@ -52,6 +81,7 @@ class ShapeProblem {
   const Workspace& workspace() const { return workspace_; }
   const Grasp& grasp() const { return grasp_; }
   const WrenchBounds& wrench_bounds() const { return wrench_bounds_; }
+  const Clearance& clearance() const { return clearance_; }
   /// lower ≤ g(w) ≤ upper.
   const Eigen::VectorXd& constraint_lower() const { return g_lower_; }
   const Eigen::VectorXd& constraint_upper() const { return g_upper_; }
@@ -82,6 +112,8 @@ class ShapeProblem {
   Grasp grasp_;
   StrainLimits limits_;
   WrenchBounds wrench_bounds_;
+  Clearance clearance_;
+  std::vector<std::unique_ptr<ConstraintBlock>> blocks_;
   RowBlocks rows_;
   int constraint_count_ = 0;
   Eigen::VectorXd g_lower_, g_upper_;
@@ -97,10 +129,6 @@ class ShapeProblem {
   Eigen::MatrixXd dg_dw_;
   void evaluate_cost();
   void evaluate_constraints();
-
-  // scratch for the workspace rows
-  Eigen::MatrixXd workspace_dg_dp_;
-  Eigen::MatrixXd workspace_dg_dtheta_;
 };
 
 }  // namespace rodshape

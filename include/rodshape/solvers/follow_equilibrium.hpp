@@ -61,6 +61,9 @@ struct FollowOptions {
   bool stability_every_substep = false;
   /// Assess the stability of the last configuration (needs final_derivatives = AllNodes).
   bool arrival_stability = false;
+  /// Called with every accepted substep's σ and equilibrium (e.g. to measure its gap to a scene);
+  /// empty: nothing is called.
+  std::function<void(double sigma, const RodConfiguration&)> observer;
   /// Throws InputError naming the field ("FollowOptions.substeps = 0 must be >= 1").
   void validate() const;
 };

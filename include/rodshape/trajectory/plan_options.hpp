@@ -69,6 +69,15 @@ struct PlanOptions {
   /// Where the tracked rod does not arrive on the planned shape (a jump), a step is inserted
   /// halfway between the two objective sets and the segment re-planned, at most this many times.
   int max_refinements = 4;
+  /// With a scene: each step's optimisation asks of every obstacle its required gap plus this
+  /// fraction of the clearance (0 … kMaxSceneMargin), room for the rod between waypoints, which
+  /// is checked against the clearance itself.
+  double scene_margin = 0.2;
+  static constexpr double kMaxSceneMargin = 10.0;
+  /// With a scene: a step's optimisation includes the obstacles within this distance of its
+  /// start shape or its objective points (m, > 0; obstacles it then comes too near to are added
+  /// and the step solved again).
+  double scene_reach = 0.1;
   ArmPlanOptions arm;  // used when the problem has an arm
   /// Throws InputError naming the field ("PlanOptions.steps", "PlanOptions.max_refinements" etc.).
   void validate() const;

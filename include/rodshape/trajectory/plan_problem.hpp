@@ -10,6 +10,7 @@
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/scene.hpp"
 #include "rodshape/core/wrench.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
@@ -62,9 +63,11 @@ struct PlanProblem {
   ModelValidityLimits validity;
   WrenchBounds wrench_bounds;
   InitialState initial;
+  /// The cell's obstacles, kept clear of by every step and between steps (empty: none).
+  Scene scene;
   std::optional<PlanArm> arm;
-  /// Throws InputError naming the field (rod, target, workspace, limits, wrench bounds;
-  /// "PlanProblem.rod.intervals" above kMaxIntervals).
+  /// Throws InputError naming the field (rod, target, workspace, limits, wrench bounds, scene;
+  /// "PlanProblem.rod.intervals" above kMaxIntervals; the clamp inside an obstacle).
   void validate() const;
 };
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,8 +24,11 @@ namespace rodshape {
 /// SnapThrough: every step succeeded, but the tracked rod would jump between two waypoints even
 /// after the refinements allowed (TrackingResult says where and the energy released): a plan
 /// defect, not a success. Partial: a step's optimisation failed. Infeasible: no step was tried.
-enum class PlanStatus { Complete, SnapThrough, Partial, Infeasible };
-std::string to_string(PlanStatus status);  // "complete", "snap_through", "partial", "infeasible"
+/// Collision: every step succeeded, but the tracked rod comes nearer to an obstacle of the scene
+/// than the clearance even after the refinements allowed (SceneResult says where).
+enum class PlanStatus { Complete, SnapThrough, Partial, Infeasible, Collision };
+/// "complete", "snap_through", "partial", "infeasible", "collision"
+std::string to_string(PlanStatus status);
 
 struct PlanStep {
   double fraction = 1.0;  // the objective set is p_init + fraction (p_obj - p_init)
@@ -56,6 +60,26 @@ struct TrackingResult {
   double peak_curvature = 0.0;
   std::string note;
   std::string brief() const { return note; }
+};
+
+/// With a scene: the least gap between the rod's surface and an obstacle over every tracked
+/// substep of every segment (and the initial shape), and where it was.
+struct SceneResult {
+  double clearance = 0.0;  // m, Scene::clearance
+  /// The least gap, m: of the (segment, obstacle) pair with the least margin over its required gap
+  /// (the clearance, or a clamp mount's own gap; see scene.hpp).
+  double min_gap = std::numeric_limits<double>::infinity();
+  double margin = std::numeric_limits<double>::infinity();  // min_gap - its required gap
+  int step = -1;      // the step whose segment (from the waypoint before) holds it; 0: initial
+  double s = 0.0;     // arc length along the rod, m
+  int obstacle = -1;  // index into Scene::obstacles
+  std::string obstacle_label;  // the name, or the index
+  /// Obstacles each step's optimisation kept the rod clear of (rows of its clearance block).
+  std::vector<int> obstacles_per_step;
+  std::string note;  // where the rod first came too near, when it did
+  bool clear() const { return margin >= -kTolerance; }
+  /// Clear within the tracked rod's accuracy (the shooting residual's, far below the µm).
+  static constexpr double kTolerance = 1e-9;
 };
 
 enum class ArmPlanStatus {
@@ -105,6 +129,7 @@ struct PlanResult {
   std::vector<PlanStep> steps;  // the steps that succeeded
   std::vector<TimedPose> end_effector_path;
   TrackingResult tracking;
+  std::optional<SceneResult> scene;  // when the problem has a scene
   std::optional<ArmPlanResult> arm;  // when the problem has an arm
 
   bool complete() const { return status == PlanStatus::Complete; }

@@ -1,0 +1,57 @@
+// scene.cpp: the scene's checks, the clamp's mount and the least gap of a polyline.
+#include "rodshape/core/scene.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "validation.hpp"
+
+namespace rodshape {
+
+void Scene::validate() const {
+  detail::require_non_negative("Scene.clearance", clearance);
+  if (clearance > kMaxClearance)
+    throw InputError("Scene.clearance", " = " + detail::format_value(clearance) + " must be <= " +
+                                            detail::format_value(kMaxClearance) + " m");
+  detail::require_non_negative("Scene.rod_radius", rod_radius);
+  if (obstacles.size() > kMaxObstacles)
+    throw InputError("Scene.obstacles", " has " + std::to_string(obstacles.size()) +
+                                            " entries; at most " + std::to_string(kMaxObstacles));
+  for (std::size_t j = 0; j < obstacles.size(); ++j)
+    obstacles[j].validate("Scene.obstacles[" + std::to_string(j) + "]");
+}
+
+void Scene::check_clamp(const Eigen::Vector3d& clamp) const {
+  for (std::size_t j = 0; j < obstacles.size(); ++j) {
+    const double d = obstacles[j].distance(clamp).distance;
+    if (d < 0.0)
+      throw InputError("ClampedRod.clamp.position",
+                       " lies inside obstacle " + obstacles[j].label(static_cast<int>(j)) + " (" +
+                           detail::format_value(-d) + " m deep)");
+  }
+}
+
+std::vector<double> Scene::required_gaps(const Eigen::Vector3d& clamp) const {
+  std::vector<double> required(obstacles.size(), clearance);
+  for (std::size_t j = 0; j < obstacles.size(); ++j)
+    required[j] = std::min(clearance, obstacles[j].distance(clamp).distance - rod_radius);
+  return required;
+}
+
+SceneGap Scene::least_gap(const std::vector<Eigen::Vector3d>& nodes,
+                          const std::vector<double>& required) const {
+  SceneGap least;
+  for (std::size_t j = 0; j < obstacles.size(); ++j) {
+    for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+      const SegmentDistance d = obstacles[j].distance(nodes[i], nodes[i + 1]);
+      const double gap = d.distance - rod_radius;
+      const double margin = gap - required[j];
+      if (margin < least.margin || (margin == least.margin && gap < least.gap)) {
+        least = {gap, margin, static_cast<int>(j), static_cast<int>(i), d.t};
+      }
+    }
+  }
+  return least;
+}
+
+}  // namespace rodshape

@@ -1,0 +1,162 @@
+// test_obstacle.cpp: the obstacles' signed distances against closed forms, their gradients against
+// central differences, and the segment distance against a dense scan of the segment, with the
+// envelope-theorem derivatives ∂d/∂a, ∂d/∂b against central differences.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "rodshape/core/obstacle.hpp"
+#include "rodshape/core/scene.hpp"
+#include "support/input_error.hpp"
+
+namespace {
+
+using Eigen::Vector3d;
+using rodshape::BoxObstacle;
+using rodshape::CapsuleObstacle;
+using rodshape::HalfSpaceObstacle;
+using rodshape::Obstacle;
+using rodshape::SphereObstacle;
+
+std::vector<Obstacle> shapes() {
+  const Eigen::Matrix3d turned =
+      Eigen::AngleAxisd(0.7, Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  return {{"ball", SphereObstacle{{0.1, 0.0, 0.2}, 0.05}},
+          {"crate", BoxObstacle{{0.0, 0.1, 0.1}, {0.08, 0.04, 0.12}, turned}},
+          {"rail", CapsuleObstacle{{-0.1, 0.0, 0.1}, {0.1, 0.05, 0.15}, 0.02}},
+          {"table", HalfSpaceObstacle{{0.2, 0.1, -1.0}, 0.01}}};
+}
+
+TEST(Obstacle, DistancesEqualTheirClosedForms) {
+  const Obstacle ball{"", SphereObstacle{{1.0, 0.0, 0.0}, 0.5}};
+  EXPECT_DOUBLE_EQ(ball.distance(Vector3d(3.0, 0.0, 0.0)).distance, 1.5);
+  EXPECT_DOUBLE_EQ(ball.distance(Vector3d(1.0, 0.25, 0.0)).distance, -0.25);
+  const Obstacle box{"",
+                     BoxObstacle{{0.0, 0.0, 0.0}, {2.0, 4.0, 6.0}, Eigen::Matrix3d::Identity()}};
+  EXPECT_DOUBLE_EQ(box.distance(Vector3d(4.0, 6.0, 0.0)).distance, std::hypot(3.0, 4.0));  // edge
+  EXPECT_DOUBLE_EQ(box.distance(Vector3d(0.5, 0.0, 0.0)).distance, -0.5);  // nearest face x
+  const Obstacle pole{"", CapsuleObstacle{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 0.1}};
+  EXPECT_DOUBLE_EQ(pole.distance(Vector3d(0.3, 0.4, 0.5)).distance, 0.4);
+  EXPECT_DOUBLE_EQ(pole.distance(Vector3d(0.0, 0.0, 2.0)).distance, 0.9);  // beyond the end cap
+  const Obstacle table{"", HalfSpaceObstacle{{0.0, 0.0, -2.0}, 0.0}};      // z < 0 is solid
+  EXPECT_DOUBLE_EQ(table.distance(Vector3d(5.0, 1.0, 0.25)).distance, 0.25);
+  EXPECT_DOUBLE_EQ(table.distance(Vector3d(5.0, 1.0, -0.25)).distance, -0.25);
+}
+
+/// Whether p lies within `band` of a kink of a box's distance: inside, two faces equally near or
+/// the mid-plane between the nearest two (q_k = 0: the nearest face flips); outside, on the
+/// boundary of an edge's or corner's region (a component of e = |q| - size/2 at 0).
+bool near_box_kink(const Obstacle& obstacle, const Vector3d& p, double band) {
+  const auto* box = std::get_if<BoxObstacle>(&obstacle.shape);
+  if (box == nullptr) return false;
+  const Vector3d q = box->rotation.transpose() * (p - box->center);
+  const Vector3d e = q.cwiseAbs() - 0.5 * box->size;
+  if (e.maxCoeff() > 0.0) return (e.array().abs() < band).any();
+  Eigen::Index k = 0;
+  e.maxCoeff(&k);
+  std::array<double, 3> sorted{e(0), e(1), e(2)};
+  std::sort(sorted.begin(), sorted.end());
+  return sorted[2] - sorted[1] < band || std::abs(q(k)) < band;
+}
+
+TEST(Obstacle, GradientsEqualCentralDifferences) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.25, 0.35);
+  constexpr double h = 1e-6;
+  for (const Obstacle& obstacle : shapes()) {
+    for (int k = 0; k < 200; ++k) {
+      const Vector3d p(u(rng), u(rng), u(rng));
+      const Vector3d g = obstacle.distance(p).gradient;
+      EXPECT_NEAR(g.norm(), 1.0, 1e-12);
+      Vector3d fd;
+      for (int i = 0; i < 3; ++i) {
+        const Vector3d e = h * Vector3d::Unit(i);
+        fd(i) = (obstacle.distance(p + e).distance - obstacle.distance(p - e).distance) / (2 * h);
+      }
+      // Central differences: O(h²) on smooth pieces, exact on linear ones. A box's distance has
+      // kinks where the nearest face or edge changes; points within 10 h of one are skipped.
+      if (near_box_kink(obstacle, p, 10 * h)) continue;
+      EXPECT_LT((fd - g).norm(), 1e-6) << obstacle.name << " at " << p.transpose();
+    }
+  }
+}
+
+double scanned_segment_distance(const Obstacle& obstacle, const Vector3d& a, const Vector3d& b) {
+  double least = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= 20000; ++k)
+    least = std::min(least, obstacle.distance(Vector3d(a + (k / 20000.0) * (b - a))).distance);
+  return least;
+}
+
+TEST(Obstacle, SegmentDistanceIsTheMinimumAlongTheSegmentWithEnvelopeDerivatives) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.25, 0.35);
+  constexpr double h = 1e-6;
+  for (const Obstacle& obstacle : shapes()) {
+    for (int k = 0; k < 60; ++k) {
+      const Vector3d a(u(rng), u(rng), u(rng));
+      const Vector3d b = a + 0.3 * Vector3d(u(rng), u(rng), u(rng));
+      const rodshape::SegmentDistance d = obstacle.distance(a, b);
+      // Where the minimiser is a box's kink (the segment crossing its inside, where d is the max of
+      // the faces' linear distances), d is not differentiable in a, b: skip those.
+      if (near_box_kink(obstacle, a + d.t * (b - a), 1e-4)) continue;
+      // The scan's grid spacing is |b - a| / 20000 and |∇d| = 1: it overestimates by at most that.
+      const double scanned = scanned_segment_distance(obstacle, a, b);
+      EXPECT_LE(d.distance, scanned + 1e-12) << obstacle.name;
+      EXPECT_GE(d.distance, scanned - (b - a).norm() / 20000.0 - 1e-12) << obstacle.name;
+      for (int i = 0; i < 3; ++i) {
+        const Vector3d e = h * Vector3d::Unit(i);
+        const double fd_a =
+            (obstacle.distance(a + e, b).distance - obstacle.distance(a - e, b).distance) / (2 * h);
+        const double fd_b =
+            (obstacle.distance(a, b + e).distance - obstacle.distance(a, b - e).distance) / (2 * h);
+        EXPECT_NEAR(fd_a, d.dd_da()(i), 2e-5) << obstacle.name << " " << k;
+        EXPECT_NEAR(fd_b, d.dd_db()(i), 2e-5) << obstacle.name << " " << k;
+      }
+    }
+  }
+}
+
+TEST(Scene, TheClampsMountRequiresOnlyTheClampsOwnGap) {
+  rodshape::Scene scene;
+  scene.clearance = 0.005;
+  scene.rod_radius = 0.002;
+  scene.obstacles = {{"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.0}},
+                     {"post", SphereObstacle{{0.2, 0.0, 0.1}, 0.03}}};
+  const std::vector<double> required = scene.required_gaps(Vector3d(0.0, 0.0, 0.003));
+  EXPECT_DOUBLE_EQ(required[0], 0.001);  // the clamp's own gap: 0.003 - 0.002
+  EXPECT_DOUBLE_EQ(required[1], 0.005);
+  // A rod along the table at the clamp's height, then up through the post's ball.
+  const std::vector<Vector3d> rod{{0.0, 0.0, 0.003}, {0.1, 0.0, 0.003}, {0.2, 0.0, 0.08}};
+  const rodshape::SceneGap gap = scene.least_gap(rod, required);
+  EXPECT_EQ(gap.obstacle, 1);
+  EXPECT_EQ(gap.segment, 1);
+  EXPECT_FALSE(gap.clear());
+  EXPECT_THROW(scene.check_clamp(Vector3d(0.2, 0.0, 0.1)), rodshape::InputError);
+}
+
+TEST(Scene, BadObstaclesNameTheirField) {
+  using rodshape::testing::input_error_message;
+  rodshape::Scene scene;
+  scene.obstacles = {{"", SphereObstacle{{0.0, 0.0, 0.0}, 0.1}},
+                     {"", HalfSpaceObstacle{Vector3d::Zero(), 0.0}}};
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles[1].normal must not be zero");
+  scene.obstacles[1] = {"", BoxObstacle{{0.0, 0.0, std::nan("")}, {1.0, 1.0, 1.0}}};
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles[1].center[2] = nan must be finite");
+  scene.obstacles[1] = {"", CapsuleObstacle{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, -0.1}};
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles[1].radius = -0.1 must be > 0");
+  scene.obstacles.assign(rodshape::Scene::kMaxObstacles + 1, scene.obstacles[0]);
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles has 1001 entries; at most 1000");
+}
+
+}  // namespace
