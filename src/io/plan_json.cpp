@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/json_format.hpp"
+#include "io/scene_json.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
@@ -72,6 +73,7 @@ Json step_object(const PlanStep& step, int number, const RodProperties& properti
   result["step"] = number;
   result["fraction"] = json_number(step.fraction);
   result["inserted"] = step.inserted;
+  result["detour"] = step.detour;
   result["objective_points"] = json_vectors(step.objective_points);
   result["configuration"] = io_detail::configuration_json(
       solution.configuration, solution.base_wrench, solution.stability, properties);
@@ -243,6 +245,7 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
+  result["scene"] = io_detail::scene_json(request.scene, plan.scene);
   result["robot"] = plan.arm ? robot_object(plan, task.options.arm) : Json(nullptr);
   result["joint_trajectory"] = plan.arm ? joint_trajectory_object(plan.arm->joints) : Json(nullptr);
   return io_detail::format_json(result);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "overloaded.hpp"
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
@@ -219,9 +220,91 @@ class Canvas {
          << "\" width=\"8\" height=\"8\" fill=\"#222\"/>\n";
   }
 
+  /// An obstacle's orthographic projection, grey: a disc, a stadium (a capsule: a line as thick as
+  /// its diameter, round caps), a box's six faces, or a half-space's solid side where its plane is
+  /// seen edge-on (a tilted plane covers the whole panel: not drawn).
+  void obstacle(const Panel& panel, const Obstacle& obstacle) {
+    const double scale = view_.scale();
+    std::visit(detail::Overloaded{[&](const SphereObstacle& s) {
+                                    out_ << "<circle cx=\"" << px(x(panel, s.center)) << "\" cy=\""
+                                         << px(y(panel, s.center)) << "\" r=\""
+                                         << px(s.radius * scale) << "\"" << kObstacleStyle
+                                         << "/>\n";
+                                  },
+                                  [&](const CapsuleObstacle& c) {
+                                    out_ << "<line x1=\"" << px(x(panel, c.from)) << "\" y1=\""
+                                         << px(y(panel, c.from)) << "\" x2=\"" << px(x(panel, c.to))
+                                         << "\" y2=\"" << px(y(panel, c.to)) << "\" stroke=\""
+                                         << kObstacleColour << "\" stroke-opacity=\"0.45\" "
+                                         << "stroke-linecap=\"round\" stroke-width=\""
+                                         << px(2 * c.radius * scale) << "\"/>\n";
+                                  },
+                                  [&](const BoxObstacle& b) { box(panel, b); },
+                                  [&](const HalfSpaceObstacle& h) { half_space(panel, h); }},
+               obstacle.shape);
+  }
+
   std::ostringstream& out() { return out_; }
 
  private:
+  static constexpr const char* kObstacleColour = "#8a8f98";
+  static constexpr const char* kObstacleStyle =
+      " fill=\"#8a8f98\" fill-opacity=\"0.35\" stroke=\"#5d626b\" stroke-width=\"1\"";
+
+  void polygon(const std::vector<Eigen::Vector2d>& corners) {
+    out_ << "<polygon points=\"";
+    for (const Eigen::Vector2d& c : corners) out_ << px(c.x()) << ',' << px(c.y()) << ' ';
+    out_ << "\"" << kObstacleStyle << "/>\n";
+  }
+
+  void box(const Panel& panel, const BoxObstacle& b) {
+    // Face k = ±1 along axis a: its four corners, the other two axes' signs in cyclic order.
+    for (int a = 0; a < 3; ++a) {
+      for (const double side : {-1.0, 1.0}) {
+        std::vector<Eigen::Vector2d> corners;
+        const int u = (a + 1) % 3, v = (a + 2) % 3;
+        for (const auto& [su, sv] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+          Eigen::Vector3d local = Eigen::Vector3d::Zero();
+          local[a] = side;
+          local[u] = su;
+          local[v] = sv;
+          const Eigen::Vector3d p = b.center + b.rotation * (0.5 * b.size.cwiseProduct(local));
+          corners.emplace_back(x(panel, p), y(panel, p));
+        }
+        polygon(corners);
+      }
+    }
+  }
+
+  void half_space(const Panel& panel, const HalfSpaceObstacle& h) {
+    const int view_axis = 3 - panel.h - panel.v;
+    if (std::abs(h.normal[view_axis]) > 1e-9 * h.normal.norm()) return;
+    // The panel's square in world coordinates, clipped to the solid side nᵀp ≥ offset.
+    const double lo_h = view_.lower[panel.h], lo_v = view_.lower[panel.v], r = view_.range;
+    const std::vector<Eigen::Vector2d> square{
+        {lo_h, lo_v}, {lo_h + r, lo_v}, {lo_h + r, lo_v + r}, {lo_h, lo_v + r}};
+    const auto solid = [&](const Eigen::Vector2d& q) {
+      return h.normal[panel.h] * q.x() + h.normal[panel.v] * q.y() - h.offset;
+    };
+    std::vector<Eigen::Vector2d> clipped;
+    for (std::size_t i = 0; i < square.size(); ++i) {
+      const Eigen::Vector2d& a = square[i];
+      const Eigen::Vector2d& b = square[(i + 1) % square.size()];
+      const double fa = solid(a), fb = solid(b);
+      if (fa >= 0.0) clipped.push_back(a);
+      if ((fa >= 0.0) != (fb >= 0.0)) clipped.push_back(a + (fa / (fa - fb)) * (b - a));
+    }
+    if (clipped.size() < 3) return;
+    std::vector<Eigen::Vector2d> corners;
+    for (const Eigen::Vector2d& q : clipped) {
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      p[panel.h] = q.x();
+      p[panel.v] = q.y();
+      corners.emplace_back(x(panel, p), y(panel, p));
+    }
+    polygon(corners);
+  }
+
   View view_;
   std::ostringstream out_;
 };
@@ -260,6 +343,9 @@ void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask&
   }
   if (plan.tracking.performed)
     title << "; tracked peak energy " << std::setprecision(3) << plan.tracking.peak_energy << " J";
+  if (plan.scene && std::isfinite(plan.scene->min_gap))
+    title << "; least gap " << millimetres(plan.scene->min_gap) << " (clearance "
+          << millimetres(plan.scene->clearance) << ")";
   out << "<text x=\"" << px(kLeft - 40) << "\" y=\"24\" font-family=\"sans-serif\" "
       << "font-size=\"15\" font-weight=\"bold\" fill=\"#111\">" << escaped(title.str())
       << "</text>\n";
@@ -284,6 +370,7 @@ void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& requ
     const Panel& panel = panels[k];
     canvas.frame(panel, static_cast<int>(k));
     out << "<g clip-path=\"url(#panel" << k << ")\">\n";
+    for (const Obstacle& obstacle : request.scene.obstacles) canvas.obstacle(panel, obstacle);
     canvas.polyline(panel, plan.initial_configuration.p, kInitialColour, 2.0,
                     " stroke-dasharray=\"6 3\"");
     for (int i = 0; i < n; ++i) {

@@ -8,9 +8,11 @@
 #include <sstream>
 
 #include "arm_replanning.hpp"
+#include "detour_search.hpp"
 #include "plan_stages.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
 #include "scene_stages.hpp"
 #include "validation.hpp"
 
@@ -187,6 +189,59 @@ void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& 
       problem.scene.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
 }
 
+/// A detour's waypoint as a step of the plan: the equilibrium it reached, with the cost terms of
+/// the step it leads to (`problem` is that step's ShapeProblem).
+PlanStep detour_step(const detour::Waypoint& waypoint,
+                     const ObjectiveSet& set,
+                     const PointSet& points,
+                     ShapeProblem& problem) {
+  ShapeResult solution;
+  solution.status = SolveStatus::Converged;
+  solution.message = "a detour's waypoint: an equilibrium clear of the scene";
+  solution.base_wrench = waypoint.wrench;
+  solution.configuration = waypoint.configuration;
+  problem.evaluate(waypoint.wrench.to_vector());
+  solution.cost = problem.breakdown();
+  solution.stability = waypoint.stability;
+  return {set.fraction, false, true, points, std::move(solution), waypoint.end_effector};
+}
+
+/// The tracking of an edge the detour search followed.
+SegmentTracking detour_tracking(const detour::Waypoint& reached, double deviation) {
+  SegmentTracking segment;
+  segment.deviation = deviation;
+  segment.arrived = reached.wrench;
+  segment.peak_energy = reached.peak_energy;
+  segment.peak_curvature = reached.peak_curvature;
+  segment.gap = reached.gap;
+  return segment;
+}
+
+/// Searches a detour to `step` from the last waypoint; when found, appends its waypoints as
+/// steps (detour: true) and returns the tracking of the last edge, which arrives at `step`.
+std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
+                                           const PlanOptions& options,
+                                           StepLoop& loop,
+                                           const ObjectiveSet& set,
+                                           const PlanStep& step,
+                                           ShapeProblem& step_problem,
+                                           PlanResult& result) {
+  const detour::Search found =
+      detour::search(problem, options, loop.required, loop.from, loop.tracked, step);
+  result.scene->detours.push_back(found.message);
+  if (!found.found) return std::nullopt;
+  for (const detour::Waypoint& via : found.via) {
+    const int number = static_cast<int>(result.steps.size()) + 1;
+    record(result.tracking, detour_tracking(via, 0.0), number - 1);
+    record_gap(result, problem, via.gap, number);
+    result.steps.push_back(detour_step(via, set, step.objective_points, step_problem));
+    loop.tracked = via.wrench;
+    loop.from = via.end_effector;
+  }
+  return detour_tracking(found.goal,
+                         node_deviation(found.goal.configuration, step.solution.configuration));
+}
+
 /// Steps 3–6: one optimal shape per objective set, each warm-started from the last and tracked
 /// from the last waypoint; where the rod would jump, or come nearer to an obstacle than the
 /// clearance, a set halfway is inserted and the segment planned again. Returns false when a
@@ -215,10 +270,18 @@ bool plan_steps(const PlanProblem& problem,
     }
     const Pose end_effector =
         compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
-    PlanStep step{set.fraction, set.inserted, target.points, std::move(solution), end_effector};
+    PlanStep step{set.fraction,  set.inserted,        false,
+                  target.points, std::move(solution), end_effector};
     if (loop.tracking) {
-      const SegmentTracking segment = track_segment(problem, options, loop.from, loop.tracked, step,
-                                                    number, scene ? &loop.required : nullptr);
+      SegmentTracking segment = track_segment(problem, options, loop.from, loop.tracked, step,
+                                              number, scene ? &loop.required : nullptr);
+      // Through an obstacle (or still too near after the refinements): a way around, once per set.
+      const bool refinable = result.tracking.refinements < options.max_refinements;
+      if (segment.collision && !set.detour_tried && (segment.gap->gap < 0.0 || !refinable)) {
+        loop.pending[next].detour_tried = true;
+        if (auto around = take_detour(problem, options, loop, set, step, unconstrained, result))
+          segment = std::move(*around);
+      }
       if ((segment.jump || segment.collision) &&
           result.tracking.refinements < options.max_refinements) {
         const ObjectiveSet half = halfway_set(loop.path, loop.history.f_last, set);
@@ -227,7 +290,8 @@ bool plan_steps(const PlanProblem& problem,
         continue;
       }
       record(result.tracking, segment, static_cast<int>(result.steps.size()));
-      if (segment.gap) record_gap(result, problem, *segment.gap, number);
+      if (segment.gap)
+        record_gap(result, problem, *segment.gap, static_cast<int>(result.steps.size()) + 1);
       if (segment.collision && result.scene->note.empty()) result.scene->note = segment.note;
       if (segment.jump) loop.tracking = false;
       loop.tracked = segment.arrived;

@@ -40,6 +40,7 @@ struct ObjectiveSet {
   double fraction = 1.0;
   PointSet points;
   bool inserted = false;
+  bool detour_tried = false;  // a detour around the scene was searched for this set
 };
 /// p_init: the objective points' starts on the initial shape (PlanOptions::interpolation).
 PointSet initial_points(const PlanProblem& problem,

@@ -33,6 +33,9 @@ std::string to_string(PlanStatus status);
 struct PlanStep {
   double fraction = 1.0;  // the objective set is p_init + fraction (p_obj - p_init)
   bool inserted = false;  // a refinement step, inserted where the tracked rod jumped
+  /// A step of a detour around the scene's obstacles (an equilibrium the search went through, not
+  /// an optimal shape: its solution's cost is that of the step it leads to).
+  bool detour = false;
   PointSet objective_points;
   ShapeResult solution;  // the optimal shape of this step (configuration, cost, stability, IPOPT)
   Pose end_effector;     // world_T_tip · tip_T_ee
@@ -77,6 +80,8 @@ struct SceneResult {
   /// Obstacles each step's optimisation kept the rod clear of (rows of its clearance block).
   std::vector<int> obstacles_per_step;
   std::string note;  // where the rod first came too near, when it did
+  /// Each detour search: what it found ("detour of 2 waypoints (…)") or why not.
+  std::vector<std::string> detours;
   bool clear() const { return margin >= -kTolerance; }
   /// Clear within the tracked rod's accuracy (the shooting residual's, far below the µm).
   static constexpr double kTolerance = 1e-9;

@@ -1,0 +1,60 @@
+// scene_json.cpp: the scene's part of plan.json.
+#include "io/scene_json.hpp"
+
+#include "overloaded.hpp"
+
+namespace rodshape::io_detail {
+
+Json obstacle_json(const Obstacle& obstacle) {
+  Json json;
+  json["shape"] = obstacle.kind();
+  json["name"] = obstacle.name.empty() ? Json(nullptr) : Json(obstacle.name);
+  std::visit(detail::Overloaded{[&](const SphereObstacle& s) {
+                                  json["center"] = json_vector(s.center);
+                                  json["radius"] = json_number(s.radius);
+                                },
+                                [&](const BoxObstacle& b) {
+                                  json["center"] = json_vector(b.center);
+                                  json["size"] = json_vector(b.size);
+                                  json["rotation"] = json_quaternion(b.rotation);
+                                },
+                                [&](const CapsuleObstacle& c) {
+                                  json["from"] = json_vector(c.from);
+                                  json["to"] = json_vector(c.to);
+                                  json["radius"] = json_number(c.radius);
+                                },
+                                [&](const HalfSpaceObstacle& h) {
+                                  json["normal"] = json_vector(h.normal);
+                                  json["offset"] = json_number(h.offset);
+                                }},
+             obstacle.shape);
+  return json;
+}
+
+Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
+  if (scene.empty()) return nullptr;
+  Json json;
+  json["clearance"] = json_number(scene.clearance);
+  json["rod_radius"] = json_number(scene.rod_radius);
+  Json obstacles = Json::array();
+  for (const Obstacle& obstacle : scene.obstacles) obstacles.push_back(obstacle_json(obstacle));
+  json["obstacles"] = std::move(obstacles);
+  if (!result) return json;
+  json["min_gap"] = json_number(result->min_gap);
+  json["margin"] = json_number(result->margin);
+  json["clear"] = result->clear();
+  json["min_gap_at"] =
+      result->obstacle < 0
+          ? Json(nullptr)
+          : Json{{"step", result->step},
+                 {"s", json_number(result->s)},
+                 {"obstacle",
+                  scene.obstacles[static_cast<std::size_t>(result->obstacle)].name.empty()
+                      ? Json(result->obstacle)
+                      : Json(scene.obstacles[static_cast<std::size_t>(result->obstacle)].name)}};
+  json["obstacles_per_step"] = result->obstacles_per_step;
+  json["detours"] = result->detours;
+  return json;
+}
+
+}  // namespace rodshape::io_detail
