@@ -74,6 +74,23 @@ ShapeTarget target_beside(const RodConfiguration& c, bool squared) {
   return target;
 }
 
+/// One obstacle of each kind beside the rod (1–3 cm off its nodes, none touching it), so that
+/// every clearance row is smooth at the configuration: the nearest points are on faces, not edges.
+Clearance every_kind_of_obstacle(const RodConfiguration& c) {
+  Clearance clearance;
+  clearance.scene.rod_radius = 0.002;
+  clearance.scene.clearance = 0.005;
+  const auto beside = [&](int i, double d) { return Eigen::Vector3d(c.p[i] + d * c.R[i].col(0)); };
+  clearance.scene.obstacles = {
+      {"ball", SphereObstacle{beside(5, 0.03), 0.01}},
+      {"rail", CapsuleObstacle{beside(10, 0.025) - 0.01 * c.R[10].col(2),
+                               beside(10, 0.025) + 0.01 * c.R[10].col(2), 0.008}},
+      {"crate", BoxObstacle{beside(15, -0.04), Eigen::Vector3d(0.04, 0.03, 0.02), c.R[15]}},
+      {"floor", HalfSpaceObstacle{-c.R[0].col(0), 0.05 - c.R[0].col(0).dot(c.p[0])}}};
+  clearance.required.assign(4, 0.005);
+  return clearance;
+}
+
 ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   const ClampedRod rod = loaded_rod(model);
   const RodConfiguration c = integrate(rod, Wrench::from_vector(base_wrench(rod)));
@@ -83,7 +100,7 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   limits.max_curvature = 8.0;
   limits.max_axial_strain = 0.01;
   return ShapeProblem(rod, target_beside(c, squared), every_kind_of_workspace(c.p.back()), grasp,
-                      limits);
+                      limits, WrenchBounds{}, every_kind_of_obstacle(c));
 }
 
 struct Case {
@@ -106,7 +123,9 @@ TEST_P(ShapeProblemDerivatives, CostGradientAndEveryJacobianRowMatchCentralFinit
   EXPECT_EQ(rows.grasp, 2);
   EXPECT_EQ(rows.curvature, N + 1);
   EXPECT_EQ(rows.axial, GetParam().model == ConstitutiveModel::Cosserat ? N + 1 : 0);
-  ASSERT_EQ(problem.constraint_count(), rows.workspace + rows.grasp + rows.curvature + rows.axial);
+  EXPECT_EQ(rows.clearance, 4 * N);
+  ASSERT_EQ(problem.constraint_count(),
+            rows.workspace + rows.grasp + rows.curvature + rows.axial + rows.clearance);
 
   const Vector6d w = base_wrench(rod);
   const Vector6d S = testing::wrench_scale(rod);

@@ -1,0 +1,121 @@
+// test_scene_plan.cpp: plans through a scene. The bundled example needs a detour around its post;
+// its plan is checked by re-solving the held rod independently of the planner: the equilibrium
+// followed along every sample of the timed end-effector path (the rate's step, not the planner's
+// tracking substeps), whose least gap to every obstacle must stay at or above the clearance.
+// Targets inside an obstacle are infeasible; a clamp inside one, or a scene without tracking, is
+// bad input; a way the planner cannot get past ends in the status Collision.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
+#include "rodshape/trajectory/plan.hpp"
+#include "support/input_error.hpp"
+
+namespace rodshape {
+namespace {
+
+using testing::input_error_message;
+
+const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples/";
+
+/// The held rod followed along the plan's timed end-effector path, one direct solve per sample,
+/// from the initial equilibrium; the least gap to the scene over every sample.
+struct Replay {
+  FollowResult followed;
+  SceneGap least;
+};
+Replay replay(const PlanProblem& problem, const PlanResult& plan) {
+  std::vector<TipCondition> samples;
+  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
+  for (const TimedPose& sample : plan.end_effector_path)
+    samples.push_back(ClampedTip{compose(sample.pose, ee_T_tip)});
+  const std::vector<double> required = problem.scene.required_gaps(problem.rod.clamp.position);
+  Replay result;
+  FollowOptions options;
+  options.substeps = static_cast<int>(samples.size()) - 1;
+  options.observer = [&](double, const RodConfiguration& c) {
+    const SceneGap gap = problem.scene.least_gap(c.p, required);
+    if (gap.margin < result.least.margin) result.least = gap;
+  };
+  result.followed = follow_equilibrium(problem.rod, sampled_tip_path(samples), plan.initial_wrench,
+                                       options, &plan.steps.back().solution.configuration);
+  return result;
+}
+
+TEST(ScenePlan, TheBundledPostIsPassedByADetourAndAnIndependentReplayStaysClear) {
+  const PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
+  const PlanResult plan = rodshape::plan(task.problem, task.options);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  ASSERT_TRUE(plan.scene.has_value());
+  EXPECT_GE(plan.scene->min_gap, task.problem.scene.clearance - SceneResult::kTolerance);
+  EXPECT_TRUE(std::any_of(plan.steps.begin(), plan.steps.end(),
+                          [](const PlanStep& step) { return step.detour; }))
+      << "the post blocks the straight way: a detour is expected";
+  // Gentle: no coiled shape on the way (the detour's edges are capped at 1.5× their ends).
+  EXPECT_LE(plan.tracking.peak_energy,
+            1.5 * std::max(plan.initial_configuration.energy,
+                           plan.steps.back().solution.configuration.energy));
+
+  const Replay check = replay(task.problem, plan);
+  ASSERT_TRUE(check.followed.followed()) << check.followed.brief();
+  // Arrives on the planned final shape (1 mm: the tracking's branch tolerance).
+  EXPECT_LT(check.followed.arrival_deviation, 1e-3);
+  EXPECT_GE(check.least.gap, task.problem.scene.clearance - SceneResult::kTolerance)
+      << "segment " << check.least.segment << " of obstacle " << check.least.obstacle;
+}
+
+TEST(ScenePlan, ATargetPointInsideAnObstacleIsInfeasibleAndNamed) {
+  PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
+  const Eigen::Vector3d point = task.problem.target.points[6];
+  task.problem.scene.obstacles.push_back({"block", SphereObstacle{point, 0.01}});
+  const PlanResult plan = rodshape::plan(task.problem, task.options);
+  EXPECT_EQ(plan.status, PlanStatus::Infeasible);
+  EXPECT_NE(plan.message.find("objective point 6"), std::string::npos) << plan.message;
+  EXPECT_NE(plan.message.find("'block'"), std::string::npos) << plan.message;
+  EXPECT_TRUE(plan.steps.empty());
+}
+
+TEST(ScenePlan, AClampInsideAnObstacleAndASceneWithoutTrackingAreBadInput) {
+  PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
+  PlanTask inside = task;
+  inside.problem.scene.obstacles.push_back({"", SphereObstacle{Eigen::Vector3d::Zero(), 0.01}});
+  EXPECT_EQ(input_error_message([&] { rodshape::plan(inside.problem, inside.options); })
+                .rfind("ClampedRod.clamp.position lies inside obstacle 2", 0),
+            0u);
+  PlanTask untracked = task;
+  untracked.options.track_between_waypoints = false;
+  EXPECT_EQ(input_error_message([&] { rodshape::plan(untracked.problem, untracked.options); })
+                .rfind("PlanOptions.track_between_waypoints must be true with a scene", 0),
+            0u);
+}
+
+TEST(ScenePlan, ARodStartingThroughAnObstacleIsBadInput) {
+  PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
+  // A rail across the straight rod at rest (it stands along +z from the clamp).
+  task.problem.scene.obstacles.push_back(
+      {"rail", CapsuleObstacle{{-0.05, 0.0, 0.15}, {0.05, 0.0, 0.15}, 0.005}});
+  EXPECT_NE(input_error_message([&] { rodshape::plan(task.problem, task.options); })
+                .find("the initial rod comes within"),
+            std::string::npos);
+}
+
+TEST(ScenePlan, AWallTheRodCannotGetPastEndsInCollisionNamingIt) {
+  PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
+  // The post made a long rail across the whole plane the band sweeps through: no gentle way
+  // around within the detour's edges, and no refinement allowed.
+  auto& post = std::get<CapsuleObstacle>(task.problem.scene.obstacles[1].shape);
+  post.from.y() = -0.25;
+  post.to.y() = 0.25;
+  task.options.max_refinements = 0;
+  const PlanResult plan = rodshape::plan(task.problem, task.options);
+  ASSERT_EQ(plan.status, PlanStatus::Collision) << plan.message;
+  EXPECT_NE(plan.message.find("obstacle 'post'"), std::string::npos) << plan.message;
+  ASSERT_TRUE(plan.scene.has_value());
+  EXPECT_LT(plan.scene->margin, 0.0);
+  EXPECT_FALSE(plan.scene->detours.empty());
+}
+
+}  // namespace
+}  // namespace rodshape
