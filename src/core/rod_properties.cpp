@@ -1,7 +1,9 @@
 #include "rodshape/core/rod_properties.hpp"
 
+#include <algorithm>
 #include <limits>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -17,26 +19,57 @@ ConstitutiveModel constitutive_model_from_string(const std::string& name,
   throw InputError(field, " = '" + name + "' must be 'cosserat' or 'kirchhoff'");
 }
 
+namespace {
+
+/// A Cosserat rod's EA·L²/EI and GA·L²/EI within bounds::kMaxStretchToBendRatio (issue 24, item 8;
+/// docs/task-file.md, rod.model): beyond, it is a Kirchhoff rod to double precision.
+void require_cosserat_resolvable(const RodProperties& p) {
+  if (p.model != ConstitutiveModel::Cosserat) return;
+  const double EI = std::min(p.K_rot.x(), p.K_rot.y());
+  const double L2 = p.length * p.length;
+  const bool axial = p.K_tra.z() >= p.K_tra.x();
+  const double K = axial ? p.K_tra.z() : p.K_tra.x();
+  const double ratio = K * L2 / EI;
+  if (ratio <= bounds::kMaxStretchToBendRatio) return;
+  using detail::format_value;
+  throw InputError(
+      axial ? "RodProperties.K_tra[2]" : "RodProperties.K_tra[0]",
+      " = " + format_value(K) + " N with EI = " + format_value(EI) +
+          " N*m^2 and L = " + format_value(p.length) + " m gives " + (axial ? "EA" : "GA") +
+          "*L^2/EI = " + format_value(ratio) + ", beyond " +
+          format_value(bounds::kMaxStretchToBendRatio) +
+          ": a Cosserat rod that stiff in extension is a Kirchhoff rod to double precision; use "
+          "RodProperties.model = kirchhoff");
+}
+
+}  // namespace
+
 void RodProperties::validate() const {
   detail::require_positive("RodProperties.length", length);
+  require_in_range("RodProperties.length", length, bounds::kLength);
   static const char* const tra_names[] = {"RodProperties.K_tra[0]", "RodProperties.K_tra[1]",
                                           "RodProperties.K_tra[2]"};
   static const char* const rot_names[] = {"RodProperties.K_rot[0]", "RodProperties.K_rot[1]",
                                           "RodProperties.K_rot[2]"};
   for (int i = 0; i < 3; ++i) {
+    detail::require_positive(rot_names[i], K_rot(i));
+    require_in_range(rot_names[i], K_rot(i), bounds::kStiffness);
     // The Kirchhoff model never uses K_tra (v = ṽ): it may be +inf there ("not given").
     if (model == ConstitutiveModel::Kirchhoff &&
         K_tra(i) == std::numeric_limits<double>::infinity())
       continue;
     detail::require_positive(tra_names[i], K_tra(i));
-    detail::require_positive(rot_names[i], K_rot(i));
+    require_in_range(tra_names[i], K_tra(i), bounds::kStiffness);
   }
   detail::require_finite("RodProperties.v_rest", v_rest);
   if (!(v_rest.z() > 0.0))
     throw InputError("RodProperties.v_rest[2]",
                      " = " + detail::format_value(v_rest.z()) + " must be > 0");
   detail::require_finite("RodProperties.u_rest", u_rest);
+  require_magnitude_at_most("RodProperties.u_rest", u_rest, bounds::kMaxRestTurn / length, "1/m");
   detail::require_non_negative("RodProperties.mass_per_length", mass_per_length);
+  require_in_range("RodProperties.mass_per_length", mass_per_length, bounds::kMassPerLength);
+  require_cosserat_resolvable(*this);
 }
 
 namespace {
@@ -50,6 +83,7 @@ double stiffness_or(const std::optional<double>& override_value,
   const std::string field = std::string("RodDescription.stiffness.") + name;
   if (override_value) {
     detail::require_positive(field, *override_value);
+    require_in_range(field, *override_value, bounds::kStiffness);
     return *override_value;
   }
   if (!d.section)
@@ -63,6 +97,7 @@ double stiffness_or(const std::optional<double>& override_value,
 
 RodProperties make_rod_properties(const RodDescription& d) {
   detail::require_positive("RodDescription.length", d.length);
+  require_in_range("RodDescription.length", d.length, bounds::kLength);
   if (d.section) d.section->validate("RodDescription.section");
   if (d.material) d.material->validate("RodDescription.material");
 

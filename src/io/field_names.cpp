@@ -61,6 +61,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"RodDescription.stiffness", "rod.stiffness"},
       {"RodDescription.rest_curvature", "rod.rest_curvature"},
       {"RodProperties.length", "rod.length"},
+      {"RodProperties.model", "rod.model"},
       {"RodProperties.K_tra[0]", "rod.stiffness.GA"},
       {"RodProperties.K_tra[1]", "rod.stiffness.GA"},
       {"RodProperties.K_tra[2]", "rod.stiffness.EA"},
