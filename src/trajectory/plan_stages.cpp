@@ -9,6 +9,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/model_validity.hpp"
+#include "rodshape/solvers/rod_reach.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 #include "rodshape/solvers/stable_equilibrium.hpp"
@@ -47,6 +48,8 @@ void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialSt
 
 /// The equilibrium held at `tip`, solved from rest (with continuation).
 InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip) {
+  check_within_reach(problem.rod, tip.position, problem.validity, "PlanProblem.initial.tip",
+                     "PlanProblem.validity");
   const TipCondition held = held_tip(tip, problem.grasp);
   ShootingOptions options;
   options.output_derivatives = Derivatives::AllNodes;  // for the stability test
