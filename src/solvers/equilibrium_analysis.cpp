@@ -38,10 +38,7 @@ void check_held_reach(const ClampedRod& rod,
   if (field.empty()) return;
   rod.validate();  // its length and strains first: the reach is made of them
   shooting.validate();
-  const Pose& pose = std::holds_alternative<ClampedTip>(tip) ? std::get<ClampedTip>(tip).pose
-                                                             : std::get<GraspedTip>(tip).pose;
-  check_within_reach(rod, pose.position, shooting.strain_limits, field,
-                     "ShootingOptions.strain_limits");
+  check_within_reach(rod, tip, shooting.strain_limits, field, "ShootingOptions.strain_limits");
 }
 
 /// Stage 4: replace an unstable equilibrium by a stable one with the same boundary condition.

@@ -17,13 +17,29 @@ double max_tip_distance(const RodProperties& properties, const ModelValidityLimi
   return properties.length * largest_v.norm();
 }
 
+std::optional<Eigen::Vector3d> nearest_held_position(const Eigen::Vector3d& clamp,
+                                                     const TipCondition& tip) {
+  if (const auto* held = std::get_if<ClampedTip>(&tip)) return held->pose.position;
+  const auto* grasp = std::get_if<GraspedTip>(&tip);
+  if (!grasp) return std::nullopt;
+  Eigen::Vector3d position = grasp->pose.position;
+  for (int i = 0; i < 3; ++i) {  // R_d e_i are orthonormal: remove each released component
+    if (!grasp->released[static_cast<std::size_t>(i)]) continue;
+    const Eigen::Vector3d axis = grasp->pose.rotation.col(i);
+    position -= axis.dot(position - clamp) * axis;
+  }
+  return position;
+}
+
 void check_within_reach(const ClampedRod& rod,
-                        const Eigen::Vector3d& tip,
+                        const TipCondition& tip,
                         const ModelValidityLimits& limits,
                         const std::string& pose_field,
                         const std::string& limits_owner) {
   using detail::format_value;
-  const double distance = (tip - rod.clamp.position).norm();
+  const std::optional<Eigen::Vector3d> held = nearest_held_position(rod.clamp.position, tip);
+  if (!held) return;
+  const double distance = (*held - rod.clamp.position).norm();
   const double reach = max_tip_distance(rod.properties, limits);
   // Round-off of the distance only: a Kirchhoff rod held straight is exactly at its reach.
   if (!(distance > reach * (1.0 + 1e-12))) return;

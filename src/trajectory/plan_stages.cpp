@@ -48,9 +48,9 @@ void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialSt
 
 /// The equilibrium held at `tip`, solved from rest (with continuation).
 InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip) {
-  check_within_reach(problem.rod, tip.position, problem.validity, "PlanProblem.initial.tip",
-                     "PlanProblem.validity");
   const TipCondition held = held_tip(tip, problem.grasp);
+  check_within_reach(problem.rod, held, problem.validity, "PlanProblem.initial.tip",
+                     "PlanProblem.validity");
   ShootingOptions options;
   options.output_derivatives = Derivatives::AllNodes;  // for the stability test
   ShootingResult solved = solve_equilibrium(problem.rod, held, BaseWrench{}, options);

@@ -40,6 +40,19 @@ TEST(RodReach, ATipTenMetresAwayIsOutOfReachBeforeSolving) {
             0u);
 }
 
+TEST(RodReach, AGraspSlidesAlongItsReleasedForceAxes) {
+  // Released fx: the tip may slide along the grasp's x axis, so p_d = (10, 0, 0.2) holds it
+  // anywhere on that line; the point nearest the clamp, (0, 0, 0.2), is within reach.
+  const GraspedTip sliding{Pose{{10.0, 0.0, 0.2}, Eigen::Matrix3d::Identity()},
+                           {true, false, false, false, false, false}};
+  const auto nearest = nearest_held_position(Eigen::Vector3d::Zero(), sliding);
+  ASSERT_TRUE(nearest.has_value());
+  EXPECT_TRUE(nearest->isApprox(Eigen::Vector3d(0.0, 0.0, 0.2)));
+  EXPECT_NO_THROW(check_within_reach(testing::rubber_band(), sliding, ModelValidityLimits{},
+                                     "GraspedTip.pose", "limits"));
+  EXPECT_FALSE(nearest_held_position(Eigen::Vector3d::Zero(), FreeTip{}).has_value());
+}
+
 TEST(RodReach, ATipWithinReachIsSolved) {
   // Straight along z, stretched by 20 %: within max_axial_strain = 0.5 and solved.
   const ClampedRod rod = testing::rubber_band();
