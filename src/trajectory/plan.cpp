@@ -9,6 +9,7 @@
 #include "arm_replanning.hpp"
 #include "plan_stages.hpp"
 #include "rodshape/error.hpp"
+#include "target_behind_clamp.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -219,6 +220,8 @@ PlanResult plan_rod(const PlanProblem& problem,
     result.message = "the rod would not follow the plan towards waypoint " +
                      std::to_string(result.tracking.jump_step + 1) + ": " + result.tracking.note;
   }
+  if (result.status == PlanStatus::Partial || result.status == PlanStatus::SnapThrough)
+    result.message += plan_stages::behind_clamp_note(problem);  // why, for a target behind it
   // 7. The timed end-effector path through the waypoints.
   result.end_effector_path =
       time_waypoints(initial_end_effector, result.steps, options.end_effector);
