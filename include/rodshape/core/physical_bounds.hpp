@@ -29,8 +29,8 @@ inline constexpr PhysicalRange kYoungModulus{1.0, 1e20, "Pa"};
 inline constexpr PhysicalRange kDensity{0.0, 1e5, "kg/m^3"};
 /// Each stiffness EA, GA (N), EIx, EIy, GJ (N·m²): 1e-20 … 1e20.
 inline constexpr PhysicalRange kStiffness{1e-20, 1e20, "N or N*m^2"};
-/// A mass per length: 0 … 1e6 kg/m.
-inline constexpr PhysicalRange kMassPerLength{0.0, 1e6, "kg/m"};
+/// A mass per length: 0 … 1e9 kg/m, the largest density times the largest section (1e4 m²).
+inline constexpr PhysicalRange kMassPerLength{0.0, 1e9, "kg/m"};
 /// The largest |value| of a position (m), of a gravity (m/s², 1000 g) and of a force or moment
 /// (a load per length, a wrench).
 inline constexpr double kMaxPosition = 1e4;  // m, as kLength
