@@ -20,8 +20,8 @@ void require_magnitude_at_most(const std::string& field,
                                const char* unit) {
   using detail::format_value;
   detail::require_finite(field, value);
-  if (value.norm() > max)
-    throw InputError(field, " has magnitude " + format_value(value.norm()) + " " + unit +
+  if (value.stableNorm() > max)  // stableNorm: |[1e300, 0, 0]| is 1e300, not inf
+    throw InputError(field, " has magnitude " + format_value(value.stableNorm()) + " " + unit +
                                 "; at most " + format_value(max) + " " + unit +
                                 " (docs/limits.md)");
 }

@@ -95,7 +95,7 @@ std::string task_field_name(const std::string& library_field) {
     const auto found = table().find(head);
     if (found != table().end())
       return std::string(found->second) + library_field.substr(head.size());
-    const std::size_t dot = head.rfind('.');
+    const std::size_t dot = head.find_last_of(".[");  // "ShapeTarget.points[1]": its list too
     if (dot == std::string_view::npos) return library_field;
     head = head.substr(0, dot);
   }

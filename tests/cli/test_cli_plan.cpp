@@ -254,6 +254,11 @@ TEST_F(CliPlan, BadPlanFieldsExitTwoWithFileLineAndField) {
        kTask.substr(0, kTask.find("  points:")) + "  points: []\n" +
            kTask.substr(kTask.find("trajectory:")),
        ":8: target.points is empty"},
+      // Issue 24, item 5: a point beyond the position range, named in the task's words at its line.
+      {"far_point", task_with("[0.013, 0.000, 0.114]", "[1e300, 0, 0]"),
+       ":10: target.points[1] has magnitude 1e+300 m; at most 10000 m"},
+      {"plant_gravity", kTask + "plant: {gravity: [0, 0, -1e300]}\n",
+       ":17: plant.gravity has magnitude 1e+300 m/s^2; at most 10000 m/s^2"},
   };
   for (const Bad& bad : cases) {
     SCOPED_TRACE(bad.name);
