@@ -1,6 +1,7 @@
 #include "rodshape/core/rod_properties.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 #include "rodshape/core/physical_bounds.hpp"
@@ -21,25 +22,41 @@ ConstitutiveModel constitutive_model_from_string(const std::string& name,
 
 namespace {
 
+/// Where a stiff K_tra came from, for messages: the field and " = <value> ...".
+struct StiffSource {
+  std::string field;
+  std::string value;
+};
+
 /// A Cosserat rod's EA·L²/EI and GA·L²/EI within bounds::kMaxStretchToBendRatio (issue 24, item 8;
-/// docs/task-file.md, rod.model): beyond, it is a Kirchhoff rod to double precision.
-void require_cosserat_resolvable(const RodProperties& p) {
+/// docs/task-file.md, rod.model): beyond, it is a Kirchhoff rod to double precision. `source`
+/// names the field the stiffer of EA (axial) and GA came from.
+void require_cosserat_resolvable(const RodProperties& p,
+                                 const std::function<StiffSource(bool axial, double K)>& source) {
   if (p.model != ConstitutiveModel::Cosserat) return;
   const double EI = std::min(p.K_rot.x(), p.K_rot.y());
-  const double L2 = p.length * p.length;
   const bool axial = p.K_tra.z() >= p.K_tra.x();
   const double K = axial ? p.K_tra.z() : p.K_tra.x();
-  const double ratio = K * L2 / EI;
+  const double ratio = K * p.length * p.length / EI;
   if (ratio <= bounds::kMaxStretchToBendRatio) return;
   using detail::format_value;
-  throw InputError(
-      axial ? "RodProperties.K_tra[2]" : "RodProperties.K_tra[0]",
-      " = " + format_value(K) + " N with EI = " + format_value(EI) +
-          " N*m^2 and L = " + format_value(p.length) + " m gives " + (axial ? "EA" : "GA") +
-          "*L^2/EI = " + format_value(ratio) + ", beyond " +
-          format_value(bounds::kMaxStretchToBendRatio) +
-          ": a Cosserat rod that stiff in extension is a Kirchhoff rod to double precision; use "
-          "RodProperties.model = kirchhoff");
+  const StiffSource stiff = source(axial, K);
+  throw InputError(stiff.field, stiff.value + ", with EI = " + format_value(EI) +
+                                    " N*m^2 and L = " + format_value(p.length) + " m, gives " +
+                                    (axial ? "EA" : "GA") + "*L^2/EI = " + format_value(ratio) +
+                                    ", beyond " + format_value(bounds::kMaxStretchToBendRatio) +
+                                    ": a Cosserat rod that stiff in extension is a Kirchhoff rod "
+                                    "to double precision; use RodProperties.model = kirchhoff");
+}
+
+/// EA or GA given (RodDescription.stiffness), else Young's modulus times the section's area.
+StiffSource description_source(const RodDescription& d, bool axial, double K) {
+  const std::string K_text = detail::format_value(K) + " N";
+  if (axial ? d.stiffness.EA.has_value() : d.stiffness.GA.has_value())
+    return {std::string("RodDescription.stiffness.") + (axial ? "EA" : "GA"), " = " + K_text};
+  return {"RodDescription.material.young_modulus",
+          " = " + detail::format_value(d.material ? d.material->young_modulus : 0.0) +
+              " Pa makes " + (axial ? "EA = E A = " : "GA = G A = ") + K_text};
 }
 
 }  // namespace
@@ -69,7 +86,10 @@ void RodProperties::validate() const {
   require_magnitude_at_most("RodProperties.u_rest", u_rest, bounds::kMaxRestTurn / length, "1/m");
   detail::require_non_negative("RodProperties.mass_per_length", mass_per_length);
   require_in_range("RodProperties.mass_per_length", mass_per_length, bounds::kMassPerLength);
-  require_cosserat_resolvable(*this);
+  require_cosserat_resolvable(*this, [](bool axial, double K) {
+    return StiffSource{axial ? "RodProperties.K_tra[2]" : "RodProperties.K_tra[0]",
+                       " = " + detail::format_value(K) + " N"};
+  });
 }
 
 namespace {
@@ -128,6 +148,8 @@ RodProperties make_rod_properties(const RodDescription& d) {
   p.K_tra = {GA, GA, EA};
   p.K_rot = {EIx, EIy, GJ};
   if (d.section && d.material) p.mass_per_length = d.material->density * d.section->area();
+  require_cosserat_resolvable(  // named as the user gave it
+      p, [&d](bool axial, double K) { return description_source(d, axial, K); });
   p.validate();
   return p;
 }

@@ -83,8 +83,9 @@ TEST_F(Cli, BadTaskFilesGiveOneLineExitTwoAndNoOutput) {
        ":9:", "a key longer than 1024 characters"},
       // Issue 24, item 8: E = 1e20 with EIx, EIy, GJ given: EA L²/EI = 8.4e16.
       {"stiff_in_extension", band_with("young_modulus: 3.2e6", "young_modulus: 1e20"), ":",
-       "rod.stiffness.EA = 4e+16 N with EI = 0.04 N*m^2 and L = 0.29 m gives EA*L^2/EI = "
-       "8.41e+16, beyond 1e+16"},
+       "rod.material.young_modulus = 1e+20 Pa makes EA = E A = 4e+16 N, with EI = 0.04 N*m^2 "
+       "and L = 0.29 m, gives EA*L^2/EI = 8.41e+16, beyond 1e+16: a Cosserat rod that stiff in "
+       "extension is a Kirchhoff rod to double precision; use rod.model = kirchhoff"},
   };
   for (const BadTask& bad : cases) {
     SCOPED_TRACE(bad.name);
