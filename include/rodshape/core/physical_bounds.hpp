@@ -36,6 +36,9 @@ inline constexpr PhysicalRange kMassPerLength{0.0, 1e9, "kg/m"};
 inline constexpr double kMaxPosition = 1e4;  // m, as kLength
 inline constexpr double kMaxGravity = 1e4;   // m/s²
 inline constexpr double kMaxForce = 1e20;    // N, N·m, N/m, N·m/m
+/// A marker's position noise (a standard deviation): 0 … 1 m; a marker seen a metre off its
+/// place measures nothing.
+inline constexpr PhysicalRange kMarkerNoise{0.0, 1.0, "m"};
 /// A rest curvature turns the whole rod through at most this angle, |ũ| L (rad): 1e4 rad is
 /// about 1600 turns.
 inline constexpr double kMaxRestTurn = 1e4;
