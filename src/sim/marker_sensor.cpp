@@ -15,6 +15,8 @@ void MarkerSensorModel::validate() const {
     throw InputError(
         "MarkerSensorModel.markers",
         " = " + std::to_string(markers) + " must be in [2, " + std::to_string(kMaxMarkers) + "]");
+  detail::require_non_negative("MarkerSensorModel.in_plane_noise", in_plane_noise);
+  detail::require_non_negative("MarkerSensorModel.depth_noise", depth_noise);
   require_in_range("MarkerSensorModel.in_plane_noise", in_plane_noise, bounds::kMarkerNoise);
   require_in_range("MarkerSensorModel.depth_noise", depth_noise, bounds::kMarkerNoise);
   detail::require_finite("MarkerSensorModel.dropout", dropout);
