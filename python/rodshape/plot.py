@@ -30,8 +30,11 @@ os.umask(UMASK)
 DEFAULT_URDF = Path(__file__).resolve().parents[2] / "data" / "robots" / "panda.urdf"
 
 
-class InputError(ValueError):
-    """A plan directory that cannot be drawn (the message says why)."""
+try:
+    from ._rodshape import InputError  # the package's one exception for bad input
+except ImportError:  # this file loaded on its own (scripts/plot_plan.py), without the module
+    class InputError(ValueError):
+        """A plan directory that cannot be drawn (the message says why)."""
 
 
 def read_csv(path):

@@ -1,6 +1,7 @@
 // bind_core.cpp: poses, wrenches, rod properties, the clamped rod, configurations and integrate().
 #include "bindings.hpp"
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/rod_integrator.hpp"
@@ -107,12 +108,18 @@ void bind_configuration(py::module_& m) {
   m.def(
       "integrate",
       [](const ClampedRod& rod, const BaseWrench& base_wrench, Derivatives derivatives) {
+        // The library's integrate() checks nothing (hot path); from Python it is an entry point.
+        rod.validate();
+        require_magnitude_at_most("base_wrench.force", base_wrench.force, bounds::kMaxForce, "N");
+        require_magnitude_at_most("base_wrench.moment", base_wrench.moment, bounds::kMaxForce,
+                                  "N*m");
         return integrate(rod, base_wrench, derivatives);
       },
       py::arg("rod"), py::arg("base_wrench") = BaseWrench{},
       py::arg("derivatives") = Derivatives::None, py::call_guard<py::gil_scoped_release>(),
       "The rod integrated from its clamp with base wrench n(0), m(0) (RK4, one step per "
-      "interval unless rod.substeps): a RodConfiguration.");
+      "interval unless rod.substeps): a RodConfiguration. InputError for a bad rod or a wrench "
+      "that is not finite.");
 }
 
 }  // namespace

@@ -74,11 +74,13 @@ Validation validate_task(const PlanTask& task, int runs, std::uint64_t seed, boo
 }
 
 void bind_tasks(py::module_& m) {
-  py::class_<EquilibriumTask>(m, "EquilibriumTask", "An equilibrium task file, read and checked.")
+  // dynamic_attr: the package marks a task whose parts were taken to be changed in code.
+  py::class_<EquilibriumTask>(m, "EquilibriumTask", py::dynamic_attr(),
+                              "An equilibrium task file, read and checked.")
       .def_readwrite("rod", &EquilibriumTask::rod)
       .def_readonly("source", &EquilibriumTask::source)
       .def_property_readonly("kind", [](const EquilibriumTask&) { return "equilibrium"; });
-  py::class_<PlanTask>(m, "PlanTask", "A plan task file, read and checked.")
+  py::class_<PlanTask>(m, "PlanTask", py::dynamic_attr(), "A plan task file, read and checked.")
       .def_property(
           "rod", [](const PlanTask& t) { return t.problem.rod; },
           [](PlanTask& t, const ClampedRod& rod) { t.problem.rod = rod; })

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -33,9 +34,12 @@ double CrossSection::torsion_constant() const {
 void CrossSection::validate(const std::string& field) const {
   if (shape == Shape::Rectangle) {
     detail::require_positive(field + ".width", width);
+    require_in_range(field + ".width", width, bounds::kSectionSize);
     detail::require_positive(field + ".height", height);
+    require_in_range(field + ".height", height, bounds::kSectionSize);
   } else {
     detail::require_positive(field + ".radius", radius);
+    require_in_range(field + ".radius", radius, bounds::kSectionSize);
   }
 }
 

@@ -66,6 +66,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"RodDescription.stiffness", "rod.stiffness"},
       {"RodDescription.rest_curvature", "rod.rest_curvature"},
       {"RodProperties.length", "rod.length"},
+      {"RodProperties.model", "rod.model"},
       {"RodProperties.K_tra[0]", "rod.stiffness.GA"},
       {"RodProperties.K_tra[1]", "rod.stiffness.GA"},
       {"RodProperties.K_tra[2]", "rod.stiffness.EA"},
@@ -99,7 +100,7 @@ std::string task_field_name(const std::string& library_field) {
     const auto found = table().find(head);
     if (found != table().end())
       return std::string(found->second) + library_field.substr(head.size());
-    const std::size_t dot = head.rfind('.');
+    const std::size_t dot = head.find_last_of(".[");  // "ShapeTarget.points[1]": its list too
     if (dot == std::string_view::npos) return library_field;
     head = head.substr(0, dot);
   }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/core/so3.hpp"
 #include "validation.hpp"
 
@@ -149,6 +150,7 @@ DistributedLoad read_distributed_load(const YamlField& root, const RodSection& r
   DistributedLoad load;
   if (const YamlField gravity = root.get("gravity"); gravity.present()) {
     const Eigen::Vector3d g = gravity.vector3();
+    gravity.located([&] { require_magnitude_at_most("gravity", g, bounds::kMaxGravity, "m/s^2"); });
     if (!g.isZero(0.0)) {
       // Weight: f = ρ A g.
       const std::string needs = gravity.path() + " is not zero, so the weight rho*A*g needs ";

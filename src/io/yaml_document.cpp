@@ -105,6 +105,24 @@ int first_tab_indented_line(const std::string& text, int last) {
   return 0;
 }
 
+/// YAML 1.2, 7.4.1: an implicit key is at most 1024 characters; yaml-cpp reads a longer one as a
+/// plain scalar and then fails at its ':' with "illegal map value". The first line up to `last`
+/// (1-based) whose text before its first ': ' (or final ':') is longer, or 0.
+int first_overlong_key_line(const std::string& text, int last) {
+  constexpr std::size_t kMaxImplicitKey = 1024;
+  const std::vector<std::string_view> lines = lines_of(text);
+  for (int k = 0; k < last && k < static_cast<int>(lines.size()); ++k) {
+    std::string_view line = lines[static_cast<std::size_t>(k)];
+    if (line.ends_with('\r')) line.remove_suffix(1);
+    std::size_t colon = line.find(": ");
+    if (colon == std::string_view::npos && line.ends_with(':')) colon = line.size() - 1;
+    if (colon == std::string_view::npos) continue;
+    const std::size_t start = std::min(line.find_first_not_of(" -"), colon);
+    if (colon - start > kMaxImplicitKey) return k + 1;
+  }
+  return 0;
+}
+
 int line_of(const YAML::Mark& mark) { return mark.is_null() ? 0 : mark.line + 1; }
 
 /// Builds nothing; keeps where the document started.
@@ -172,6 +190,11 @@ YAML::Node load_single_document(const std::string& text, const std::string& sour
       fail_at(source, tab_line,
               "malformed YAML: tab characters are not allowed for indentation in YAML; indent "
               "with spaces");
+    }
+    if (const int key_line = first_overlong_key_line(text, line > 0 ? line : 1 << 30)) {
+      fail_at(source, key_line,
+              "malformed YAML: a key longer than 1024 characters (YAML's limit for a key; a task "
+              "file's keys are short names such as rod.length)");
     }
     fail_at(source, line, "malformed YAML: " + error.msg);
   }

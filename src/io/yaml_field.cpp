@@ -182,6 +182,11 @@ void YamlField::expect_mapping(const std::vector<std::string_view>& allowed,
       }
     }
     seen.emplace_back(key, key_at.line());
+    // YAML 1.1's merge key; yaml-cpp reads it as an ordinary key named "<<".
+    if (key == "<<")
+      key_at.fail(key_path +
+                  ": YAML merge keys ('<<') are not supported in task files: write the keys out "
+                  "(anchors and aliases of whole values, &name and *name, are supported)");
     bool known = false;
     for (const std::string_view word : allowed) known = known || word == key;
     if (known) continue;

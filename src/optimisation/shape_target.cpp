@@ -23,6 +23,7 @@
 #include <sstream>
 #include <unsupported/Eigen/Splines>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -71,7 +72,8 @@ void ShapeTarget::validate() const {
     throw InputError("ShapeTarget.points", " has " + std::to_string(points.size()) +
                                                " points; at most " + std::to_string(kMaxPoints));
   for (std::size_t i = 0; i < points.size(); ++i)
-    detail::require_finite("ShapeTarget.points[" + std::to_string(i) + "]", points[i]);
+    require_magnitude_at_most("ShapeTarget.points[" + std::to_string(i) + "]", points[i],
+                              bounds::kMaxPosition, "m");
   detail::require_non_negative("ShapeTarget.energy_weight", energy_weight);
   detail::require_non_negative("ShapeTarget.distance_weight", distance_weight);
   if (energy_weight == 0.0 && distance_weight == 0.0)

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/optimisation/curve_distance.hpp"
 #include "validation.hpp"
@@ -16,6 +17,8 @@ void MarkerSensorModel::validate() const {
         " = " + std::to_string(markers) + " must be in [2, " + std::to_string(kMaxMarkers) + "]");
   detail::require_non_negative("MarkerSensorModel.in_plane_noise", in_plane_noise);
   detail::require_non_negative("MarkerSensorModel.depth_noise", depth_noise);
+  require_in_range("MarkerSensorModel.in_plane_noise", in_plane_noise, bounds::kMarkerNoise);
+  require_in_range("MarkerSensorModel.depth_noise", depth_noise, bounds::kMarkerNoise);
   detail::require_finite("MarkerSensorModel.dropout", dropout);
   if (dropout < 0.0 || dropout > 1.0)
     throw InputError("MarkerSensorModel.dropout",
@@ -26,9 +29,14 @@ void MarkerSensorModel::validate() const {
                      " = " + detail::format_value(frame_rate) +
                          " must be <= " + detail::format_value(kMaxFrameRate));
   detail::require_pose("MarkerSensorModel.camera", camera);
+  require_magnitude_at_most("MarkerSensorModel.camera.position", camera.position,
+                            bounds::kMaxPosition, "m");
   if (wrist) {
     detail::require_non_negative("MarkerSensorModel.wrist.force", wrist->force);
     detail::require_non_negative("MarkerSensorModel.wrist.moment", wrist->moment);
+    require_in_range("MarkerSensorModel.wrist.force", wrist->force, {0.0, bounds::kMaxForce, "N"});
+    require_in_range("MarkerSensorModel.wrist.moment", wrist->moment,
+                     {0.0, bounds::kMaxForce, "N*m"});
   }
 }
 

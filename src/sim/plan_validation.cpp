@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "plant_reach.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
 #include "validation.hpp"
@@ -159,6 +160,7 @@ ValidationResult validate_plan(const PlanProblem& problem,
   // Stage 1: the real rod. Stage 2 (open loop): the plant along the commanded path, from the
   // plan's start; the runs differ in what the sensor sees. Closed loop: each run drives its own.
   result.real_rod = plant.real_rod(problem.rod);
+  check_plant_reach(result.real_rod, plan, plant, problem.validity);
   if (!options.closed_loop) {
     const std::vector<TimedPose> path = commanded_path(problem, plan);
     result.plant =

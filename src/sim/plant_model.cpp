@@ -1,6 +1,7 @@
 // plant_model.cpp: the real rod from the planner's, with the plant's parameters.
 #include "rodshape/sim/plant_model.hpp"
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
 
@@ -14,8 +15,11 @@ void PlantModel::validate() const {
   detail::require_positive("PlantModel.factors.EIy", factors.EIy);
   detail::require_positive("PlantModel.factors.GJ", factors.GJ);
   if (length) detail::require_positive("PlantModel.length", *length);
+  if (length) require_in_range("PlantModel.length", *length, bounds::kLength);
   if (mass_per_length) detail::require_non_negative("PlantModel.mass_per_length", *mass_per_length);
-  detail::require_finite("PlantModel.gravity", gravity);
+  if (mass_per_length)
+    require_in_range("PlantModel.mass_per_length", *mass_per_length, bounds::kMassPerLength);
+  require_magnitude_at_most("PlantModel.gravity", gravity, bounds::kMaxGravity, "m/s^2");
   if (rest_curvature) detail::require_finite("PlantModel.rest_curvature", *rest_curvature);
   detail::require_pose("PlantModel.grasp_offset", grasp_offset);
 }

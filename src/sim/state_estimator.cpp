@@ -7,6 +7,7 @@
 #include <unsupported/Eigen/LevenbergMarquardt>
 #include <vector>
 
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
@@ -232,7 +233,8 @@ void EstimationOptions::validate() const {
   detail::require_positive("EstimationOptions.tip_rotation_sigma", tip_rotation_sigma);
   detail::require_positive("EstimationOptions.prior_sigma", prior_sigma);
   detail::require_positive("EstimationOptions.stiffness_prior_sigma", stiffness_prior_sigma);
-  if (gravity) detail::require_finite("EstimationOptions.gravity", *gravity);
+  if (gravity)
+    require_magnitude_at_most("EstimationOptions.gravity", *gravity, bounds::kMaxGravity, "m/s^2");
   detail::require_positive("EstimationOptions.load_prior_sigma", load_prior_sigma);
   if (tip_covariance) {
     const Matrix6d& c = *tip_covariance;

@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "rodshape/solvers/model_validity.hpp"
+#include "rodshape/solvers/rod_reach.hpp"
 
 namespace rodshape {
 
@@ -26,6 +27,18 @@ void check_held_pose(const EquilibriumAnalysis& analysis,
   if (field.empty()) return;
   check_model_validity(analysis.rod.properties, analysis.solution.configuration,
                        shooting.strain_limits, field, "ShootingOptions.strain_limits");
+}
+
+/// Stage 0: a held tip farther than the rod reaches within the model's range has no equilibrium
+/// worth solving for.
+void check_held_reach(const ClampedRod& rod,
+                      const TipCondition& tip,
+                      const ShootingOptions& shooting) {
+  const std::string field = held_pose_field(tip);
+  if (field.empty()) return;
+  rod.validate();  // its length and strains first: the reach is made of them
+  shooting.validate();
+  check_within_reach(rod, tip, shooting.strain_limits, field, "ShootingOptions.strain_limits");
 }
 
 /// Stage 4: replace an unstable equilibrium by a stable one with the same boundary condition.
@@ -57,6 +70,7 @@ EquilibriumAnalysis analyse_equilibrium(const ClampedRod& rod,
                                         const BaseWrench& initial,
                                         const ShootingOptions& shooting,
                                         const EquilibriumAnalysisOptions& options) {
+  check_held_reach(rod, tip, shooting);
   // Stage 1: the shooting solve; the stability test needs the derivatives at every node.
   ShootingOptions solve = shooting;
   solve.output_derivatives = Derivatives::AllNodes;

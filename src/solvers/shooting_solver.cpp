@@ -7,6 +7,7 @@
 #include <unsupported/Eigen/LevenbergMarquardt>
 
 #include "converged_check.hpp"
+#include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
@@ -53,8 +54,10 @@ using detail::Overloaded;
 void validate_tip(const TipCondition& tip) {
   std::visit(Overloaded{
                  [](const FreeTip& t) {
-                   detail::require_finite("FreeTip.wrench.force", t.wrench.force);
-                   detail::require_finite("FreeTip.wrench.moment", t.wrench.moment);
+                   require_magnitude_at_most("FreeTip.wrench.force", t.wrench.force,
+                                             bounds::kMaxForce, "N");
+                   require_magnitude_at_most("FreeTip.wrench.moment", t.wrench.moment,
+                                             bounds::kMaxForce, "N*m");
                  },
                  [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
                  [](const GraspedTip& t) { detail::require_pose("GraspedTip.pose", t.pose); },

@@ -14,6 +14,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "scene_stages.hpp"
+#include "target_behind_clamp.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -391,6 +392,8 @@ PlanResult plan_rod(const PlanProblem& problem,
     result.status = PlanStatus::Collision;
     result.message = "the rod would not stay clear of the scene: " + result.scene->note;
   }
+  if (result.status == PlanStatus::Partial || result.status == PlanStatus::SnapThrough)
+    result.message += plan_stages::behind_clamp_note(problem);  // why, for a target behind it
   // 7. The timed end-effector path through the waypoints.
   result.end_effector_path =
       time_waypoints(initial_end_effector, result.steps, options.end_effector);

@@ -9,6 +9,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/model_validity.hpp"
+#include "rodshape/solvers/rod_reach.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 #include "rodshape/solvers/stable_equilibrium.hpp"
@@ -48,6 +49,8 @@ void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialSt
 /// The equilibrium held at `tip`, solved from rest (with continuation).
 InitialEquilibrium held_equilibrium(const PlanProblem& problem, const Pose& tip) {
   const TipCondition held = held_tip(tip, problem.grasp);
+  check_within_reach(problem.rod, held, problem.validity, "PlanProblem.initial.tip",
+                     "PlanProblem.validity");
   ShootingOptions options;
   options.output_derivatives = Derivatives::AllNodes;  // for the stability test
   ShootingResult solved = solve_equilibrium(problem.rod, held, BaseWrench{}, options);

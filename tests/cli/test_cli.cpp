@@ -66,6 +66,26 @@ TEST_F(Cli, BadTaskFilesGiveOneLineExitTwoAndNoOutput) {
       {"released", kBandTask + "  released: [rx]\n", ":9:", "tip.released[0]"},
       {"malformed", band_with("height: 0.02}", "height: 0.02"), ":", "malformed YAML"},
       {"no_tip", kBandTask.substr(0, kBandTask.find("tip:")), "", "tip is required"},
+      // Issue 24, item 5: physical sizes beyond their range, a tip out of reach, YAML the reader
+      // does not take, said in words and naming the field.
+      {"huge_length", band_with("length: 0.29", "length: 1e300"),
+       ":2:", "rod.length = 1e+300 must be in [0.0001, 10000] m"},
+      {"tiny_length", band_with("length: 0.29", "length: 1e-300"),
+       ":2:", "rod.length = 1e-300 must be in [0.0001, 10000] m"},
+      {"huge_modulus", band_with("young_modulus: 3.2e6", "young_modulus: 1e300"),
+       ":4:", "rod.material.young_modulus = 1e+300 must be in"},
+      {"huge_gravity", kBandTask + "gravity: [0, 0, -1e300]\n", ":9:", "gravity has magnitude"},
+      {"far_tip", band_with("[0.12, 0.0, 0.22]", "[10, 0, 0]"), ":",
+       "tip: the position is 10 m from the clamp, out of reach"},
+      {"merge_key", "base: &clamp {position: [0, 0, 0]}\n" + kBandTask + "  <<: *clamp\n",
+       ":10:", "tip.<<: YAML merge keys ('<<') are not supported"},
+      {"long_key", kBandTask + std::string(900'000, 'k') + ": 1\n",
+       ":9:", "a key longer than 1024 characters"},
+      // Issue 24, item 8: E = 1e20 with EIx, EIy, GJ given: EA L²/EI = 8.4e16.
+      {"stiff_in_extension", band_with("young_modulus: 3.2e6", "young_modulus: 1e20"), ":",
+       "rod.material.young_modulus = 1e+20 Pa makes EA = E A = 4e+16 N, with EI = 0.04 N*m^2 "
+       "and L = 0.29 m, gives EA*L^2/EI = 8.41e+16, beyond 1e+16: a Cosserat rod that stiff in "
+       "extension is a Kirchhoff rod to double precision; use rod.model = kirchhoff"},
   };
   for (const BadTask& bad : cases) {
     SCOPED_TRACE(bad.name);

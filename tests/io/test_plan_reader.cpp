@@ -151,8 +151,12 @@ TEST(PlanReader, AnInitialTipWithNoEquilibriumIsNamedAtItsLine) {
   // 0.6 m from the clamp: further than the rod (0.29 m) can reach.
   const std::string message =
       plan_error_of(kPlan + "initial:\n  tip: {position: [0.6, 0, 0.1], rotation: [1, 0, 0, 0]}\n");
-  EXPECT_TRUE(message.starts_with("plan.yaml:22: initial.tip: no equilibrium holds the rod there"))
+  // Said before solving (issue 24, item 5), with the reach: 0.29 m × √(1.5² + 0.5² + 0.5²).
+  EXPECT_TRUE(
+      message.starts_with("plan.yaml:22: initial.tip: the position is 0.608276 m from the "
+                          "clamp, out of reach"))
       << message;
+  EXPECT_TRUE(message.ends_with("reaches at most 0.480911 m")) << message;
 }
 
 TEST(PlanReader, TipSectionIsRejectedWithTheReason) {
