@@ -167,6 +167,7 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     io_detail::read_optimiser_section(optimizer, task.options.optimiser);
   if (const YamlField plant = root.get("plant"); plant.present())
     task.plant = io_detail::read_plant_section(plant);
+  task.plant.planner_gravity = io_detail::read_planner_gravity(root);
   if (const YamlField sensor = root.get("sensor"); sensor.present())
     task.sensor = io_detail::read_sensor_section(sensor);
   if (const YamlField loop = root.get("closed_loop"); loop.present())

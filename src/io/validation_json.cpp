@@ -27,7 +27,7 @@ Json plant_object(const ValidationResult& result, const PlantModel& plant) {
   j["GJ"] = k.K_rot.z();
   j["length"] = k.length;
   j["mass_per_length"] = k.mass_per_length;
-  j["gravity"] = io_detail::json_vector(plant.gravity);
+  j["gravity"] = io_detail::json_vector(plant.acting_gravity());  // the one that acted
   j["rest_curvature"] = io_detail::json_vector(k.u_rest);
   j["grasp_offset"] = io_detail::json_pose(plant.grasp_offset);
   return j;

@@ -15,7 +15,8 @@ void PlantModel::validate() const {
   detail::require_positive("PlantModel.factors.GJ", factors.GJ);
   if (length) detail::require_positive("PlantModel.length", *length);
   if (mass_per_length) detail::require_non_negative("PlantModel.mass_per_length", *mass_per_length);
-  detail::require_finite("PlantModel.gravity", gravity);
+  if (gravity) detail::require_finite("PlantModel.gravity", *gravity);
+  detail::require_finite("PlantModel.planner_gravity", planner_gravity);
   if (rest_curvature) detail::require_finite("PlantModel.rest_curvature", *rest_curvature);
   detail::require_pose("PlantModel.grasp_offset", grasp_offset);
 }
@@ -32,12 +33,15 @@ ClampedRod PlantModel::real_rod(const ClampedRod& planned) const {
   if (length) k.length = *length;
   if (mass_per_length) k.mass_per_length = *mass_per_length;
   if (rest_curvature) k.u_rest = *rest_curvature;
-  if (!gravity.isZero() && !(k.mass_per_length > 0.0))
+  const Eigen::Vector3d g = acting_gravity();
+  if (!g.isZero() && !mass_per_length && !(k.mass_per_length > 0.0))
     throw InputError(
-        "PlantModel.gravity",
+        gravity ? "PlantModel.gravity" : "PlantModel.planner_gravity",
         ": the rod's mass per length is not known (give PlantModel.mass_per_length, or "
         "a density for the planner's rod)");
-  rod.load.force += k.mass_per_length * gravity;  // f = ρA g
+  // One gravity acts on the real rod: its weight f = ρA g replaces the planner's
+  // (docs/task-file.md, "plant"). Where both are the same the difference is exactly zero.
+  rod.load.force += k.mass_per_length * g - planned.properties.mass_per_length * planner_gravity;
   rod.validate();
   return rod;
 }

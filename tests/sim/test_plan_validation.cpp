@@ -17,6 +17,8 @@
 namespace rodshape {
 namespace {
 
+using testing::CompareMatrices;
+
 /// The band bent by a wrench, sampled at 10 points; planned in 3 steps (a small, quick plan).
 PlanProblem band_problem() {
   PlanProblem problem;
@@ -50,7 +52,7 @@ double max_node_distance(const RodConfiguration& a, const RodConfiguration& b) {
 PlantModel paper_mismatch() {
   PlantModel plant;
   plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   plant.grasp_offset.position = {0.002, 0.0, 0.0};
   return plant;
 }
@@ -67,7 +69,7 @@ TEST(PlantModel, ScalesTheStiffnessesAndAddsTheWeight) {
   PlantModel plant;
   plant.stiffness_scale = 0.85;
   plant.factors.GJ = 2.0;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   const ClampedRod real = plant.real_rod(planned);
   EXPECT_DOUBLE_EQ(real.properties.K_rot.x(), 0.85 * 0.04);
   EXPECT_DOUBLE_EQ(real.properties.K_rot.z(), 0.85 * 2.0 * 0.028);
@@ -75,6 +77,29 @@ TEST(PlantModel, ScalesTheStiffnessesAndAddsTheWeight) {
   // ρA g: 1392 kg/m³ × 4e-4 m² × 9.81 m/s² = 5.46 N/m, the paper's 1.6 N over 0.29 m.
   EXPECT_NEAR(real.load.force.z(), -1392 * 4e-4 * 9.81, 1e-9);
   EXPECT_NEAR(-real.load.force.z() * real.properties.length, 1.58, 0.01);
+}
+
+TEST(PlantModel, OneGravityActsOnTheRealRod) {
+  // Issue 24: the plant's weight was added to the planner's (twice the weight when both were
+  // given), and under the planner's gravity the plant's mass per length changed nothing.
+  ClampedRod planned = samples::rubber_band();
+  const Eigen::Vector3d g(0.0, 0.0, -9.81), push(0.1, 0.0, 0.0);  // push: a load, not weight
+  const double m = planned.properties.mass_per_length;
+  planned.load = DistributedLoad::gravity(m, g);
+  planned.load.force += push;
+  PlantModel plant;
+  plant.planner_gravity = g;
+  EXPECT_EQ(plant.real_rod(planned).load.force, planned.load.force);  // the planner's rod, exactly
+  plant.gravity = g;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, m * g + push, 1e-12));
+  plant.mass_per_length = 2.0 * m;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, 2.0 * m * g + push, 1e-12));
+  plant.mass_per_length = 0.0;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, push, 1e-12));
+  plant.gravity.reset();  // the planner's gravity, on the plant's own mass
+  plant.mass_per_length = 3.0 * m;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, 3.0 * m * g + push, 1e-12));
+  EXPECT_EQ(plant.acting_gravity(), g);
 }
 
 TEST(PlantModel, BadParametersNameTheField) {
@@ -87,7 +112,7 @@ TEST(PlantModel, BadParametersNameTheField) {
     EXPECT_EQ(std::string(error.what()).rfind("PlantModel.stiffness_scale", 0), 0u) << error.what();
   }
   PlantModel heavy;
-  heavy.gravity = {0.0, 0.0, -9.81};
+  heavy.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   ClampedRod massless = samples::rubber_band();
   massless.properties.mass_per_length = 0.0;
   EXPECT_THROW((void)heavy.real_rod(massless), InputError);
@@ -195,7 +220,7 @@ TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
   // grows well beyond the plan's.
   PlantModel plant;
   plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   const ValidationResult nominal = validate_plan(band_problem(), band_plan(), {}, noiseless());
   const ValidationResult mismatched =
       validate_plan(band_problem(), band_plan(), plant, noiseless());
