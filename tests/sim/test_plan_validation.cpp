@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "rodshape/core/rod_integrator.hpp"
@@ -212,7 +214,22 @@ TEST(PlanValidation, AFixedSeedRepeatsBitForBit) {
     total += 10.0;
   }
   EXPECT_NEAR(seen / total, 0.9, 0.03);
-  ASSERT_TRUE(a.runs[0].frames.back().wrist.has_value());
+  ASSERT_TRUE(a.runs[0].last_seen.wrist.has_value());
+}
+
+TEST(PlanValidation, ASeedThatWouldWrapIsBadInput) {
+  // Issue 24: run k is seeded with seed + k - 1, and 2^64 - 1 with two runs wrapped to 0.
+  ValidationOptions options;
+  options.runs = 2;
+  options.seed = std::numeric_limits<std::uint64_t>::max();
+  try {
+    options.validate();
+    FAIL() << "a seed that wraps was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "ValidationOptions.seed") << error.what();
+  }
+  options.seed -= 1;
+  EXPECT_NO_THROW(options.validate());
 }
 
 TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
