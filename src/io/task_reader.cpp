@@ -198,7 +198,9 @@ EquilibriumTask read_equilibrium_task(const std::string& path) {
 }
 
 PlanTask read_plan_task(const std::string& path) {
-  return parse_plan_task(read_text_file(path), path);
+  PlanTask task = parse_plan_task(read_text_file(path), path);
+  task.input_files.insert(task.input_files.begin(), path);
+  return task;
 }
 
 }  // namespace rodshape

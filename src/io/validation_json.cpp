@@ -1,6 +1,7 @@
 // validation_json.cpp: the validation document (validation_output.hpp; schema in
 // docs/task-file.md, "validate").
 #include "io/json_format.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/validation_output.hpp"
 
 namespace rodshape {
@@ -106,6 +107,7 @@ std::string validation_json(const ValidationResult& result,
                             const PlanResult& plan,
                             const PlanTask& task) {
   Json j;
+  j[kGeneratorKey] = generator_signature();  // an earlier run's output, told by its first key
   j["status"] = to_string(result.status);
   j["message"] = result.message;
   j["source"] = task.source;

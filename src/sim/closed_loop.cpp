@@ -189,7 +189,8 @@ class Loop {
 
   /// Why an estimate not acted on was not.
   std::string kept_message(const Checkpoint& c) const {
-    if (c.significant || !c.estimate.converged) return "plan kept";
+    if (c.significant) return "plan kept";
+    if (!c.estimate.converged) return "plan kept: " + c.estimate.message;
     if (!c.consistent) {
       std::ostringstream out;
       out.precision(3);

@@ -129,6 +129,40 @@ TEST(PlantModel, BadParametersNameTheField) {
   EXPECT_THROW(sensor.validate(), InputError);
 }
 
+TEST(MarkerSensor, ACameraThatSeesNoMarkerNeedsAWristSensor) {
+  // Issue 24: dropout 1 without a wrist sensor measured nothing, yet a closed loop reported every
+  // estimate converged and consistent.
+  MarkerSensorModel sensor;
+  sensor.dropout = 1.0;
+  try {
+    sensor.validate();
+    FAIL() << "a sensor that measures nothing was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "MarkerSensorModel.dropout") << error.what();
+  }
+  sensor.wrist = WristNoise{0.05, 0.005};  // the wrist wrench alone fixes the shape
+  EXPECT_NO_THROW(sensor.validate());
+}
+
+TEST(ShapeError, NoMarkerSeenIsNoMeasuredError) {
+  // Without a visible marker the measured curve is the clamp alone: its distances are not an
+  // error of the shape (they were reported as one, 155 mm); the true error is still known.
+  const ClampedRod rod = samples::rubber_band();
+  const RodConfiguration straight = integrate(rod, BaseWrench{});
+  MarkerSensorModel model = noiseless();
+  model.dropout = 1.0;
+  model.wrist = WristNoise{0.0, 0.0};
+  MarkerSensor sensor(model, 1);
+  const SensorFrame seen = sensor.observe({0.0, Pose{}, BaseWrench{}, straight}, 0.29);
+  ASSERT_EQ(seen.visible(), 0);
+  const ShapeError error =
+      shape_error({{0.003, 0.0, 0.1}}, rod.clamp.position, seen, straight, model.camera);
+  EXPECT_TRUE(std::isnan(error.error_3d));
+  EXPECT_TRUE(std::isnan(error.error_2d));
+  EXPECT_NEAR(error.true_error, 0.003, 1e-12);
+  EXPECT_EQ(error.visible_markers, 0);
+}
+
 TEST(ShapeError, PolylineDistanceByHand) {
   const std::vector<Eigen::Vector3d> polyline{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}};
   EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0.5, 0, 0.5)), 0.5);
