@@ -170,8 +170,12 @@ std::string ValidationResult::brief() const {
   out << to_string(status);
   if (!runs.empty()) {
     const ShapeError& e = runs.front().final;
-    out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d << " mm, true "
-        << 1e3 * e.true_error << " mm)";
+    if (std::isfinite(e.error_3d))
+      out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d
+          << " mm, true " << 1e3 * e.true_error << " mm)";
+    else  // no marker seen at the last frame: nothing measured (shape_error())
+      out << ": final true error " << 1e3 * e.true_error
+          << " mm (no marker seen: no measured error)";
   }
   out << ", " << runs.size() << (runs.size() == 1 ? " run" : " runs");
   if (status != ValidationStatus::Complete) out << "; " << message;

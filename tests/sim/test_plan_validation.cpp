@@ -163,6 +163,16 @@ TEST(ShapeError, NoMarkerSeenIsNoMeasuredError) {
   EXPECT_EQ(error.visible_markers, 0);
 }
 
+TEST(PlanValidation, ABriefWithoutAMarkerSeenSaysNothingWasMeasured) {
+  ValidationResult result;
+  result.status = ValidationStatus::Complete;
+  ValidationRun& run = result.runs.emplace_back();
+  run.final.error_3d = run.final.error_2d = std::numeric_limits<double>::quiet_NaN();
+  run.final.true_error = 2e-4;
+  EXPECT_EQ(result.brief(),
+            "complete: final true error 0.2 mm (no marker seen: no measured error), 1 run");
+}
+
 TEST(ShapeError, PolylineDistanceByHand) {
   const std::vector<Eigen::Vector3d> polyline{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}};
   EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0.5, 0, 0.5)), 0.5);
