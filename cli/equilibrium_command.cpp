@@ -8,6 +8,7 @@
 #include "exit_code.hpp"
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/equilibrium_analysis.hpp"
@@ -41,6 +42,8 @@ class EquilibriumCommand final : public Command {
 
   int run() override {
     const EquilibriumTask task = read_equilibrium_task(task_path_);
+    const bool to_file = !output_path_.empty() && output_path_ != "-";
+    if (to_file) check_not_an_input(output_path_, {task_path_});  // before solving: nothing written
 
     EquilibriumAnalysis analysis;
     try {
@@ -50,7 +53,7 @@ class EquilibriumCommand final : public Command {
     }
     const ShootingSummary& summary = analysis.solution.summary;
     const std::string json = equilibrium_result_json(analysis);
-    if (output_path_.empty() || output_path_ == "-") {
+    if (!to_file) {
       if (!quiet_) write_to_standard_output(json);
     } else {
       write_file_atomically(output_path_, json);

@@ -79,10 +79,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "rodshape " + rodshape::version());
   app.require_subcommand(1);
   app.footer(
-      "Exit codes: 0 success, 2 bad input (task file, command line, output path; for plan also "
-      "an infeasible target), 3 solver did not converge, plan stopped at a failed step or ik found "
-      "no solution (the "
-      "result is still written), 1 internal error.");
+      "Exit codes: 0 success, 2 bad input (task file, command line, output path, an infeasible "
+      "target; nothing is written or removed), 3 solver did not converge, plan stopped at a "
+      "failed step, validate's plant snapped or was lost, or ik found no solution (the result is "
+      "still written), 1 internal error.");
   app.failure_message([](const CLI::App*, const CLI::Error& error) {
     return "error: " + one_line(error.what()) + " (run 'rodshape --help')\n";
   });

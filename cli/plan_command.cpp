@@ -11,6 +11,7 @@
 #include "exit_code.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -30,9 +31,7 @@ int report_status(const std::string& task_path, const PlanResult& result) {
         return kNotConverged;
       }
       return kSuccess;
-    case PlanStatus::Infeasible:
-      std::cerr << "error: " << task_path
-                << ": infeasible target: " << fields_in_task_names(result.message) << "\n";
+    case PlanStatus::Infeasible:  // thrown as bad input before anything is written
       return kBadInput;
     case PlanStatus::SnapThrough:
       std::cerr << "error: " << task_path
@@ -76,9 +75,11 @@ class PlanCommand final : public Command {
 
   int run() override {
     const PlanTask task = read_plan_task(task_path_);
+    // Bad input writes and removes nothing: the outputs' places are checked first (no input among
+    // them, no file that is not an earlier run's), and the earlier run's files are replaced only
+    // by write_plan(), once the plan is made.
     check_output_directory(output_directory_);
-    // An earlier run's plan.json must not outlive this run if it is killed or fails.
-    remove_plan_files(output_directory_);
+    check_output_files(output_directory_, plan_file_names(), task.input_files);
     PlanResult result;
     try {
       result = plan(task.problem, task.options);
@@ -86,6 +87,7 @@ class PlanCommand final : public Command {
       // The library names its own fields: say them as the task file does, and where.
       throw InputError(task.locate(error));
     }
+    if (result.status == PlanStatus::Infeasible) throw task.infeasible_target(result);
     const std::vector<std::string> written = write_plan(output_directory_, result, task);
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief(task.options.steps))

@@ -3,14 +3,17 @@
 //   task file -> PlanTask (io) -> plan (trajectory) -> validate_plan (sim) -> validation.* (io)
 #include "validate_command.hpp"
 
+#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "exit_code.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/io/validation_output.hpp"
@@ -20,6 +23,18 @@
 namespace rodshape::cli {
 
 namespace {
+
+/// --seed as written: a whole number in [0, 2^64 - 1], without a sign (CLI11 would take -1 as
+/// 2^64 - 1 and wrap a larger number).
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, seed);
+  if (text.empty() || error != std::errc() || stop != end)
+    throw InputError("--seed = " + text + " must be a whole number in [0, " +
+                     std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
+  return seed;
+}
 
 class ValidateCommand final : public Command {
  public:
@@ -43,30 +58,56 @@ class ValidateCommand final : public Command {
             "--runs", options_.runs,
             "Repeats with the sensor's noise drawn anew (1 to 1000; the plant is the same)")
         ->check(CLI::Range(1, ValidationOptions::kMaxRuns));
-    command->add_option("--seed", options_.seed, "Seed of the first run (run k: seed + k - 1)");
+    command
+        ->add_option("--seed", seed_,
+                     "Seed of the first run (run k: seed + k - 1), a whole number in [0, 2^64 - "
+                     "runs]")
+        ->type_name("S");
     command->add_flag("--closed-loop", options_.closed_loop,
                       "Close the loop: at each waypoint, estimate the rod from the sensors and "
                       "re-plan the rest (the task's closed_loop section)");
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
+    command->footer(
+        "Exit codes: 0 the plant followed the whole path; 2 bad input (task file, command line, "
+        "output path, an infeasible target): nothing written or removed; 3 the plant snapped or "
+        "was lost, or the plan has no path to carry out (the files are still written); 1 internal "
+        "error.");
     return command;
   }
 
   int run() override {
+    ValidationOptions options = options_;
+    options.seed = parse_seed(seed_);
+    try {
+      options.validate();
+    } catch (const InputError& error) {
+      throw InputError(fields_in_task_names(error.what()));
+    }
     const PlanTask task = read_plan_task(task_path_);
+    // As for plan: bad input writes and removes nothing (plan_command.cpp).
     check_output_directory(output_directory_);
+    std::vector<std::string> outputs = plan_file_names();
+    for (const std::string& name : validation_file_names()) outputs.push_back(name);
+    check_output_files(output_directory_, outputs, task.input_files);
     PlanResult plan;
     ValidationResult result;
     try {
       plan = rodshape::plan(task.problem, task.options);
-      if (plan.end_effector_path.empty()) {
-        std::cerr << "error: " << task_path_ << ": nothing to validate: "
-                  << fields_in_task_names(plan.brief(task.options.steps)) << "\n";
-        write_plan(output_directory_, plan, task);
-        return kPartialPlan;
-      }
-      ValidationOptions options = options_;
-      options.loop = task.closed_loop;
-      options.planning = task.options;
+    } catch (const InputError& error) {
+      throw InputError(task.locate(error));
+    }
+    if (plan.status == PlanStatus::Infeasible) throw task.infeasible_target(plan);
+    if (plan.end_effector_path.empty()) {
+      std::cerr << "error: " << task_path_
+                << ": nothing to validate: " << fields_in_task_names(plan.brief(task.options.steps))
+                << "\n";
+      write_plan(output_directory_, plan, task);
+      remove_earlier_outputs(output_directory_, validation_file_names());
+      return kPartialPlan;
+    }
+    options.loop = task.closed_loop;
+    options.planning = task.options;
+    try {
       result = validate_plan(task.problem, plan, task.plant, task.sensor, options);
     } catch (const InputError& error) {
       throw InputError(task.locate(error));
@@ -90,6 +131,7 @@ class ValidateCommand final : public Command {
   std::string task_path_;
   std::string output_directory_;
   ValidationOptions options_;
+  std::string seed_ = "1";
   bool quiet_ = false;
 };
 

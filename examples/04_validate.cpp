@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   try {
     PlanTask task = read_plan_task("examples/plan_c_arc.yaml");
     task.plant.stiffness_scale = 0.85;
-    task.plant.gravity = {0.0, 0.0, -9.81};
+    task.plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
     task.plant.grasp_offset.position = {0.002, 0.0, 0.0};
 
     const PlanResult planned = plan(task.problem, task.options);

@@ -24,7 +24,12 @@ void bind_models(py::module_& m) {
       .def_readwrite("length", &PlantModel::length, "m, or None: the planner's")
       .def_readwrite("mass_per_length", &PlantModel::mass_per_length,
                      "ρA, kg/m, or None: the planner's")
-      .def_readwrite("gravity", &PlantModel::gravity, "(3,) m/s², world frame")
+      .def_readwrite("gravity", &PlantModel::gravity,
+                     "(3,) m/s², world frame: the one gravity on the real rod, or None: "
+                     "planner_gravity")
+      .def_readwrite("planner_gravity", &PlantModel::planner_gravity,
+                     "(3,) m/s²: the planner's gravity (the task's), whose weight the plant's "
+                     "replaces")
       .def_readwrite("rest_curvature", &PlantModel::rest_curvature, "ũ (3,) 1/m, or None")
       .def_readwrite("grasp_offset", &PlantModel::grasp_offset,
                      "the tip's actual pose in the commanded tip frame")

@@ -39,6 +39,9 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"ArmReachOptions.refinement_steps", "robot.reach.refinement_steps"},
       // sim
       {"PlantModel.factors", "plant.stiffness_factors"},
+      {"PlantModel.planner_gravity", "gravity"},
+      {"ValidationOptions.seed", "--seed"},
+      {"ValidationOptions.runs", "--runs"},
       {"PlantModel", "plant"},
       {"MarkerSensorModel.in_plane_noise", "sensor.noise.in_plane"},
       {"MarkerSensorModel.depth_noise", "sensor.noise.depth"},

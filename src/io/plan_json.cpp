@@ -9,6 +9,7 @@
 #include "io/json_format.hpp"
 #include "io/scene_json.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/solvers/solve_status.hpp"
@@ -221,6 +222,7 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   const bool complete = plan.status == PlanStatus::Complete;
 
   Json result;
+  result[kGeneratorKey] = generator_signature();  // an earlier run's output, told by its first key
   result["status"] = to_string(plan.status);
   result["message"] = fields_in_task_names(plan.message);
   result["reason"] = complete ? Json(nullptr) : Json(fields_in_task_names(plan.message));
@@ -275,6 +277,7 @@ std::string joint_trajectory_json(const JointTrajectoryResult& trajectory) {
     points.push_back(std::move(point));
   }
   Json result;
+  result[kGeneratorKey] = generator_signature();
   result["joint_names"] = trajectory.joint_names;
   result["points"] = std::move(points);
   return io_detail::format_json(result);

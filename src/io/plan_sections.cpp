@@ -229,6 +229,7 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
     urdf.fail(urdf.path() + ": " + message);
   }
 
+  task.input_files.push_back(path.string());  // never an output of the run (issue 24)
   PlanArm& result = task.problem.arm.emplace(PlanArm{std::move(*arm), {}});
   ArmPlanOptions& options = task.options.arm;
   if (const YamlField base = robot.get("base"); base.present())

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "overloaded.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
@@ -433,7 +434,7 @@ void draw_legend(Canvas& canvas, int n) {
 std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
   Canvas canvas(fit_view(drawn_points(plan, task.problem)));
   std::ostringstream& out = canvas.out();
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" << svg_signature_comment() << '\n';
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(kWidth)
       << "\" height=\"" << px(kHeight) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(kHeight)
       << "\">\n";

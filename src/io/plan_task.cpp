@@ -33,4 +33,16 @@ std::string PlanTask::locate(const InputError& error) const {
   }
 }
 
+InputError PlanTask::infeasible_target(const PlanResult& plan) const {
+  const std::string& reason = plan.feasibility.reason;
+  const int i = plan.feasibility.offending_point;
+  if (i < 0) return InputError(source + ": infeasible target: " + fields_in_task_names(reason));
+  // Located at the offending point: "<source>:<line>: target.points[i] <why>".
+  const std::string field = "ShapeTarget.points", index = "[" + std::to_string(i) + "]";
+  const std::string why = reason.starts_with(field + index)
+                              ? reason.substr(field.size() + index.size())
+                              : ": " + reason;
+  return InputError(locate(InputError(field, index + why + ": the target is infeasible")));
+}
+
 }  // namespace rodshape

@@ -5,6 +5,7 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
@@ -32,15 +33,7 @@ const std::vector<std::string>& plan_file_names() {
 }
 
 void remove_plan_files(const std::string& directory) {
-  for (const std::string& name : plan_file_names()) {
-    const fs::path path = fs::path(directory) / name;
-    std::error_code error;
-    const fs::file_status status = fs::symlink_status(path, error);
-    if (error || !fs::exists(status)) continue;
-    if (!fs::remove(path, error) && error)
-      throw InputError(path.string() +
-                       ": cannot remove the file of an earlier run: " + error.message());
-  }
+  remove_earlier_outputs(directory, plan_file_names());
 }
 
 void check_output_directory(const std::string& directory) {
@@ -59,9 +52,8 @@ std::vector<std::string> write_plan(const std::string& directory,
     write_file_atomically((dir / name).string(), content);
     written.push_back(name);
   };
-  const auto remove = [&](const char* name) {  // a file of an earlier run
-    std::error_code ignored;
-    fs::remove(dir / name, ignored);
+  const auto remove = [&](const char* name) {  // a file of an earlier run, only if rodshape's
+    remove_earlier_outputs(directory, {name});
   };
   write("plan.json", plan_result_json(plan, task));
   if (plan.status != PlanStatus::Infeasible) {

@@ -45,6 +45,11 @@ PlantModel read_plant_section(const YamlField& plant) {
   return model;
 }
 
+Eigen::Vector3d read_planner_gravity(const YamlField& root) {
+  if (const YamlField gravity = root.get("gravity"); gravity.present()) return gravity.vector3();
+  return Eigen::Vector3d::Zero();
+}
+
 MarkerSensorModel read_sensor_section(const YamlField& sensor) {
   sensor.expect_mapping({"markers", "noise", "dropout", "frame_rate", "camera", "wrench_noise"});
   MarkerSensorModel model;

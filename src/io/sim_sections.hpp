@@ -14,6 +14,10 @@ namespace rodshape::io_detail {
 /// gravity, rest_curvature, grasp_offset (a pose).
 PlantModel read_plant_section(const YamlField& plant);
 
+/// The task's top-level `gravity` (zero when absent): the planner's, which the plant's weight
+/// replaces (PlantModel::planner_gravity).
+Eigen::Vector3d read_planner_gravity(const YamlField& root);
+
 /// `sensor`: markers, noise {in_plane, depth}, dropout, frame_rate, camera (a pose),
 /// wrench_noise {force, moment} (absent: no wrist sensor).
 MarkerSensorModel read_sensor_section(const YamlField& sensor);

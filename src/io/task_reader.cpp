@@ -172,6 +172,7 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     io_detail::read_optimiser_section(optimizer, task.options.optimiser);
   if (const YamlField plant = root.get("plant"); plant.present())
     task.plant = io_detail::read_plant_section(plant);
+  task.plant.planner_gravity = io_detail::read_planner_gravity(root);
   if (const YamlField sensor = root.get("sensor"); sensor.present())
     task.sensor = io_detail::read_sensor_section(sensor);
   if (const YamlField loop = root.get("closed_loop"); loop.present())
@@ -204,7 +205,9 @@ EquilibriumTask read_equilibrium_task(const std::string& path) {
 }
 
 PlanTask read_plan_task(const std::string& path) {
-  return parse_plan_task(read_text_file(path), path);
+  PlanTask task = parse_plan_task(read_text_file(path), path);
+  task.input_files.insert(task.input_files.begin(), path);
+  return task;
 }
 
 }  // namespace rodshape

@@ -8,6 +8,7 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/validation_output.hpp"
 
 namespace rodshape {
@@ -94,7 +95,9 @@ std::string validation_csv(const ValidationResult& result) {
 std::string validation_svg(const ValidationResult& result) {
   const Axes axes = fit_axes(result);
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << svg_signature_comment()
+      << "\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
          "version=\"1.1\" width=\""
       << kWidth << "\" height=\"" << kHeight << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << kLeft
@@ -110,6 +113,12 @@ std::string validation_svg(const ValidationResult& result) {
     draw_series(out, axes, result.runs.front().time, result.runs.front().true_error, kColours[2]);
   out << "</svg>\n";
   return out.str();
+}
+
+const std::vector<std::string>& validation_file_names() {
+  static const std::vector<std::string> names = {"validation.json", "validation.csv",
+                                                 "validation.svg"};
+  return names;
 }
 
 std::vector<std::string> write_validation(const std::string& directory,

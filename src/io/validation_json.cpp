@@ -1,6 +1,7 @@
 // validation_json.cpp: the validation document (validation_output.hpp; schema in
 // docs/task-file.md, "validate").
 #include "io/json_format.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/validation_output.hpp"
 
 namespace rodshape {
@@ -27,7 +28,7 @@ Json plant_object(const ValidationResult& result, const PlantModel& plant) {
   j["GJ"] = k.K_rot.z();
   j["length"] = k.length;
   j["mass_per_length"] = k.mass_per_length;
-  j["gravity"] = io_detail::json_vector(plant.gravity);
+  j["gravity"] = io_detail::json_vector(plant.acting_gravity());  // the one that acted
   j["rest_curvature"] = io_detail::json_vector(k.u_rest);
   j["grasp_offset"] = io_detail::json_pose(plant.grasp_offset);
   return j;
@@ -106,6 +107,7 @@ std::string validation_json(const ValidationResult& result,
                             const PlanResult& plan,
                             const PlanTask& task) {
   Json j;
+  j[kGeneratorKey] = generator_signature();  // an earlier run's output, told by its first key
   j["status"] = to_string(result.status);
   j["message"] = result.message;
   j["source"] = task.source;

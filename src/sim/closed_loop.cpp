@@ -78,16 +78,19 @@ class Loop {
     for (TimedPose& sample : path) sample.t += t;
     if (joints_) path = hand_path(path);
     const double rate = sensor_.model().frame_rate;
-    PlantRun part = drive_plant(rod_, problem_.grasp, plant_offset_, path, w,
-                                frames_within(t, path.back().t, rate, first), plant_);
-    for (const PlantFrame& frame : part.frames) {
-      run_.frames.push_back(sensor_.observe(frame, rod_.properties.length));
-      run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position,
-                                        run_.frames.back(), frame.configuration,
-                                        sensor_.model().camera));
-    }
+    PlantRun part = drive_plant(
+        rod_, problem_.grasp, plant_offset_, path, w, frames_within(t, path.back().t, rate, first),
+        [&](const PlantFrame& frame) { see(frame); }, plant_);
     append(part);
     return part;
+  }
+
+  /// One frame seen and its errors recorded; the frame itself is not kept (issue 24).
+  void see(const PlantFrame& frame) {
+    run_.last_seen = sensor_.observe(frame, rod_.properties.length);
+    run_.times.push_back(frame.t);
+    run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position, run_.last_seen,
+                                      frame.configuration, sensor_.model().camera));
   }
 
   /// The segment as the hand moves along it: IK at every sample, from the joints the arm has
@@ -112,7 +115,7 @@ class Loop {
 
   void append(const PlantRun& part) {
     PlantRun& all = run_.plant;
-    all.frames.insert(all.frames.end(), part.frames.begin(), part.frames.end());
+    all.frames += part.frames;
     all.events.insert(all.events.end(), part.events.begin(), part.events.end());
     all.solves += part.solves;
     all.lost = part.lost;
@@ -125,19 +128,16 @@ class Loop {
     const int n = loop_.checkpoint_frames;
     const double rate = sensor_.model().frame_rate;
     PlantFrame still = run_.plant.last;
-    std::vector<Eigen::Vector3d> sum(run_.frames.back().markers.size(), Eigen::Vector3d::Zero());
+    std::vector<Eigen::Vector3d> sum(run_.last_seen.markers.size(), Eigen::Vector3d::Zero());
     std::vector<int> count(sum.size(), 0);
-    SensorFrame mean = run_.frames.back();
+    SensorFrame mean = run_.last_seen;
     for (int k = 0; k < n; ++k) {
       if (k > 0) {
         still.t = t + k / rate;
-        run_.frames.push_back(sensor_.observe(still, rod_.properties.length));
-        run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position,
-                                          run_.frames.back(), still.configuration,
-                                          sensor_.model().camera));
-        run_.plant.frames.push_back(still);
+        see(still);
+        ++run_.plant.frames;
       }
-      const SensorFrame& seen = run_.frames.back();
+      const SensorFrame& seen = run_.last_seen;
       for (std::size_t j = 0; j < sum.size(); ++j)
         if (seen.markers[j]) {
           sum[j] += *seen.markers[j];
@@ -189,7 +189,8 @@ class Loop {
 
   /// Why an estimate not acted on was not.
   std::string kept_message(const Checkpoint& c) const {
-    if (c.significant || !c.estimate.converged) return "plan kept";
+    if (c.significant) return "plan kept";
+    if (!c.estimate.converged) return "plan kept: " + c.estimate.message;
     if (!c.consistent) {
       std::ostringstream out;
       out.precision(3);

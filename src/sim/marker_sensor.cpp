@@ -23,6 +23,11 @@ void MarkerSensorModel::validate() const {
   if (dropout < 0.0 || dropout > 1.0)
     throw InputError("MarkerSensorModel.dropout",
                      " = " + detail::format_value(dropout) + " must be in [0, 1]");
+  // A camera that never sees a marker, and no wrist sensor: nothing would be measured (issue 24).
+  if (dropout == 1.0 && !wrist)
+    throw InputError("MarkerSensorModel.dropout",
+                     " = 1 hides every marker, and there is no wrist sensor "
+                     "(MarkerSensorModel.wrist): nothing would be measured");
   detail::require_positive("MarkerSensorModel.frame_rate", frame_rate);
   if (frame_rate > kMaxFrameRate)
     throw InputError("MarkerSensorModel.frame_rate",

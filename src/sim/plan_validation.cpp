@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "plant_reach.hpp"
@@ -15,29 +16,53 @@ namespace rodshape {
 
 namespace {
 
-/// Stage 3: one run of the sensor over the plant's frames, with the errors at each frame.
-ValidationRun observe_run(const ValidationResult& result,
-                          const PointSet& points,
-                          const MarkerSensorModel& sensor,
-                          std::uint64_t seed) {
-  ValidationRun run;
-  run.seed = seed;
-  MarkerSensor camera(sensor, seed);
-  const Eigen::Vector3d clamp = result.real_rod.clamp.position;
-  for (const PlantFrame& frame : result.plant.frames) {
-    SensorFrame seen = camera.observe(frame, result.real_rod.properties.length);
-    const ShapeError error = shape_error(points, clamp, seen, frame.configuration, sensor.camera);
-    run.time.push_back(frame.t);
-    run.error_3d.push_back(error.error_3d);
-    run.error_2d.push_back(error.error_2d);
-    run.true_error.push_back(error.true_error);
-    run.visible_markers.push_back(error.visible_markers);
-    run.frames.push_back(std::move(seen));
-    run.final = error;
+/// A frame's errors appended to a run's series.
+void record(ValidationRun& run, double t, const ShapeError& error) {
+  run.time.push_back(t);
+  run.error_3d.push_back(error.error_3d);
+  run.error_2d.push_back(error.error_2d);
+  run.true_error.push_back(error.true_error);
+  run.visible_markers.push_back(error.visible_markers);
+  run.final = error;
+}
+
+/// Stages 2 and 3, open loop: the plant driven once along the commanded path, each frame seen by
+/// every run's sensor (run k's own random stream) as it is reached and then dropped: a run keeps
+/// only its series (issue 24: the frames of 1e6 frames do not fit in memory).
+void drive_and_observe(ValidationResult& result,
+                       const PlanProblem& problem,
+                       const PlanResult& plan,
+                       const PlantModel& plant,
+                       const MarkerSensorModel& sensor,
+                       const ValidationOptions& options,
+                       const std::vector<TimedPose>& path,
+                       const std::vector<double>& times) {
+  std::vector<MarkerSensor> cameras;
+  for (int k = 0; k < options.runs; ++k) {
+    ValidationRun& run = result.runs.emplace_back();
+    run.seed = options.seed + static_cast<std::uint64_t>(k);
+    for (auto* series : {&run.time, &run.error_3d, &run.error_2d, &run.true_error})
+      series->reserve(times.size());
+    run.visible_markers.reserve(times.size());
+    cameras.emplace_back(sensor, run.seed);
   }
-  run.events = result.plant.events;
-  run.plant_final = result.plant.last;
-  return run;
+  const double length = result.real_rod.properties.length;
+  const Eigen::Vector3d clamp = result.real_rod.clamp.position;
+  const auto see = [&](const PlantFrame& frame) {
+    for (std::size_t k = 0; k < cameras.size(); ++k) {
+      ValidationRun& run = result.runs[k];
+      run.last_seen = cameras[k].observe(frame, length);
+      record(run, frame.t,
+             shape_error(problem.target.points, clamp, run.last_seen, frame.configuration,
+                         sensor.camera));
+    }
+  };
+  result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path,
+                             plan.initial_wrench, times, see, options.plant);
+  for (ValidationRun& run : result.runs) {
+    run.events = result.plant.events;
+    run.plant_final = result.plant.last;
+  }
 }
 
 /// One closed-loop run: its own plant, driven segment by segment with a checkpoint at each
@@ -56,22 +81,41 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
   ValidationRun run;
   run.seed = seed;
   run.closed_loop = true;
-  for (std::size_t k = 0; k < loop.errors.size(); ++k) {
-    const ShapeError& error = loop.errors[k];
-    run.time.push_back(loop.frames[k].t);
-    run.error_3d.push_back(error.error_3d);
-    run.error_2d.push_back(error.error_2d);
-    run.true_error.push_back(error.true_error);
-    run.visible_markers.push_back(error.visible_markers);
-    run.final = error;
-  }
-  run.frames = std::move(loop.frames);
+  for (auto* series : {&run.time, &run.error_3d, &run.error_2d, &run.true_error})
+    series->reserve(loop.errors.size());
+  run.visible_markers.reserve(loop.errors.size());
+  for (std::size_t k = 0; k < loop.errors.size(); ++k) record(run, loop.times[k], loop.errors[k]);
+  loop.times = {};
+  loop.errors = {};
+  run.last_seen = std::move(loop.last_seen);
   run.checkpoints = std::move(loop.checkpoints);
   run.events = loop.plant.events;
   run.plant_final = loop.plant.last;
   run.driven_by_joints = loop.driven_by_joints;
   plant_run = std::move(loop.plant);
   return run;
+}
+
+/// The frames of all runs within ValidationOptions::kMaxFrames, before any is driven: each keeps
+/// its series and writes its lines (docs/limits.md). Closed loop, the rests at the checkpoints
+/// count too (the re-plans' paths may differ a little from the plan's: an estimate).
+void check_frames(const PlanResult& plan,
+                  const MarkerSensorModel& sensor,
+                  const ValidationOptions& options) {
+  const double duration = plan.end_effector_path.back().t - plan.end_effector_path.front().t;
+  double per_run = std::floor(duration * sensor.frame_rate) + 2.0;
+  if (options.closed_loop)
+    per_run += static_cast<double>(plan.steps.size()) * (options.loop.checkpoint_frames + 1);
+  const double all = per_run * options.runs;
+  if (all <= ValidationOptions::kMaxFrames) return;
+  throw InputError("MarkerSensorModel.frame_rate",
+                   ": the path of " + detail::format_value(duration) + " s at " +
+                       detail::format_value(sensor.frame_rate) + " Hz" +
+                       (options.closed_loop ? " with the rests at the checkpoints" : "") +
+                       ", with ValidationOptions.runs = " + std::to_string(options.runs) +
+                       ", would have " + detail::format_value(all) + " frames; at most " +
+                       detail::format_value(ValidationOptions::kMaxFrames) +
+                       " in all: lower the frame rate or the runs");
 }
 
 /// Stage 4: the status from the plant's events in every run (a loss outweighs a snap).
@@ -100,6 +144,13 @@ void ValidationOptions::validate() const {
     throw InputError("ValidationOptions.runs", " = " + std::to_string(runs) + " must be in [1, " +
                                                    std::to_string(kMaxRuns) + "]");
   plant.validate();
+  // Run k is seeded with seed + k - 1: the last must not wrap past 2^64 - 1.
+  if (seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(runs - 1))
+    throw InputError("ValidationOptions.seed",
+                     " = " + std::to_string(seed) + " with ValidationOptions.runs = " +
+                         std::to_string(runs) + " would wrap past 2^64 - 1; at most " +
+                         std::to_string(std::numeric_limits<std::uint64_t>::max() -
+                                        static_cast<std::uint64_t>(runs - 1)));
 }
 
 std::string to_string(ValidationStatus status) {
@@ -120,8 +171,12 @@ std::string ValidationResult::brief() const {
   out << to_string(status);
   if (!runs.empty()) {
     const ShapeError& e = runs.front().final;
-    out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d << " mm, true "
-        << 1e3 * e.true_error << " mm)";
+    if (std::isfinite(e.error_3d))
+      out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d
+          << " mm, true " << 1e3 * e.true_error << " mm)";
+    else  // no marker seen at the last frame: nothing measured (shape_error())
+      out << ": final true error " << 1e3 * e.true_error
+          << " mm (no marker seen: no measured error)";
   }
   out << ", " << runs.size() << (runs.size() == 1 ? " run" : " runs");
   if (status != ValidationStatus::Complete) out << "; " << message;
@@ -161,20 +216,15 @@ ValidationResult validate_plan(const PlanProblem& problem,
   // plan's start; the runs differ in what the sensor sees. Closed loop: each run drives its own.
   result.real_rod = plant.real_rod(problem.rod);
   check_plant_reach(result.real_rod, plan, plant, problem.validity);
+  check_frames(plan, sensor, options);
   if (!options.closed_loop) {
     const std::vector<TimedPose> path = commanded_path(problem, plan);
-    result.plant =
-        drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, plan.initial_wrench,
-                    frame_times(path.front().t, path.back().t, sensor.frame_rate), options.plant);
+    drive_and_observe(result, problem, plan, plant, sensor, options, path,
+                      frame_times(path.front().t, path.back().t, sensor.frame_rate));
+    for (ValidationRun& run : result.runs) run.driven_by_joints = drives_joints(problem, plan);
   }
-  const bool open_loop_by_joints = drives_joints(problem, plan);
-  for (int k = 0; k < options.runs; ++k) {
+  for (int k = 0; options.closed_loop && k < options.runs; ++k) {
     const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
-    if (!options.closed_loop) {
-      result.runs.push_back(observe_run(result, problem.target.points, sensor, seed));
-      result.runs.back().driven_by_joints = open_loop_by_joints;
-      continue;
-    }
     PlantRun plant_run;
     result.runs.push_back(
         closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run));

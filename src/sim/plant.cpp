@@ -68,7 +68,7 @@ std::string PlantRun::brief() const {
   std::ostringstream out;
   out.precision(3);
   out << (lost ? "lost at t = " + std::to_string(last.t) + " s" : "followed the path") << "; "
-      << frames.size() << " frames, " << solves << " solves, " << events.size() << " events";
+      << frames << " frames, " << solves << " solves, " << events.size() << " events";
   return out.str();
 }
 
@@ -81,8 +81,14 @@ class Driver {
          const Grasp& grasp,
          const Pose& grasp_offset,
          const std::vector<double>& frame_times,
+         const PlantFrameSink& on_frame,
          const PlantOptions& options)
-      : rod_(rod), grasp_(grasp), offset_(grasp_offset), frames_(frame_times), options_(options) {
+      : rod_(rod),
+        grasp_(grasp),
+        offset_(grasp_offset),
+        frames_(frame_times),
+        on_frame_(on_frame),
+        options_(options) {
     direct_ = options.shooting;
     direct_.output_derivatives = Derivatives::None;
   }
@@ -150,8 +156,11 @@ class Driver {
              (frames_[next_frame_] < t_end || (inclusive && frames_[next_frame_] <= t_end));
     };
     if (due() && options_.check_stability) settle(frames_[next_frame_]);
-    while (!run_.lost && due())
-      run_.frames.push_back(frame_at(frames_[next_frame_++], held_by_, state_));
+    while (!run_.lost && due()) {  // handed on, not kept (issue 24: memory per frame)
+      if (on_frame_) on_frame_(frame_at(frames_[next_frame_], held_by_, state_));
+      ++next_frame_;
+      ++run_.frames;
+    }
   }
 
   /// A direct solve follows an equilibrium branch past the point where it loses stability; the real
@@ -183,6 +192,7 @@ class Driver {
   const Grasp& grasp_;
   const Pose& offset_;
   const std::vector<double>& frames_;
+  const PlantFrameSink& on_frame_;
   const PlantOptions& options_;
   ShootingOptions direct_;
   ShootingResult state_;
@@ -199,13 +209,14 @@ PlantRun drive_plant(const ClampedRod& rod,
                      const std::vector<TimedPose>& path,
                      const BaseWrench& guess,
                      const std::vector<double>& frame_times,
+                     const PlantFrameSink& on_frame,
                      const PlantOptions& options) {
   options.validate();
   rod.validate();
   if (path.empty()) throw InputError("path", ": the commanded path has no sample");
   if (!std::is_sorted(frame_times.begin(), frame_times.end()))
     throw InputError("frame_times", ": must be increasing");
-  Driver driver(rod, grasp, grasp_offset, frame_times, options);
+  Driver driver(rod, grasp, grasp_offset, frame_times, on_frame, options);
   if (driver.start(path.front(), guess))
     for (std::size_t k = 1; k < path.size() && driver.advance(path[k]); ++k) {
     }

@@ -19,7 +19,8 @@ void PlantModel::validate() const {
   if (mass_per_length) detail::require_non_negative("PlantModel.mass_per_length", *mass_per_length);
   if (mass_per_length)
     require_in_range("PlantModel.mass_per_length", *mass_per_length, bounds::kMassPerLength);
-  require_magnitude_at_most("PlantModel.gravity", gravity, bounds::kMaxGravity, "m/s^2");
+  if (gravity) require_magnitude_at_most("PlantModel.gravity", *gravity, bounds::kMaxGravity, "m/s^2");
+  require_magnitude_at_most("PlantModel.planner_gravity", planner_gravity, bounds::kMaxGravity, "m/s^2");
   if (rest_curvature) detail::require_finite("PlantModel.rest_curvature", *rest_curvature);
   detail::require_pose("PlantModel.grasp_offset", grasp_offset);
 }
@@ -36,12 +37,15 @@ ClampedRod PlantModel::real_rod(const ClampedRod& planned) const {
   if (length) k.length = *length;
   if (mass_per_length) k.mass_per_length = *mass_per_length;
   if (rest_curvature) k.u_rest = *rest_curvature;
-  if (!gravity.isZero() && !(k.mass_per_length > 0.0))
+  const Eigen::Vector3d g = acting_gravity();
+  if (!g.isZero() && !mass_per_length && !(k.mass_per_length > 0.0))
     throw InputError(
-        "PlantModel.gravity",
+        gravity ? "PlantModel.gravity" : "PlantModel.planner_gravity",
         ": the rod's mass per length is not known (give PlantModel.mass_per_length, or "
         "a density for the planner's rod)");
-  rod.load.force += k.mass_per_length * gravity;  // f = ρA g
+  // One gravity acts on the real rod: its weight f = ρA g replaces the planner's
+  // (docs/task-file.md, "plant"). Where both are the same the difference is exactly zero.
+  rod.load.force += k.mass_per_length * g - planned.properties.mass_per_length * planner_gravity;
   rod.validate();
   return rod;
 }

@@ -50,6 +50,10 @@ ShapeError shape_error(const PointSet& points,
   error.error_3d /= n;
   error.error_2d /= n;
   error.true_error /= n;
+  if (error.visible_markers == 0) {  // only the clamp: the camera measured nothing of the shape
+    error.error_3d = std::numeric_limits<double>::quiet_NaN();
+    error.error_2d = std::numeric_limits<double>::quiet_NaN();
+  }
   return error;
 }
 

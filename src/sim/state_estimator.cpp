@@ -3,6 +3,7 @@
 #include "rodshape/sim/state_estimator.hpp"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <unsupported/Eigen/LevenbergMarquardt>
 #include <vector>
@@ -226,6 +227,16 @@ Measurements gather(const ClampedRod& model,
   return data;
 }
 
+/// No marker seen and no wrist wrench: the fit would only restate the priors (converged, residual
+/// 0) and say nothing of the rod; such an estimate is not converged and is never acted on.
+StateEstimate nothing_measured() {
+  StateEstimate estimate;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  estimate.residual = estimate.chi2 = estimate.prior_chi2 = nan;
+  estimate.message = "nothing was measured: no marker was seen and there is no wrist wrench";
+  return estimate;
+}
+
 }  // namespace
 
 void EstimationOptions::validate() const {
@@ -282,6 +293,7 @@ StateEstimate estimate_state(const ClampedRod& model,
     throw InputError("EstimationOptions.gravity",
                      ": the rod's mass per length is not known, so its weight cannot be estimated");
   const Measurements data = gather(model, tip, end_effector, seen, sensor);
+  if (data.markers.empty() && !data.wrist) return nothing_measured();
   EstimationProblem problem(model, data, sensor, prior, options);
   Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
   lm.setMaxfev(10 * options.max_iterations);

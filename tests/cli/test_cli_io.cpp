@@ -52,6 +52,25 @@ TEST_F(CliIo, OutputToAFullDeviceIsBadInputWithTheReason) {
   EXPECT_TRUE(rodshape::testing::is_character_device(*full)) << "the device was replaced";
 }
 
+TEST_F(CliIo, OutputThatIsTheTaskFileIsBadInputAndTheTaskIsKept) {
+  // Issue 24: `-o` naming the task file overwrote the task with its result.
+  const std::string text = read_file(kExamples + "/rubber_band.yaml");
+  const fs::path task = directory_ / "band.yaml";
+  fs::copy_file(kExamples + "/rubber_band.yaml", task);
+  fs::create_symlink(task, directory_ / "link.json");
+  for (const fs::path& output : {task, directory_ / "." / "band.yaml", directory_ / "link.json"}) {
+    SCOPED_TRACE(output.string());
+    const auto result =
+        run("equilibrium " + quoted(task.string()) + " -o " + quoted(output.string()));
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.err, "error: " + output.string() + ": is " + task.string() +
+                              ", an input of this run: it would be overwritten; give another "
+                              "output\n");
+    EXPECT_EQ(result.out, "");
+    EXPECT_EQ(read_file(task), text);
+  }
+}
+
 TEST_F(CliIo, OutputThroughASymbolicLinkWritesItsTarget) {
   fs::create_directory(directory_ / "results");
   const fs::path link = directory_ / "band.json";

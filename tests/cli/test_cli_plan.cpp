@@ -1,9 +1,9 @@
 // test_cli_plan.cpp: `rodshape plan` as a user runs it. A complete plan writes plan.json (every
 // documented key, one entry per step, the last step's objective points equal to the target),
 // trajectory.csv (increasing times, unit quaternions) and plan.svg; an infeasible target gives exit
-// code 2 and a plan.json that says why; a workspace that excludes the initial tip gives exit code 2
-// and no files; a step that fails gives exit code 3 and a partial plan. The task files are small
-// (51 nodes, two or three steps) to keep the runtime short.
+// code 2 naming the point, with nothing written; a workspace that excludes the initial tip gives
+// exit code 2 and no files; a step that fails gives exit code 3 and a partial plan. The task files
+// are small (51 nodes, two or three steps) to keep the runtime short.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -197,31 +197,27 @@ TEST_F(CliPlan, CompletePlanWritesPlanTrajectoryAndPicture) {
     EXPECT_NE(svg.find(view), std::string::npos) << view;
 }
 
-TEST_F(CliPlan, InfeasibleTargetExitsTwoAndSaysWhyInPlanJson) {
+TEST_F(CliPlan, InfeasibleTargetIsBadInputNamingThePointAndNothingIsWritten) {
+  // Issue 24: an infeasible target was exit 2 with a plan.json here and exit 3 in validate; it is
+  // bad input as any other: one line naming the offending point and its line, nothing written.
   // A point 2 L from the clamp: no rod of length L passes through it.
   const fs::path task =
       write_task("far.yaml", task_with("[0.081, 0.000, 0.273]", "[0.0, 0.0, 0.58]"));
   const fs::path outdir = directory_ / "far";
-  // Files of an earlier run that an infeasible plan has no content for are removed.
+  // An earlier run's file stays as it was: bad input writes and removes nothing.
   fs::create_directories(outdir);
   write_task("far/trajectory.csv", "t,x,y,z,qw,qx,qy,qz\n");
-  write_task("far/plan.svg", "<svg/>\n");
   const Outcome result = plan(task, outdir);
   EXPECT_EQ(result.exit_code, 2) << result.err;
   expect_one_line(result.err);
-  EXPECT_EQ(
-      result.err.rfind("error: " + task.string() + ": infeasible target: target.points[4]", 0), 0u)
+  EXPECT_EQ(result.err.rfind("error: " + task.string() + ":8: target.points[4] is 0.58 m from", 0),
+            0u)
       << result.err;
-  const Json j = Json::parse(read_file(outdir / "plan.json"));
-  EXPECT_EQ(j["status"], "infeasible");
-  ASSERT_TRUE(j["reason"].is_string());
-  EXPECT_NE(j["reason"].get<std::string>().find("target.points[4]"), std::string::npos);
-  EXPECT_EQ(j["feasibility"]["feasible"], false);
-  EXPECT_EQ(j["feasibility"]["offending_point"], 4);
-  EXPECT_EQ(j["feasibility"]["offending_position"], Json::parse("[0.0, 0.0, 0.58]"));
-  EXPECT_EQ(j["steps"].size(), 0u);
-  EXPECT_FALSE(fs::exists(outdir / "trajectory.csv"));
+  EXPECT_NE(result.err.find(": the target is infeasible\n"), std::string::npos) << result.err;
+  EXPECT_EQ(result.out, "");
+  EXPECT_FALSE(fs::exists(outdir / "plan.json"));
   EXPECT_FALSE(fs::exists(outdir / "plan.svg"));
+  EXPECT_EQ(read_file(outdir / "trajectory.csv"), "t,x,y,z,qw,qx,qy,qz\n");
 }
 
 TEST_F(CliPlan, WorkspaceExcludingTheInitialTipExitsTwoAndWritesNothing) {
@@ -323,28 +319,57 @@ TEST_F(CliPlan, APathWithTooManySamplesIsBadInputCountedBeforeSampling) {
   EXPECT_FALSE(fs::exists(outdir));
 }
 
-TEST_F(CliPlan, AnEarlierRunsPlanFilesAreRemovedBeforePlanning) {
-  // A run that stops while planning (here: the workspace excludes the initial tip; likewise a
-  // killed run) must not leave an earlier run's plan.json looking like its result.
+TEST_F(CliPlan, BadInputFoundWhilePlanningLeavesAnEarlierRunsFilesAlone) {
+  // Issue 24: bad input found while planning (here the workspace excludes the initial tip;
+  // likewise an initial.tip with no equilibrium) removed the earlier run's plan files. Bad input
+  // writes and removes nothing; a run that plans replaces them.
   const fs::path outdir = directory_ / "stale";
-  fs::create_directories(outdir);
-  for (const char* name : {"plan.json", "trajectory.csv", "plan.svg", "joint_trajectory.csv",
-                           "joint_trajectory.json", "notes.txt"})
-    std::ofstream(outdir / name) << "an earlier run\n";
+  ASSERT_EQ(plan(write_task("earlier.yaml", kTask), outdir).exit_code, 0);
+  const std::string earlier = read_file(outdir / "plan.json");
+  std::ofstream(outdir / "notes.txt") << "mine\n";
   const fs::path task = write_task(
       "stale.yaml", kTask + "workspace:\n  box: {lower: [-1, -1, -1], upper: [1, 1, 0.25]}\n");
+  EXPECT_EQ(plan(task, outdir).exit_code, 2);
+  EXPECT_EQ(read_file(outdir / "plan.json"), earlier);
+  for (const char* name : {"trajectory.csv", "plan.svg"})
+    EXPECT_TRUE(fs::exists(outdir / name)) << name;
+
+  // A run that plans replaces the earlier files; one it does not write (an earlier arm's joint
+  // trajectory, recognised by its header) is removed; other files are left alone.
+  std::ofstream(outdir / "joint_trajectory.csv") << "t,panda_joint1\n0,0\n";
+  EXPECT_EQ(plan(write_task("again.yaml", kTask), outdir).exit_code, 0);
+  EXPECT_FALSE(fs::exists(outdir / "joint_trajectory.csv"));
+  EXPECT_TRUE(fs::exists(outdir / "notes.txt"));
+}
+
+TEST_F(CliPlan, AFileInTheWayThatIsNotAnEarlierRunsIsBadInputAndLeftAlone) {
+  // Issue 24: any file named like a plan file was taken for an earlier run's and deleted.
+  const fs::path outdir = directory_ / "mine";
+  fs::create_directories(outdir);
+  std::ofstream(outdir / "plan.svg") << "<svg>my drawing</svg>\n";
+  const Outcome result = plan(write_task("mine.yaml", kTask), outdir);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.err.rfind("error: " + (outdir / "plan.svg").string() +
+                                 ": is in the way of an output and is not one rodshape wrote",
+                             0),
+            0u)
+      << result.err;
+  expect_one_line(result.err);
+  EXPECT_EQ(read_file(outdir / "plan.svg"), "<svg>my drawing</svg>\n");
+  EXPECT_FALSE(fs::exists(outdir / "plan.json"));
+}
+
+TEST_F(CliPlan, ATaskFileNamedLikeAnOutputIsNeverOverwrittenOrRemoved) {
+  // Issue 24: a task file named plan.json in the output directory was deleted as an earlier
+  // run's output.
+  const fs::path outdir = directory_ / "here";
+  fs::create_directories(outdir);
+  const fs::path task = write_task("here/plan.json", kTask);
   const Outcome result = plan(task, outdir);
   EXPECT_EQ(result.exit_code, 2);
-  for (const char* name :
-       {"plan.json", "trajectory.csv", "plan.svg", "joint_trajectory.csv", "joint_trajectory.json"})
-    EXPECT_FALSE(fs::exists(outdir / name)) << name;
-  EXPECT_TRUE(fs::exists(outdir / "notes.txt"));  // not a plan file: left alone
-
-  // A task that cannot be read leaves the directory as it was.
-  std::ofstream(outdir / "plan.json") << "an earlier run\n";
-  const fs::path bad = write_task("stale_bad.yaml", task_with("steps: 2", "steps: 0"));
-  EXPECT_EQ(plan(bad, outdir).exit_code, 2);
-  EXPECT_TRUE(fs::exists(outdir / "plan.json"));
+  expect_one_line(result.err);
+  EXPECT_NE(result.err.find(", an input of this run"), std::string::npos) << result.err;
+  EXPECT_EQ(read_file(task), kTask);
 }
 
 TEST_F(CliPlan, FailedStepExitsThreeAndWritesAPartialPlan) {

@@ -236,7 +236,8 @@ TEST_F(CliPlanRobot, WithoutTheReachShellAnArmOutOfReachWritesThePlanAndExitsThr
           "  reach: {use: false}\n");
   const fs::path out = directory_ / "out";
   fs::create_directories(out);
-  std::ofstream(out / "joint_trajectory.csv") << "stale\n";  // from an earlier run
+  // From an earlier run (recognised by its header: issue 24), so removed: it would not match.
+  std::ofstream(out / "joint_trajectory.csv") << "t,panda_joint1\n0,0\n";
   const Outcome outcome = plan(task, out);
   EXPECT_EQ(outcome.exit_code, 3) << outcome.err;
   EXPECT_NE(

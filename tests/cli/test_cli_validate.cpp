@@ -106,6 +106,9 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
       {"sensor: {markers: 1}\n", "sensor.markers = 1 must be in [2, 1000]"},
       {"sensor: {noise: {in_plane: -0.001}}\n", "sensor.noise.in_plane = -0.001 must be >= 0"},
       {"sensor: {dropout: 1.5}\n", "sensor.dropout = 1.5 must be in [0, 1]"},
+      {"sensor: {dropout: 1}\n",
+       "sensor.dropout = 1 hides every marker, and there is no wrist sensor "
+       "(sensor.wrench_noise): nothing would be measured"},
       {"sensor: {wrench_noise: {force: -1}}\n", "sensor.wrench_noise.force = -1 must be >= 0"},
       {"closed_loop: {horizon: -1}\n", "closed_loop.horizon = -1 must be in [0, 1000]"},
       {"closed_loop: {horizon: 1.5}\n", "closed_loop.horizon"},
@@ -125,6 +128,47 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
     EXPECT_FALSE(fs::exists(outdir()));
   }
   EXPECT_EQ(validate(kTask, " --runs 0").exit_code, 2);
+}
+
+TEST_F(CliValidate, ASeedOutsideItsRangeIsBadInputAndNothingRuns) {
+  // Issue 24: --seed -1 became 2^64 - 1 and a seed near it wrapped past 0 in the later runs.
+  const std::pair<const char*, const char*> cases[] = {
+      {" --seed -1", "--seed"},
+      {" --seed 99999999999999999999",
+       "error: --seed = 99999999999999999999 must be a whole number in [0, "
+       "18446744073709551615]"},
+      {" --seed 1.5", "error: --seed = 1.5 must be a whole number"},
+      {" --seed 18446744073709551615 --runs 2",
+       "error: --seed = 18446744073709551615 with --runs = 2 would wrap past 2^64 - 1"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    SCOPED_TRACE(arguments);
+    const Outcome result = validate(kTask, arguments);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(outdir()));
+  }
+}
+
+TEST_F(CliValidate, AnInfeasibleTargetIsBadInputAsInPlan) {
+  // Issue 24: exit 2 in plan, exit 3 (and a plan.json) in validate; now one meaning, one code.
+  std::string far = kTask;
+  far.replace(far.find("[0.081, 0.000, 0.273]"), 21, "[0.0, 0.0, 0.58]");
+  const Outcome result = validate(far);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(":8: target.points[4] is 0.58 m from the clamp"), std::string::npos)
+      << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_FALSE(fs::exists(outdir()));
+}
+
+TEST_F(CliValidate, HelpListsTheExitCodes) {
+  const Outcome help = run("validate --help");
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* code :
+       {"Exit codes: 0 ", "; 2 bad input", "an infeasible target", "; 3 ", "; 1 internal"})
+    EXPECT_NE(help.out.find(code), std::string::npos) << code << "\n" << help.out;
 }
 
 }  // namespace

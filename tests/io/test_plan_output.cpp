@@ -13,6 +13,7 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
@@ -195,7 +196,11 @@ TEST(PlanOutput, SvgIsOneDocumentWithThreeProjections) {
   const PlanTask task = parse_plan_task(kTask, "a<b&c.yaml");
   const PlanResult plan = make_plan(task, 3);
   const std::string svg = plan_svg(plan, task);
-  EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg", 0), 0u);
+  // The declaration, then the signature that tells an earlier run's output (issue 24).
+  EXPECT_EQ(
+      svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg_signature_comment() + "\n<svg",
+                0),
+      0u);
   EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
   EXPECT_EQ(svg.find("<svg"), svg.rfind("<svg"));  // one document
   int panels = 0;

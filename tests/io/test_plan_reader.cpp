@@ -3,11 +3,14 @@
 // into the request and options they describe; the bundled plan examples read.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/io/validation_output.hpp"
 #include "rodshape/trajectory/plan.hpp"
 #include "support/eigen_compare.hpp"
 #include "support/input_error.hpp"
@@ -400,6 +403,47 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     ++count;
   }
   EXPECT_EQ(count, 10);
+}
+
+// ---- the plant's weight (issue 24, item 2)
+// -------------------------------------------------------
+
+/// The load of the plant's rod for kPlan with `extra` appended.
+Eigen::Vector3d plant_load(const std::string& extra) {
+  const PlanTask task = parse_plan_task(kPlan + extra, "plan.yaml");
+  return task.plant.real_rod(task.problem.rod).load.force;
+}
+
+TEST(PlanReader, OneGravityActsOnThePlant) {
+  const double rho_a = 1392 * 0.02 * 0.02;  // kg/m, the planner's
+  const Eigen::Vector3d g(0.0, 0.0, -9.81);
+  // The task's gravity alone: the plant carries the planner's weight, once.
+  EXPECT_TRUE(CompareMatrices(plant_load("gravity: [0, 0, -9.81]\n"), rho_a * g, 1e-12));
+  // plant.gravity replaces the task's (it was added to it: twice the weight).
+  EXPECT_TRUE(CompareMatrices(
+      plant_load("gravity: [0, 0, -9.81]\nplant: {gravity: [0, 0, -9.81]}\n"), rho_a * g, 1e-12));
+  EXPECT_TRUE(
+      CompareMatrices(plant_load("gravity: [0, 0, -9.81]\nplant: {gravity: [0, -9.81, 0]}\n"),
+                      Eigen::Vector3d(0.0, -9.81 * rho_a, 0.0), 1e-12));
+  // A weightless planner, a heavy plant (the paper's mismatch).
+  EXPECT_TRUE(CompareMatrices(plant_load("plant: {gravity: [0, 0, -9.81]}\n"), rho_a * g, 1e-12));
+  // plant.mass_per_length is the plant's own under the task's gravity (0 and double the
+  // planner's gave the same plant).
+  EXPECT_TRUE(CompareMatrices(plant_load("gravity: [0, 0, -9.81]\nplant: {mass_per_length: 0}\n"),
+                              Eigen::Vector3d::Zero(), 1e-12));
+  EXPECT_TRUE(CompareMatrices(plant_load("gravity: [0, 0, -9.81]\nplant: {mass_per_length: " +
+                                         std::to_string(2 * rho_a) + "}\n"),
+                              2 * rho_a * g, 1e-9));
+}
+
+TEST(PlanReader, ValidationJsonReportsTheWeightThePlantCarried) {
+  const PlanTask task =
+      parse_plan_task(kPlan + "gravity: [0, 0, -9.81]\nplant: {mass_per_length: 1}\n", "plan.yaml");
+  ValidationResult result;
+  result.real_rod = task.plant.real_rod(task.problem.rod);
+  const nlohmann::json j = nlohmann::json::parse(validation_json(result, PlanResult{}, task));
+  EXPECT_EQ(j["plant"]["gravity"], nlohmann::json::parse("[0, 0, -9.81]"));
+  EXPECT_EQ(j["plant"]["mass_per_length"], 1.0);
 }
 
 // ---- the robot section --------------------------------------------------------------------------

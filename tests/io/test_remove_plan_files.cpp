@@ -1,6 +1,6 @@
 // test_remove_plan_files.cpp: remove_plan_files() takes an earlier run's plan files out of the
-// output directory before planning (so a killed run leaves none that look like its result), leaves
-// other files and a missing directory alone, and lists the same files write_plan() writes.
+// output directory, recognised by their signature (issue 24: any other file is left alone, as is
+// a missing directory), and lists the same files write_plan() writes.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
@@ -27,20 +28,32 @@ fs::path fresh_directory(const std::string& name) {
 
 TEST(RemovePlanFiles, RemovesAnEarlierRunsPlanFilesOnly) {
   const fs::path directory = fresh_directory("earlier");
-  for (const std::string& name : plan_file_names()) std::ofstream(directory / name) << "old\n";
+  const std::string json =
+      "{\"" + std::string(kGeneratorKey) + "\": \"" + generator_signature() + "\"}\n";
+  std::ofstream(directory / "plan.json") << json;
+  std::ofstream(directory / "joint_trajectory.json") << json;
+  std::ofstream(directory / "trajectory.csv") << "t,x,y,z,qw,qx,qy,qz\n";
+  std::ofstream(directory / "joint_trajectory.csv") << "t,joint_1\n";
+  std::ofstream(directory / "plan.svg") << "<?xml version=\"1.0\"?>\n"
+                                        << svg_signature_comment() << "\n<svg/>\n";
   std::ofstream(directory / "notes.txt") << "mine\n";
   remove_plan_files(directory.string());
   for (const std::string& name : plan_file_names())
     EXPECT_FALSE(fs::exists(directory / name)) << name;
   EXPECT_TRUE(fs::exists(directory / "notes.txt"));
+  // A file named like a plan file that is not rodshape's (no signature) is left alone.
+  std::ofstream(directory / "plan.json") << "old\n";
+  remove_plan_files(directory.string());
+  EXPECT_TRUE(fs::exists(directory / "plan.json"));
   fs::remove_all(directory.parent_path());
 }
 
-TEST(RemovePlanFiles, ADanglingLinkNamedPlanJsonIsRemovedNotFollowed) {
+TEST(RemovePlanFiles, ADanglingLinkNamedPlanJsonIsLeftAloneNotFollowed) {
   const fs::path directory = fresh_directory("link");
   fs::create_symlink(directory / "nowhere", directory / "plan.json");
   remove_plan_files(directory.string());
-  EXPECT_FALSE(fs::is_symlink(directory / "plan.json"));
+  EXPECT_TRUE(fs::is_symlink(directory / "plan.json"));  // not recognisably rodshape's
+  EXPECT_FALSE(fs::exists(directory / "nowhere"));
   fs::remove_all(directory.parent_path());
 }
 

@@ -161,6 +161,29 @@ def test_validate_repeats_bit_for_bit_and_writes_the_clis_files(tmp_path):
     assert json.loads((tmp_path / "validation.json").read_text()) == json.loads(a.to_json())
 
 
+def test_one_gravity_acts_on_the_plant(tmp_path):
+    # Issue 24: the plant's gravity was added to the task's, and under the task's gravity the
+    # plant's mass per length changed nothing.
+    text = (EXAMPLES / "plan_c_arc.yaml").read_text() + "gravity: [0, 0, -9.81]\n"
+    path = tmp_path / "heavy.yaml"
+    path.write_text(text)
+    task = rodshape.load_task(str(path))
+    assert np.allclose(task.plant.planner_gravity, [0.0, 0.0, -9.81])
+    assert task.plant.gravity is None  # the task's
+    weight = task.rod.properties.mass_per_length * np.array([0.0, 0.0, -9.81])
+    assert np.allclose(task.plant.real_rod(task.rod).load.force, weight)
+    task.plant.gravity = [0.0, 0.0, -9.81]  # given as well: once, not twice
+    assert np.allclose(task.plant.real_rod(task.rod).load.force, weight)
+    task.plant.mass_per_length = 0.0
+    assert np.allclose(task.plant.real_rod(task.rod).load.force, [0.0, 0.0, 0.0])
+
+
+def test_a_seed_whose_runs_would_wrap_is_bad_input():
+    task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
+    with pytest.raises(rodshape.InputError, match="would wrap"):
+        rodshape.validate(task, runs=2, seed=2**64 - 1)
+
+
 def test_plot_figures(tmp_path):
     import matplotlib
     matplotlib.use("Agg")

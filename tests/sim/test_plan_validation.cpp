@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "rodshape/core/rod_integrator.hpp"
@@ -16,6 +18,8 @@
 
 namespace rodshape {
 namespace {
+
+using testing::CompareMatrices;
 
 /// The band bent by a wrench, sampled at 10 points; planned in 3 steps (a small, quick plan).
 PlanProblem band_problem() {
@@ -50,7 +54,7 @@ double max_node_distance(const RodConfiguration& a, const RodConfiguration& b) {
 PlantModel paper_mismatch() {
   PlantModel plant;
   plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   plant.grasp_offset.position = {0.002, 0.0, 0.0};
   return plant;
 }
@@ -67,7 +71,7 @@ TEST(PlantModel, ScalesTheStiffnessesAndAddsTheWeight) {
   PlantModel plant;
   plant.stiffness_scale = 0.85;
   plant.factors.GJ = 2.0;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   const ClampedRod real = plant.real_rod(planned);
   EXPECT_DOUBLE_EQ(real.properties.K_rot.x(), 0.85 * 0.04);
   EXPECT_DOUBLE_EQ(real.properties.K_rot.z(), 0.85 * 2.0 * 0.028);
@@ -75,6 +79,29 @@ TEST(PlantModel, ScalesTheStiffnessesAndAddsTheWeight) {
   // ρA g: 1392 kg/m³ × 4e-4 m² × 9.81 m/s² = 5.46 N/m, the paper's 1.6 N over 0.29 m.
   EXPECT_NEAR(real.load.force.z(), -1392 * 4e-4 * 9.81, 1e-9);
   EXPECT_NEAR(-real.load.force.z() * real.properties.length, 1.58, 0.01);
+}
+
+TEST(PlantModel, OneGravityActsOnTheRealRod) {
+  // Issue 24: the plant's weight was added to the planner's (twice the weight when both were
+  // given), and under the planner's gravity the plant's mass per length changed nothing.
+  ClampedRod planned = samples::rubber_band();
+  const Eigen::Vector3d g(0.0, 0.0, -9.81), push(0.1, 0.0, 0.0);  // push: a load, not weight
+  const double m = planned.properties.mass_per_length;
+  planned.load = DistributedLoad::gravity(m, g);
+  planned.load.force += push;
+  PlantModel plant;
+  plant.planner_gravity = g;
+  EXPECT_EQ(plant.real_rod(planned).load.force, planned.load.force);  // the planner's rod, exactly
+  plant.gravity = g;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, m * g + push, 1e-12));
+  plant.mass_per_length = 2.0 * m;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, 2.0 * m * g + push, 1e-12));
+  plant.mass_per_length = 0.0;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, push, 1e-12));
+  plant.gravity.reset();  // the planner's gravity, on the plant's own mass
+  plant.mass_per_length = 3.0 * m;
+  EXPECT_TRUE(CompareMatrices(plant.real_rod(planned).load.force, 3.0 * m * g + push, 1e-12));
+  EXPECT_EQ(plant.acting_gravity(), g);
 }
 
 TEST(PlantModel, BadParametersNameTheField) {
@@ -87,7 +114,7 @@ TEST(PlantModel, BadParametersNameTheField) {
     EXPECT_EQ(std::string(error.what()).rfind("PlantModel.stiffness_scale", 0), 0u) << error.what();
   }
   PlantModel heavy;
-  heavy.gravity = {0.0, 0.0, -9.81};
+  heavy.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   ClampedRod massless = samples::rubber_band();
   massless.properties.mass_per_length = 0.0;
   EXPECT_THROW((void)heavy.real_rod(massless), InputError);
@@ -100,6 +127,50 @@ TEST(PlantModel, BadParametersNameTheField) {
   sensor = {};
   sensor.depth_noise = -1e-3;
   EXPECT_THROW(sensor.validate(), InputError);
+}
+
+TEST(MarkerSensor, ACameraThatSeesNoMarkerNeedsAWristSensor) {
+  // Issue 24: dropout 1 without a wrist sensor measured nothing, yet a closed loop reported every
+  // estimate converged and consistent.
+  MarkerSensorModel sensor;
+  sensor.dropout = 1.0;
+  try {
+    sensor.validate();
+    FAIL() << "a sensor that measures nothing was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "MarkerSensorModel.dropout") << error.what();
+  }
+  sensor.wrist = WristNoise{0.05, 0.005};  // the wrist wrench alone fixes the shape
+  EXPECT_NO_THROW(sensor.validate());
+}
+
+TEST(ShapeError, NoMarkerSeenIsNoMeasuredError) {
+  // Without a visible marker the measured curve is the clamp alone: its distances are not an
+  // error of the shape (they were reported as one, 155 mm); the true error is still known.
+  const ClampedRod rod = samples::rubber_band();
+  const RodConfiguration straight = integrate(rod, BaseWrench{});
+  MarkerSensorModel model = noiseless();
+  model.dropout = 1.0;
+  model.wrist = WristNoise{0.0, 0.0};
+  MarkerSensor sensor(model, 1);
+  const SensorFrame seen = sensor.observe({0.0, Pose{}, BaseWrench{}, straight}, 0.29);
+  ASSERT_EQ(seen.visible(), 0);
+  const ShapeError error =
+      shape_error({{0.003, 0.0, 0.1}}, rod.clamp.position, seen, straight, model.camera);
+  EXPECT_TRUE(std::isnan(error.error_3d));
+  EXPECT_TRUE(std::isnan(error.error_2d));
+  EXPECT_NEAR(error.true_error, 0.003, 1e-12);
+  EXPECT_EQ(error.visible_markers, 0);
+}
+
+TEST(PlanValidation, ABriefWithoutAMarkerSeenSaysNothingWasMeasured) {
+  ValidationResult result;
+  result.status = ValidationStatus::Complete;
+  ValidationRun& run = result.runs.emplace_back();
+  run.final.error_3d = run.final.error_2d = std::numeric_limits<double>::quiet_NaN();
+  run.final.true_error = 2e-4;
+  EXPECT_EQ(result.brief(),
+            "complete: final true error 0.2 mm (no marker seen: no measured error), 1 run");
 }
 
 TEST(ShapeError, PolylineDistanceByHand) {
@@ -187,7 +258,22 @@ TEST(PlanValidation, AFixedSeedRepeatsBitForBit) {
     total += 10.0;
   }
   EXPECT_NEAR(seen / total, 0.9, 0.03);
-  ASSERT_TRUE(a.runs[0].frames.back().wrist.has_value());
+  ASSERT_TRUE(a.runs[0].last_seen.wrist.has_value());
+}
+
+TEST(PlanValidation, ASeedThatWouldWrapIsBadInput) {
+  // Issue 24: run k is seeded with seed + k - 1, and 2^64 - 1 with two runs wrapped to 0.
+  ValidationOptions options;
+  options.runs = 2;
+  options.seed = std::numeric_limits<std::uint64_t>::max();
+  try {
+    options.validate();
+    FAIL() << "a seed that wraps was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.field(), "ValidationOptions.seed") << error.what();
+  }
+  options.seed -= 1;
+  EXPECT_NO_THROW(options.validate());
 }
 
 TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
@@ -195,7 +281,7 @@ TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
   // grows well beyond the plan's.
   PlantModel plant;
   plant.stiffness_scale = 0.85;
-  plant.gravity = {0.0, 0.0, -9.81};
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   const ValidationResult nominal = validate_plan(band_problem(), band_plan(), {}, noiseless());
   const ValidationResult mismatched =
       validate_plan(band_problem(), band_plan(), plant, noiseless());

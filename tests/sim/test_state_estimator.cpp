@@ -85,6 +85,25 @@ TEST(StateEstimator, TheWristWrenchAloneFixesTheShape) {
             1e-6 * kTrue.to_vector().norm());
 }
 
+TEST(StateEstimator, NothingMeasuredIsNoEstimate) {
+  // Issue 24: no marker seen and no wrist wrench: the fit only restated its priors and called
+  // that "converged, residual 0"; the closed loop then took it as consistent.
+  const ClampedRod rod = samples::rubber_band();
+  MarkerSensorModel model = noiseless();
+  model.dropout = 1.0;
+  model.wrist = WristNoise{0.0, 0.0};
+  MarkerSensor sensor(model, 1);
+  SensorFrame seen = look(rod, kTrue, sensor);
+  ASSERT_EQ(seen.visible(), 0);
+  seen.wrist.reset();
+  model.wrist.reset();  // no wrist sensor
+  const Pose tip = integrate(rod, kTrue).tip();
+  const StateEstimate estimate = estimate_state(rod, tip, tip, seen, model, {off_prior(rod)});
+  EXPECT_FALSE(estimate.converged);
+  EXPECT_TRUE(std::isnan(estimate.residual));
+  EXPECT_NE(estimate.message.find("nothing was measured"), std::string::npos) << estimate.message;
+}
+
 TEST(StateEstimator, IsUnbiasedOverNoisySeeds) {
   // The Kinect-like noise (1 mm in plane, 3 mm in depth): over 40 seeds the mean estimate lies
   // within 4 standard errors of the truth in every component.

@@ -55,18 +55,20 @@ void check_output_directory(const std::string& directory);
 /// joint_trajectory.csv, joint_trajectory.json.
 const std::vector<std::string>& plan_file_names();
 
-/// Removes the plan files (plan_file_names()) of an earlier run from `directory`, if there are
-/// any, so that a run that is killed or stops with an error while planning leaves no earlier
-/// result that could be taken for its own; other files are left alone. Call it once the task has
-/// been read, before planning. Throws InputError when such a file exists and cannot be removed.
+/// Removes the plan files (plan_file_names()) of an earlier run from `directory`: those that are
+/// recognisably rodshape's (is_rodshape_output(), output_files.hpp); other files are left alone.
+/// The CLI does not call it before planning (bad input found while planning must remove nothing,
+/// issue 24): write_plan() replaces an earlier run's files. Throws InputError when such a file
+/// exists and cannot be removed.
 void remove_plan_files(const std::string& directory);
 
 /// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
 /// plan is infeasible, trajectory.csv and plan.svg; with a complete joint trajectory,
 /// joint_trajectory.csv and joint_trajectory.json. Each file is written whole or not at all, and
-/// the files of an earlier run that this plan does not write are removed (they would not match
-/// plan.json). Returns the names written, in order. Throws InputError when the directory cannot be
-/// made or a file cannot be written.
+/// the files of an earlier run that this plan does not write are removed when they are
+/// rodshape's (they would not match plan.json; check_output_files() first, to refuse others).
+/// Returns the names written, in order. Throws InputError when the directory cannot be made or a
+/// file cannot be written.
 std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
                                     const PlanTask& task);

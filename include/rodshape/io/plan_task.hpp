@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 #include "rodshape/error.hpp"
 #include "rodshape/sim/closed_loop.hpp"
@@ -23,6 +24,8 @@ struct PlanTask {
   MarkerSensorModel sensor;  // what sees it (10 markers, a Kinect-like camera, no wrist sensor)
   ClosedLoopOptions closed_loop;  // `rodshape validate --closed-loop`: estimation and re-plans
   std::string source;             // the file name that messages name
+  /// The files the task was read from (the task file, robot.urdf): never an output of its run.
+  std::vector<std::string> input_files;
   /// The line of each key of the file, two levels deep ("initial" → 14, "initial.tip" → 15).
   std::map<std::string, int> lines;
 
@@ -30,6 +33,9 @@ struct PlanTask {
   /// "<source>:<line>: <task field><problem>", the line that of the deepest key of the field that
   /// the file has (none when it has none of it).
   std::string locate(const InputError& error) const;
+  /// An infeasible target (plan.status Infeasible) is bad input like any other: the error names
+  /// the offending point (target.points[i]) and its line, and the reason.
+  InputError infeasible_target(const PlanResult& plan) const;
 };
 
 }  // namespace rodshape

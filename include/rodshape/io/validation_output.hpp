@@ -22,6 +22,8 @@ std::string validation_json(const ValidationResult& result,
 std::string validation_csv(const ValidationResult& result);
 /// A self-contained SVG: the 3D, 2D and true errors (mm) over time (s) of every run.
 std::string validation_svg(const ValidationResult& result);
+/// The files write_validation() writes: validation.json, validation.csv, validation.svg.
+const std::vector<std::string>& validation_file_names();
 /// Writes validation.json, validation.csv and validation.svg into `directory` (created with its
 /// parents if missing), each whole or not at all. Returns the names written.
 std::vector<std::string> write_validation(const std::string& directory,

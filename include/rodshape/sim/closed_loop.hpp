@@ -93,8 +93,9 @@ struct Checkpoint {
 /// checkpoints.
 struct ClosedLoopRun {
   PlantRun plant;
-  std::vector<SensorFrame> frames;
-  std::vector<ShapeError> errors;  // one per frame
+  std::vector<double> times;       // s, one per frame
+  std::vector<ShapeError> errors;  // one per frame (the frames themselves are not kept)
+  SensorFrame last_seen;           // what the sensor saw at the last frame
   std::vector<Checkpoint> checkpoints;
   /// With an arm (a plan with a complete joint trajectory), each segment is solved by IK from the
   /// arm's joints and the plant follows the hand's poses (commanded_path.hpp). A segment without

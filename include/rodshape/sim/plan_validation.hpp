@@ -22,9 +22,12 @@ namespace rodshape {
 
 struct ValidationOptions {
   static constexpr int kMaxRuns = 1000;
-  static constexpr double kMaxFrames = 1e6;  // frames per run (duration × frame rate)
-  int runs = 1;                              // 1 ≤ runs ≤ kMaxRuns
-  std::uint64_t seed = 1;                    // run k's sensor is seeded with seed + k
+  /// Frames of all runs together (runs × duration × frame rate; closed loop, with the rests at
+  /// the checkpoints): each keeps about 40 bytes of series and writes about 200 bytes of
+  /// validation.json and validation.csv (docs/limits.md).
+  static constexpr double kMaxFrames = 1e6;
+  int runs = 1;            // 1 ≤ runs ≤ kMaxRuns
+  std::uint64_t seed = 1;  // run k's sensor is seeded with seed + k
   PlantOptions plant;
   /// Close the loop: a checkpoint at every waypoint (estimate, re-plan the rest: run_closed_loop).
   /// Each run then drives its own plant, since what it sees changes what it does.
@@ -35,13 +38,14 @@ struct ValidationOptions {
   void validate() const;
 };
 
-/// One run: the errors at each frame, and after the last waypoint.
+/// One run: the errors at each frame, and after the last waypoint. The per-frame series are all
+/// it keeps of a frame (about 36 bytes); the plant's shapes and the markers are not kept.
 struct ValidationRun {
   std::uint64_t seed = 0;
   std::vector<double> time, error_3d, error_2d, true_error;  // s, m, m, m
   std::vector<int> visible_markers;
-  std::vector<SensorFrame> frames;  // what the sensor saw
-  ShapeError final;                 // at the last frame
+  SensorFrame last_seen;  // what the sensor saw at the last frame
+  ShapeError final;       // at the last frame
   bool closed_loop = false;
   std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
   std::vector<PlantEvent> events;       // the plant's, in this run
@@ -62,7 +66,7 @@ struct ValidationResult {
   ValidationStatus status = ValidationStatus::Lost;
   std::string message;
   ClampedRod real_rod;  // the plant's rod (PlantModel::real_rod of the planner's)
-  PlantRun plant;       // its frames, events and last equilibrium (closed loop: the first run's)
+  PlantRun plant;       // its events and last equilibrium (closed loop: the first run's)
   std::vector<ValidationRun> runs;
   /// Every run's plant followed the arm's joint trajectory through its forward kinematics (a plan
   /// with an arm and a complete joint trajectory; commanded_path()), else the end-effector path.

@@ -7,6 +7,7 @@
 // the rod snaps to a stable equilibrium with the same ends (seek_stable_equilibrium).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,8 +57,12 @@ struct PlantOptions {
   void validate() const;
 };
 
+/// Receives each camera frame as the plant reaches it. drive_plant() keeps no frame (a frame
+/// holds the whole rod, some 15 kB at 101 nodes): what a caller needs of one, it takes here.
+using PlantFrameSink = std::function<void(const PlantFrame&)>;
+
 struct PlantRun {
-  std::vector<PlantFrame> frames;  // one per frame time reached
+  int frames = 0;  // frame times reached, each handed to the sink
   std::vector<PlantEvent> events;
   bool lost = false;  // a Lost event ended the run
   PlantFrame last;    // the last equilibrium (at the path's end unless lost)
@@ -68,13 +73,15 @@ struct PlantRun {
 /// Drives `rod` (the real one) held by `grasp` (released axes, tip_T_ee) with the tip where
 /// `grasp_offset` puts it in the commanded tip frame, along `path` (at least one sample), from the
 /// equilibrium at path[0] solved from `guess`. Frames are taken at `frame_times` (increasing,
-/// within the path's span; zero-order hold: the state of the last sample at or before each).
+/// within the path's span; zero-order hold: the state of the last sample at or before each), each
+/// handed to `on_frame` as it is reached.
 PlantRun drive_plant(const ClampedRod& rod,
                      const Grasp& grasp,
                      const Pose& grasp_offset,
                      const std::vector<TimedPose>& path,
                      const BaseWrench& guess,
                      const std::vector<double>& frame_times,
+                     const PlantFrameSink& on_frame,
                      const PlantOptions& options = {});
 
 }  // namespace rodshape

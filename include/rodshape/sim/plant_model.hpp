@@ -19,20 +19,28 @@ struct StiffnessFactors {
 };
 
 struct PlantModel {
-  double stiffness_scale = 1.0;           // on every stiffness, > 0
-  StiffnessFactors factors;               // on each one, after the scale
-  std::optional<double> length;           // m, > 0; the planner's when absent
-  std::optional<double> mass_per_length;  // ρA, kg/m, ≥ 0; the planner's rod's when absent
-  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // m/s², world frame; its weight is added
-  std::optional<Eigen::Vector3d> rest_curvature;      // ũ, 1/m; the planner's when absent
+  double stiffness_scale = 1.0;  // on every stiffness, > 0
+  StiffnessFactors factors;      // on each one, after the scale
+  std::optional<double> length;  // m, > 0; the planner's when absent
+  std::optional<double>
+      mass_per_length;  // the plant's own ρA, kg/m, ≥ 0; the planner's when absent
+  /// The one gravity that acts on the real rod (m/s², world frame); planner_gravity when absent.
+  std::optional<Eigen::Vector3d> gravity;
+  /// The gravity of the planner's model (a task's top-level `gravity`): the planned rod's load
+  /// holds its weight ρA × planner_gravity, which the plant's own weight replaces.
+  Eigen::Vector3d planner_gravity = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> rest_curvature;  // ũ, 1/m; the planner's when absent
   /// The tip's actual pose in the commanded tip frame (commanded_T_actual): a grasp that slipped
   /// or was placed a little off.
   Pose grasp_offset;
 
   /// Throws InputError naming the field ("PlantModel.stiffness_scale = 0 must be > 0", …).
   void validate() const;
+  /// The gravity the plant's weight comes from: `gravity`, else `planner_gravity`.
+  Eigen::Vector3d acting_gravity() const { return gravity.value_or(planner_gravity); }
   /// The planner's rod as the plant has it: stiffnesses scaled, its length (the nodes keep their
-  /// count), its rest curvature, and the planner's loads plus the plant's weight ρA g.
+  /// count), its rest curvature, and the planner's loads with the planner's weight
+  /// (planned ρA × planner_gravity) replaced by the plant's, mass_per_length × acting_gravity().
   ClampedRod real_rod(const ClampedRod& planned) const;
 };
 

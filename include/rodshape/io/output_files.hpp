@@ -1,0 +1,40 @@
+// output_files.hpp: what a run may do to the files in the way of its outputs (issue 24). An
+// output that is one of the run's own inputs (its task file, its URDF) is bad input. A file where
+// an output goes is replaced or removed only when it is recognisably rodshape's, an earlier run's
+// output: by the signature its JSON begins with, the header its CSV begins with, or the comment
+// its SVG begins with. Any other file in the way is bad input, named, and left alone.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rodshape {
+
+/// The first member of every JSON document rodshape writes into an output directory (plan.json,
+/// joint_trajectory.json, validation.json): {"generator": "rodshape <version>", ...}.
+inline constexpr const char* kGeneratorKey = "generator";
+std::string generator_signature();  // "rodshape <version>"
+/// The comment every SVG rodshape writes has after its XML declaration.
+std::string svg_signature_comment();  // "<!-- generator: rodshape <version> -->"
+
+/// True when the file at `path` is one rodshape writes under its name: a JSON document whose
+/// first member is kGeneratorKey with a value starting "rodshape", an SVG with the signature
+/// comment, trajectory.csv or validation.csv with their exact headers, joint_trajectory.csv with
+/// a header "t,<joint names>". False for anything else, including files it cannot read.
+bool is_rodshape_output(const std::string& path);
+
+/// InputError "<output>: is <input>, an input of this run; ..." when `output` names the same file
+/// as one of `inputs` (through links, or as a hard link).
+void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
+
+/// For each of `names` in `directory`: InputError when it is one of `inputs` or an existing file
+/// that is not rodshape's (is_rodshape_output), naming it. Writes and removes nothing.
+void check_output_files(const std::string& directory,
+                        const std::vector<std::string>& names,
+                        const std::vector<std::string>& inputs);
+
+/// Removes those of `names` in `directory` that are rodshape's outputs (an earlier run's); other
+/// files are left alone. InputError when one cannot be removed.
+void remove_earlier_outputs(const std::string& directory, const std::vector<std::string>& names);
+
+}  // namespace rodshape
