@@ -129,6 +129,9 @@ void bind_outcomes(py::module_& m) {
       .def_readonly("task", &Plan::task)
       .def_property_readonly("status", [](const Plan& p) { return to_string(p.result.status); })
       .def_property_readonly("steps", [](const Plan& p) { return p.result.steps; })
+      .def_property_readonly(
+          "scene", [](const Plan& p) { return p.result.scene; },
+          "with a scene, its SceneResult (least gap, where), else None")
       .def("brief",
            [](const Plan& p) { return fields_in_task_names(p.result.brief(p.task.options.steps)); })
       .def("to_json", &Plan::to_json, "The plan.json document `rodshape plan` writes.")

@@ -91,6 +91,7 @@ void bind_problem(py::module_& m) {
       .def_readwrite("rod", &PlanProblem::rod)
       .def_readwrite("target", &PlanProblem::target)
       .def_readwrite("initial", &PlanProblem::initial)
+      .def_readwrite("scene", &PlanProblem::scene, "the cell's obstacles (a Scene)")
       .def_property(
           "released", [](const PlanProblem& p) { return p.grasp.released; },
           [](PlanProblem& p, const std::array<bool, 6>& r) { p.grasp.released = r; },
@@ -128,6 +129,12 @@ void bind_problem(py::module_& m) {
       .def_readwrite("track_between_waypoints", &PlanOptions::track_between_waypoints)
       .def_readwrite("tracking_substeps", &PlanOptions::tracking_substeps)
       .def_readwrite("max_refinements", &PlanOptions::max_refinements)
+      .def_readwrite("scene_margin", &PlanOptions::scene_margin,
+                     "fraction of the clearance added to each step's required gaps")
+      .def_readwrite("scene_reach", &PlanOptions::scene_reach,
+                     "m: a step keeps clear of the obstacles this near its start or points")
+      .def_readwrite("scene_detour", &PlanOptions::scene_detour,
+                     "search a detour where the straight motion drags the rod through one")
       .def_property(
           "max_linear_speed", [](const PlanOptions& o) { return o.end_effector.max_linear_speed; },
           [](PlanOptions& o, double v) { o.end_effector.max_linear_speed = v; }, "m/s")
@@ -145,6 +152,7 @@ void bind_trajectory(py::module_& m) {
   py::class_<PlanStep>(m, "PlanStep", "One optimal shape of the plan.")
       .def_readonly("fraction", &PlanStep::fraction)
       .def_readonly("inserted", &PlanStep::inserted)
+      .def_readonly("detour", &PlanStep::detour, "a waypoint of a detour around the scene")
       .def_property_readonly(
           "objective_points", [](const PlanStep& s) { return rows_of(s.objective_points); },
           "(k, 3) this step's objective points, m")
@@ -165,13 +173,14 @@ void bind_trajectory(py::module_& m) {
   py::class_<PlanResult>(m, "PlanResult")
       .def_property_readonly(
           "status", [](const PlanResult& r) { return to_string(r.status); },
-          "complete, snap_through, partial or infeasible")
+          "complete, snap_through, partial, infeasible or collision")
       .def_readonly("message", &PlanResult::message)
       .def_readonly("horizon", &PlanResult::horizon, "the steps planned under a horizon, else 0")
       .def_readonly("steps", &PlanResult::steps)
       .def_readonly("initial_configuration", &PlanResult::initial_configuration)
       .def_readonly("initial_wrench", &PlanResult::initial_wrench)
       .def_readonly("tracking", &PlanResult::tracking)
+      .def_readonly("scene", &PlanResult::scene, "with a scene, its SceneResult, else None")
       .def_property_readonly(
           "joints",
           [](const PlanResult& r) -> std::optional<JointTrajectoryResult> {

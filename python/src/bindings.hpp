@@ -16,6 +16,7 @@ namespace rodshape::python {
 namespace py = pybind11;
 
 void bind_core(py::module_& m);
+void bind_scene(py::module_& m);
 void bind_solvers(py::module_& m);
 void bind_optimisation(py::module_& m);
 void bind_robot(py::module_& m);

@@ -35,6 +35,7 @@ PYBIND11_MODULE(_rodshape, m) {
   // Bad input: a ValueError that carries the library's one-line message.
   py::register_exception<rodshape::InputError>(m, "InputError", PyExc_ValueError);
   bind_core(m);
+  bind_scene(m);
   bind_solvers(m);
   bind_optimisation(m);
   bind_robot(m);

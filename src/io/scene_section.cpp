@@ -54,7 +54,7 @@ Obstacle read_obstacle(const YamlField& obstacle, int index) {
 Scene read_scene_section(const YamlField& scene,
                          const std::optional<CrossSection>& section,
                          PlanOptions& options) {
-  scene.expect_mapping({"clearance", "margin", "reach", "obstacles"});
+  scene.expect_mapping({"clearance", "margin", "reach", "detour", "obstacles"});
   if (!section) {
     scene.fail(scene.path() +
                " needs rod.section, which is missing: the rod's surface (its centreline inflated "
@@ -68,6 +68,8 @@ Scene read_scene_section(const YamlField& scene,
     options.scene_margin = margin.number();
   if (const YamlField reach = scene.get("reach"); reach.present())
     options.scene_reach = reach.number();
+  if (const YamlField detour = scene.get("detour"); detour.present())
+    options.scene_detour = detour.boolean();
   const YamlField obstacles = scene.require("obstacles");
   const std::vector<YamlField> elements = obstacles.elements();
   if (elements.size() > Scene::kMaxObstacles) {

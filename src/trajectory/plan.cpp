@@ -278,7 +278,8 @@ bool plan_steps(const PlanProblem& problem,
                                               number, scene ? &loop.required : nullptr);
       // Through an obstacle (or still too near after the refinements): a way around, once per set.
       const bool refinable = result.tracking.refinements < options.max_refinements;
-      if (segment.collision && !set.detour_tried && (segment.gap->gap < 0.0 || !refinable)) {
+      if (segment.collision && options.scene_detour && !set.detour_tried &&
+          (segment.gap->gap < 0.0 || !refinable)) {
         loop.pending[next].detour_tried = true;
         if (auto around = take_detour(problem, options, loop, set, step, unconstrained, result))
           segment = std::move(*around);

@@ -400,9 +400,15 @@ TEST(PlanReader, BundledPlanExamplesRead) {
       EXPECT_TRUE(task.sensor.wrist.has_value());
       EXPECT_TRUE(task.closed_loop.estimation.gravity.has_value());
     }
+    if (name == "plan_around_post.yaml") {  // the one with a scene
+      ASSERT_EQ(task.problem.scene.obstacles.size(), 2u);
+      EXPECT_EQ(task.problem.scene.obstacles[1].name, "post");
+      EXPECT_DOUBLE_EQ(task.problem.scene.clearance, 0.005);
+      EXPECT_DOUBLE_EQ(task.problem.scene.rod_radius, 0.5 * std::hypot(0.02, 0.02));
+    }
     ++count;
   }
-  EXPECT_EQ(count, 10);
+  EXPECT_EQ(count, 11);
 }
 
 // ---- the plant's weight (issue 24, item 2)

@@ -29,8 +29,10 @@ struct FdModel {
   double bound = 0.0;  // |FD - ∂f/∂ξ| per unit F
 };
 
-inline FdModel central_difference_model(int intervals) {
-  constexpr double kMu = 10.0;
+/// `mu` bounds the relative third derivative in ξ (10 for the rod's own quantities; a distance to
+/// an obstacle curved at radius R, reached by nodes that a unit ξ moves by about L, has about
+/// (L/R)² more).
+inline FdModel central_difference_model(int intervals, double kMu = 10.0) {
   const double delta = 16.0 * intervals * std::numeric_limits<double>::epsilon();
   FdModel model;
   model.eta = std::cbrt(3.0 * delta / kMu);

@@ -311,3 +311,31 @@ def test_closed_loop_options_and_checkpoints():
     task.closed_loop.max_energy_ratio = 0.5
     with pytest.raises(rodshape.InputError, match="max_energy_ratio"):
         rodshape.validate(task, closed_loop=True)
+
+
+def test_a_scene_built_in_python_is_kept_clear():
+    task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
+    problem = task.problem
+    scene = rodshape.Scene()
+    scene.rod_radius = 0.5 * np.hypot(0.02, 0.02)
+    scene.clearance = 0.005
+    # A ball beside the C (its nearest target point is 4 cm away) and a table under the clamp.
+    scene.obstacles = [
+        rodshape.Obstacle(rodshape.SphereObstacle([0.12, 0.0, 0.2], 0.02), "ball"),
+        rodshape.Obstacle(rodshape.HalfSpaceObstacle([0.0, 0.0, -1.0], 0.03), "table"),
+    ]
+    problem.scene = scene
+    result = rodshape.plan_problem(problem, task.options)
+    assert result.status == "complete", result.message
+    assert result.scene is not None
+    assert result.scene.min_gap >= scene.clearance - 1e-9
+    assert result.scene.obstacle_label in ("'ball'", "'table'")
+    d, gradient = scene.obstacles[0].distance([0.12, 0.0, 0.25])
+    assert abs(d - 0.03) < 1e-15 and np.allclose(gradient, [0.0, 0.0, 1.0])
+
+
+def test_the_bundled_post_is_passed_by_a_detour():
+    plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_around_post.yaml")))
+    assert plan.status == "complete", plan.message
+    assert any(step.detour for step in plan.steps)
+    assert plan.scene.clear()

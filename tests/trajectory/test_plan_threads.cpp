@@ -21,7 +21,9 @@ void expect_identical(const PlanResult& a, const PlanResult& b) {
   ASSERT_EQ(a.status, b.status) << a.message << " / " << b.message;
   ASSERT_EQ(a.steps.size(), b.steps.size());
   for (std::size_t k = 0; k < a.steps.size(); ++k) {
-    EXPECT_EQ(a.steps[k].solution.base_wrench.to_vector(), b.steps[k].solution.base_wrench.to_vector()) << k;
+    EXPECT_EQ(a.steps[k].solution.base_wrench.to_vector(),
+              b.steps[k].solution.base_wrench.to_vector())
+        << k;
     EXPECT_EQ(a.steps[k].end_effector.position, b.steps[k].end_effector.position) << k;
   }
   ASSERT_EQ(a.arm.has_value(), b.arm.has_value());

@@ -50,9 +50,9 @@ TEST(ScenePlan, TheBundledPostIsPassedByADetourAndAnIndependentReplayStaysClear)
   ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
   ASSERT_TRUE(plan.scene.has_value());
   EXPECT_GE(plan.scene->min_gap, task.problem.scene.clearance - SceneResult::kTolerance);
-  EXPECT_TRUE(std::any_of(plan.steps.begin(), plan.steps.end(),
-                          [](const PlanStep& step) { return step.detour; }))
-      << "the post blocks the straight way: a detour is expected";
+  EXPECT_TRUE(std::any_of(plan.steps.begin(), plan.steps.end(), [](const PlanStep& step) {
+    return step.detour;
+  })) << "the post blocks the straight way: a detour is expected";
   // Gentle: no coiled shape on the way (the detour's edges are capped at 1.5× their ends).
   EXPECT_LE(plan.tracking.peak_energy,
             1.5 * std::max(plan.initial_configuration.energy,
@@ -81,13 +81,15 @@ TEST(ScenePlan, AClampInsideAnObstacleAndASceneWithoutTrackingAreBadInput) {
   PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
   PlanTask inside = task;
   inside.problem.scene.obstacles.push_back({"", SphereObstacle{Eigen::Vector3d::Zero(), 0.01}});
-  EXPECT_EQ(input_error_message([&] { rodshape::plan(inside.problem, inside.options); })
-                .rfind("ClampedRod.clamp.position lies inside obstacle 2", 0),
+  EXPECT_EQ(input_error_message([&] {
+              rodshape::plan(inside.problem, inside.options);
+            }).rfind("ClampedRod.clamp.position lies inside obstacle 2", 0),
             0u);
   PlanTask untracked = task;
   untracked.options.track_between_waypoints = false;
-  EXPECT_EQ(input_error_message([&] { rodshape::plan(untracked.problem, untracked.options); })
-                .rfind("PlanOptions.track_between_waypoints must be true with a scene", 0),
+  EXPECT_EQ(input_error_message([&] {
+              rodshape::plan(untracked.problem, untracked.options);
+            }).rfind("PlanOptions.track_between_waypoints must be true with a scene", 0),
             0u);
 }
 
@@ -96,25 +98,25 @@ TEST(ScenePlan, ARodStartingThroughAnObstacleIsBadInput) {
   // A rail across the straight rod at rest (it stands along +z from the clamp).
   task.problem.scene.obstacles.push_back(
       {"rail", CapsuleObstacle{{-0.05, 0.0, 0.15}, {0.05, 0.0, 0.15}, 0.005}});
-  EXPECT_NE(input_error_message([&] { rodshape::plan(task.problem, task.options); })
-                .find("the initial rod comes within"),
+  EXPECT_NE(input_error_message([&] {
+              rodshape::plan(task.problem, task.options);
+            }).find("the initial rod comes within"),
             std::string::npos);
 }
 
-TEST(ScenePlan, AWallTheRodCannotGetPastEndsInCollisionNamingIt) {
+TEST(ScenePlan, WithoutADetourThePostEndsInCollisionNamingItAndWhere) {
   PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
-  // The post made a long rail across the whole plane the band sweeps through: no gentle way
-  // around within the detour's edges, and no refinement allowed.
-  auto& post = std::get<CapsuleObstacle>(task.problem.scene.obstacles[1].shape);
-  post.from.y() = -0.25;
-  post.to.y() = 0.25;
-  task.options.max_refinements = 0;
+  task.options.scene_detour = false;
   const PlanResult plan = rodshape::plan(task.problem, task.options);
   ASSERT_EQ(plan.status, PlanStatus::Collision) << plan.message;
   EXPECT_NE(plan.message.find("obstacle 'post'"), std::string::npos) << plan.message;
   ASSERT_TRUE(plan.scene.has_value());
   EXPECT_LT(plan.scene->margin, 0.0);
-  EXPECT_FALSE(plan.scene->detours.empty());
+  EXPECT_EQ(plan.scene->obstacle_label, "'post'");
+  EXPECT_GT(plan.scene->step, 0);
+  EXPECT_TRUE(plan.scene->detours.empty());
+  EXPECT_TRUE(std::none_of(plan.steps.begin(), plan.steps.end(),
+                           [](const PlanStep& step) { return step.detour; }));
 }
 
 }  // namespace

@@ -78,6 +78,9 @@ struct PlanOptions {
   /// start shape or its objective points (m, > 0; obstacles it then comes too near to are added
   /// and the step solved again).
   double scene_reach = 0.1;
+  /// With a scene: search a detour where the straight motion between two waypoints drags the rod
+  /// through an obstacle (detour_search.hpp); false: such a plan ends in the status Collision.
+  bool scene_detour = true;
   ArmPlanOptions arm;  // used when the problem has an arm
   /// Throws InputError naming the field ("PlanOptions.steps", "PlanOptions.max_refinements" etc.).
   void validate() const;
