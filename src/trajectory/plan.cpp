@@ -355,7 +355,8 @@ PlanResult plan_rod(const PlanProblem& problem,
       if (const auto blocked =
               scene_stages::target_clear(problem.scene, loop.required, problem.target.points)) {
         result.feasibility.feasible = false;
-        result.feasibility.reason = *blocked;
+        result.feasibility.offending_point = blocked->point;
+        result.feasibility.reason = blocked->reason;
       }
     }
   }

@@ -21,9 +21,9 @@ bool is_mount(const Scene& scene, const std::vector<double>& required, std::size
 
 }  // namespace
 
-std::optional<std::string> target_clear(const Scene& scene,
-                                        const std::vector<double>& required,
-                                        const PointSet& points) {
+std::optional<BlockedPoint> target_clear(const Scene& scene,
+                                         const std::vector<double>& required,
+                                         const PointSet& points) {
   for (std::size_t k = 0; k < points.size(); ++k) {
     for (std::size_t j = 0; j < scene.obstacles.size(); ++j) {
       const double gap = scene.obstacles[j].distance(points[k]).distance - scene.rod_radius;
@@ -34,7 +34,7 @@ std::optional<std::string> target_clear(const Scene& scene,
             << " is within the rod's radius plus the clearance of obstacle "
             << scene.obstacles[j].label(static_cast<int>(j)) << " (gap " << gap * 1e3
             << " mm, required " << required[j] * 1e3 << " mm)";
-        return out.str();
+        return BlockedPoint{static_cast<int>(k), out.str()};
       }
     }
   }

@@ -21,9 +21,13 @@ namespace rodshape::scene_stages {
 
 /// Why the target cannot be reached clear of the scene (a point inside an obstacle plus the
 /// clearance), naming the point and the obstacle; nullopt when every point is clear.
-std::optional<std::string> target_clear(const Scene& scene,
-                                        const std::vector<double>& required,
-                                        const PointSet& points);
+struct BlockedPoint {
+  int point = -1;  // index into the target's points
+  std::string reason;
+};
+std::optional<BlockedPoint> target_clear(const Scene& scene,
+                                         const std::vector<double>& required,
+                                         const PointSet& points);
 
 /// `points` with each point inside an obstacle's required gap moved out along the obstacle's
 /// normal to r + required (a few passes, for points between two obstacles).
