@@ -69,8 +69,10 @@ class ValidateCommand final : public Command {
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
     command->footer(
         "Exit codes: 0 the plant followed the whole path; 2 bad input (task file, command line, "
-        "output path, an infeasible target): nothing written or removed; 3 the plant snapped or "
-        "was lost, or the plan has no path to carry out (the files are still written); 1 internal "
+        "output path, an infeasible target): nothing written or removed; 3 the plant snapped, was "
+        "lost or "
+        "would touch an obstacle of the scene, or the plan has no path to carry out (the files are "
+        "still written); 1 internal "
         "error.");
     return command;
   }

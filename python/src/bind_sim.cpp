@@ -111,6 +111,8 @@ void bind_sim(py::module_& m) {
   py::class_<ValidationRun>(m, "ValidationRun", "One run: the errors at each frame (m).")
       .def_readonly("seed", &ValidationRun::seed)
       .def_readonly("closed_loop", &ValidationRun::closed_loop)
+      .def_readonly("min_gap", &ValidationRun::min_gap,
+                    "m, the least gap to the plan's scene over the frames (inf without one)")
       .def_property_readonly("time", [](const ValidationRun& r) { return array_of(r.time); })
       .def_property_readonly("error_3d",
                              [](const ValidationRun& r) { return array_of(r.error_3d); })

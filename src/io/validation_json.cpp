@@ -49,11 +49,17 @@ Json sensor_object(const MarkerSensorModel& sensor) {
 
 Json events_array(const std::vector<PlantEvent>& events) {
   Json list = Json::array();
-  for (const PlantEvent& e : events)
-    list.push_back({{"time", e.t},
-                    {"kind", to_string(e.kind)},
-                    {"energy_released", json_number(e.energy_released)},
-                    {"message", e.message}});
+  for (const PlantEvent& e : events) {
+    Json event = {{"time", e.t},
+                  {"kind", to_string(e.kind)},
+                  {"energy_released", json_number(e.energy_released)},
+                  {"message", e.message}};
+    if (e.kind == PlantEvent::Kind::Contact) {
+      event["obstacle"] = e.obstacle;
+      event["depth"] = json_number(e.depth);
+    }
+    list.push_back(std::move(event));
+  }
   return list;
 }
 
@@ -93,6 +99,7 @@ Json run_object(const ValidationRun& run) {
                 {"true_error", json_number(run.final.true_error)},
                 {"true_max_distance", json_number(run.final.true_max_distance)}};
   j["events"] = events_array(run.events);
+  j["min_gap"] = json_number(run.min_gap);              // null without a scene
   j["estimates"] = checkpoints_array(run.checkpoints);  // none in open loop
   const PlantFrame& last = run.plant_final;
   j["plant_final"] = {{"time", last.t},

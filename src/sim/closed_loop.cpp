@@ -2,6 +2,8 @@
 // checkpoint (closed_loop.hpp).
 #include "rodshape/sim/closed_loop.hpp"
 
+#include "scene_contact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -45,7 +47,8 @@ class Loop {
         plant_offset_(offset),
         sensor_(sensor),
         loop_(loop),
-        plant_(plant) {}
+        plant_(plant),
+        contact_(problem.scene, rod.clamp.position) {}
 
   ClosedLoopRun run(const PlanResult& plan) {
     if (drives_joints(problem_, plan)) joints_ = plan.arm->joints.q.front();
@@ -67,6 +70,9 @@ class Loop {
       if (!remaining_.empty()) checkpoint(t, waypoint, from, planned);
     }
     run_.driven_by_joints = joints_.has_value();  // reset when a segment had no IK solution
+    run_.min_gap = contact_.min_gap();
+    run_.plant.events.insert(run_.plant.events.end(), contact_.contacts().begin(),
+                             contact_.contacts().end());
     return std::move(run_);
   }
 
@@ -87,6 +93,7 @@ class Loop {
 
   /// One frame seen and its errors recorded; the frame itself is not kept (issue 24).
   void see(const PlantFrame& frame) {
+    contact_.see(frame);
     run_.last_seen = sensor_.observe(frame, rod_.properties.length);
     run_.times.push_back(frame.t);
     run_.errors.push_back(shape_error(problem_.target.points, rod_.clamp.position, run_.last_seen,
@@ -260,6 +267,7 @@ class Loop {
   std::optional<Eigen::VectorXd> joints_;       // the arm's joints at the last waypoint
   std::optional<Workspace::ReachShell> shell_;  // the plan's reach shell
   closed_loop_detail::Beliefs beliefs_;  // the model's corrections and the grasp offset so far
+  sim_detail::SceneContact contact_;     // the plant against the plan's scene
   ClosedLoopRun run_;
 };
 

@@ -10,6 +10,7 @@
 #include "plant_reach.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
+#include "scene_contact.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -48,7 +49,9 @@ void drive_and_observe(ValidationResult& result,
   }
   const double length = result.real_rod.properties.length;
   const Eigen::Vector3d clamp = result.real_rod.clamp.position;
+  sim_detail::SceneContact contact(problem.scene, clamp);
   const auto see = [&](const PlantFrame& frame) {
+    contact.see(frame);
     for (std::size_t k = 0; k < cameras.size(); ++k) {
       ValidationRun& run = result.runs[k];
       run.last_seen = cameras[k].observe(frame, length);
@@ -61,6 +64,8 @@ void drive_and_observe(ValidationResult& result,
                              plan.initial_wrench, times, see, options.plant);
   for (ValidationRun& run : result.runs) {
     run.events = result.plant.events;
+    run.events.insert(run.events.end(), contact.contacts().begin(), contact.contacts().end());
+    run.min_gap = contact.min_gap();
     run.plant_final = result.plant.last;
   }
 }
@@ -90,6 +95,7 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
   run.last_seen = std::move(loop.last_seen);
   run.checkpoints = std::move(loop.checkpoints);
   run.events = loop.plant.events;
+  run.min_gap = loop.min_gap;
   run.plant_final = loop.plant.last;
   run.driven_by_joints = loop.driven_by_joints;
   plant_run = std::move(loop.plant);
@@ -118,19 +124,32 @@ void check_frames(const PlanResult& plan,
                        " in all: lower the frame rate or the runs");
 }
 
-/// Stage 4: the status from the plant's events in every run (a loss outweighs a snap).
+/// Stage 4: the status from the plant's events in every run (a loss outweighs a contact, a contact
+/// a snap).
 void judge(ValidationResult& result) {
+  const auto rank = [](ValidationStatus status) {
+    switch (status) {
+      case ValidationStatus::Complete:
+        return 0;
+      case ValidationStatus::SnapThrough:
+        return 1;
+      case ValidationStatus::Contact:
+        return 2;
+      case ValidationStatus::Lost:
+        break;
+    }
+    return 3;
+  };
   result.status = ValidationStatus::Complete;
   result.message = "the plant followed the whole path";
   for (const ValidationRun& run : result.runs) {
     for (const PlantEvent& event : run.events) {
-      if (event.kind == PlantEvent::Kind::Lost) {
-        result.status = ValidationStatus::Lost;
-        result.message = event.message;
-        return;
-      }
-      if (result.status == ValidationStatus::Complete) {
-        result.status = ValidationStatus::SnapThrough;
+      const ValidationStatus status = event.kind == PlantEvent::Kind::Lost ? ValidationStatus::Lost
+                                      : event.kind == PlantEvent::Kind::Contact
+                                          ? ValidationStatus::Contact
+                                          : ValidationStatus::SnapThrough;
+      if (rank(status) > rank(result.status)) {
+        result.status = status;
         result.message = event.message;
       }
     }
@@ -161,6 +180,8 @@ std::string to_string(ValidationStatus status) {
       return "snap_through";
     case ValidationStatus::Lost:
       return "lost";
+    case ValidationStatus::Contact:
+      return "contact";
   }
   return "lost";
 }

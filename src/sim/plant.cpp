@@ -57,7 +57,15 @@ PlantFrame frame_at(double t, const Pose& end_effector, const ShootingResult& st
 }  // namespace
 
 std::string to_string(PlantEvent::Kind kind) {
-  return kind == PlantEvent::Kind::SnapThrough ? "snap_through" : "lost";
+  switch (kind) {
+    case PlantEvent::Kind::SnapThrough:
+      return "snap_through";
+    case PlantEvent::Kind::Contact:
+      return "contact";
+    case PlantEvent::Kind::Lost:
+      break;
+  }
+  return "lost";
 }
 
 void PlantOptions::validate() const {

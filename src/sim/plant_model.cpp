@@ -19,8 +19,10 @@ void PlantModel::validate() const {
   if (mass_per_length) detail::require_non_negative("PlantModel.mass_per_length", *mass_per_length);
   if (mass_per_length)
     require_in_range("PlantModel.mass_per_length", *mass_per_length, bounds::kMassPerLength);
-  if (gravity) require_magnitude_at_most("PlantModel.gravity", *gravity, bounds::kMaxGravity, "m/s^2");
-  require_magnitude_at_most("PlantModel.planner_gravity", planner_gravity, bounds::kMaxGravity, "m/s^2");
+  if (gravity)
+    require_magnitude_at_most("PlantModel.gravity", *gravity, bounds::kMaxGravity, "m/s^2");
+  require_magnitude_at_most("PlantModel.planner_gravity", planner_gravity, bounds::kMaxGravity,
+                            "m/s^2");
   if (rest_curvature) detail::require_finite("PlantModel.rest_curvature", *rest_curvature);
   detail::require_pose("PlantModel.grasp_offset", grasp_offset);
 }

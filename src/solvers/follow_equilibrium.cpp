@@ -33,6 +33,8 @@ std::string to_string(FollowEvent event) {
       return "unstable";
     case FollowEvent::OtherBranch:
       return "other_branch";
+    case FollowEvent::Stopped:
+      return "stopped";
   }
   return "unknown";
 }
@@ -142,7 +144,7 @@ bool accept(const ClampedRod& rod,
     state.stability = assess_stability(with_substeps(rod_at(rod, path, sigma), solved.summary),
                                        solved.configuration);
   const bool unstable = state.stability && !state.stability->stable && !state.stability->degenerate;
-  if (options.observer) options.observer(sigma, solved.configuration);
+  const bool stopped = options.observer && !options.observer(sigma, solved.configuration);
   result.sigma = sigma;
   result.base_wrench = solved.base_wrench;
   result.configuration = std::move(solved.configuration);
@@ -151,8 +153,12 @@ bool accept(const ClampedRod& rod,
     result.event = FollowEvent::Unstable;
     result.event_sigma = sigma;
     result.message = "the equilibrium at sigma = " + detail::format_value(sigma) + " is unstable";
+  } else if (stopped) {
+    result.event = FollowEvent::Stopped;
+    result.event_sigma = sigma;
+    result.message = "stopped by the observer at sigma = " + detail::format_value(sigma);
   }
-  return !unstable;
+  return !unstable && !stopped;
 }
 
 /// σ_j = j / substeps; the first failure ends the path.

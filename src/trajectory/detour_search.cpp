@@ -55,13 +55,16 @@ class Tree {
     Waypoint end;
     bool blocked = false;
     std::vector<Eigen::Vector3d> previous = start.configuration.p;
+    // Every substep: clear of the scene, no node moving like a snap, below the energy cap; the
+    // first that is not stops the edge.
     follow.observer = [&](double, const RodConfiguration& c) {
       const SceneGap gap = problem_.scene.least_gap(c.p, required_);
       if (gap.margin < end.gap.margin) end.gap = gap;
-      if (!gap.clear()) blocked = true;
+      if (!gap.clear() || c.energy > energy_cap_) blocked = true;
       for (std::size_t i = 0; i < c.p.size() && !blocked; ++i)
         if ((c.p[i] - previous[i]).norm() > jump) blocked = true;  // moved like a snap
       previous = c.p;
+      return !blocked;
     };
     const Pose ee_T_tip = inverse(problem_.grasp.tip_to_end_effector);
     const Pose from = start.end_effector;

@@ -202,6 +202,7 @@ SegmentTracking track_segment(const PlanProblem& problem,
     follow.observer = [&](double, const RodConfiguration& c) {
       const SceneGap gap = problem.scene.least_gap(c.p, *required);
       if (!least || gap.margin < least->margin) least = gap;
+      return true;
     };
   }
   const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);

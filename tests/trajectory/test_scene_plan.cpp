@@ -38,6 +38,7 @@ Replay replay(const PlanProblem& problem, const PlanResult& plan) {
   options.observer = [&](double, const RodConfiguration& c) {
     const SceneGap gap = problem.scene.least_gap(c.p, required);
     if (gap.margin < result.least.margin) result.least = gap;
+    return true;
   };
   result.followed = follow_equilibrium(problem.rod, sampled_tip_path(samples), plan.initial_wrench,
                                        options, &plan.steps.back().solution.configuration);

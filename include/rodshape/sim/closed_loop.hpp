@@ -92,8 +92,9 @@ struct Checkpoint {
 /// A closed-loop run: the plant as driven, what the sensor saw and the errors at each frame, the
 /// checkpoints.
 struct ClosedLoopRun {
-  PlantRun plant;
-  std::vector<double> times;       // s, one per frame
+  PlantRun plant;  // its events include the contacts with the plan's scene
+  double min_gap = std::numeric_limits<double>::infinity();  // to the plan's scene, m
+  std::vector<double> times;                                 // s, one per frame
   std::vector<ShapeError> errors;  // one per frame (the frames themselves are not kept)
   SensorFrame last_seen;           // what the sensor saw at the last frame
   std::vector<Checkpoint> checkpoints;

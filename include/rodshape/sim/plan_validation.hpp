@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -48,8 +49,11 @@ struct ValidationRun {
   ShapeError final;       // at the last frame
   bool closed_loop = false;
   std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
-  std::vector<PlantEvent> events;       // the plant's, in this run
-  PlantFrame plant_final;               // the plant's last equilibrium in this run
+  std::vector<PlantEvent> events;       // the plant's, in this run (contacts with the scene too)
+  /// The least gap between the plant's rod and the plan's scene over the frames, m (+inf without
+  /// a scene).
+  double min_gap = std::numeric_limits<double>::infinity();
+  PlantFrame plant_final;  // the plant's last equilibrium in this run
   /// The plant followed the arm's joint trajectory through its forward kinematics (closed loop:
   /// every segment's, by IK from the arm's joints; see ClosedLoopRun).
   bool driven_by_joints = false;
@@ -59,8 +63,9 @@ enum class ValidationStatus {
   Complete,     // the plant followed the whole path
   SnapThrough,  // it did, but snapped between samples (see plant.events)
   Lost,         // no equilibrium at some sample: the run stops there
+  Contact,      // it did, but its rod would touch an obstacle of the plan's scene (runs' events)
 };
-std::string to_string(ValidationStatus status);  // "complete", "snap_through", "lost"
+std::string to_string(ValidationStatus status);  // "complete", "snap_through", "lost", "contact"
 
 struct ValidationResult {
   ValidationStatus status = ValidationStatus::Lost;

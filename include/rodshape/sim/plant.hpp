@@ -25,13 +25,16 @@ struct PlantEvent {
   enum class Kind {
     SnapThrough,  // the rod jumped to another equilibrium, releasing energy
     Lost,         // no equilibrium was found at a sample: the run stops there
+    Contact,      // the rod's surface would touch an obstacle of the plan's scene (validation)
   };
   Kind kind = Kind::Lost;
-  double t = 0.0;                // s: the sample where it happened
+  double t = 0.0;                // s: the sample (or, for a contact, the frame) where it happened
   double energy_released = 0.0;  // J (SnapThrough)
   std::string message;
+  int obstacle = -1;   // Contact: index into the scene's obstacles
+  double depth = 0.0;  // Contact: the deepest overlap of that contact, m
 };
-std::string to_string(PlantEvent::Kind kind);  // "snap_through", "lost"
+std::string to_string(PlantEvent::Kind kind);  // "snap_through", "lost", "contact"
 
 /// The plant as a camera frame sees it.
 struct PlantFrame {

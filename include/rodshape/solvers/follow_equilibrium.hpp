@@ -62,8 +62,8 @@ struct FollowOptions {
   /// Assess the stability of the last configuration (needs final_derivatives = AllNodes).
   bool arrival_stability = false;
   /// Called with every accepted substep's σ and equilibrium (e.g. to measure its gap to a scene);
-  /// empty: nothing is called.
-  std::function<void(double sigma, const RodConfiguration&)> observer;
+  /// returning false stops the path there (the event Stopped). Empty: nothing is called.
+  std::function<bool(double sigma, const RodConfiguration&)> observer;
   /// Throws InputError naming the field ("FollowOptions.substeps = 0 must be >= 1").
   void validate() const;
 };
@@ -86,8 +86,10 @@ enum class FollowEvent {
   Unstable,     // a followed equilibrium (every substep, or on arrival) is unstable
   OtherBranch,  // on arrival the rod is not the expected equilibrium (follow_equilibrium's
                 // `expected`): it went over to another branch on the way (snap-through)
+  Stopped,      // FollowOptions::observer returned false at a substep
 };
-std::string to_string(FollowEvent event);  // "none", "lost", "unstable", "other_branch"
+/// "none", "lost", "unstable", "other_branch", "stopped"
+std::string to_string(FollowEvent event);
 
 struct FollowResult {
   FollowEvent event = FollowEvent::None;
