@@ -12,6 +12,7 @@
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/trajectory/plan.hpp"
 #include "support/input_error.hpp"
+#include "support/scene_replay.hpp"
 
 namespace rodshape {
 namespace {
@@ -19,31 +20,6 @@ namespace {
 using testing::input_error_message;
 
 const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples/";
-
-/// The held rod followed along the plan's timed end-effector path, one direct solve per sample,
-/// from the initial equilibrium; the least gap to the scene over every sample.
-struct Replay {
-  FollowResult followed;
-  SceneGap least;
-};
-Replay replay(const PlanProblem& problem, const PlanResult& plan) {
-  std::vector<TipCondition> samples;
-  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
-  for (const TimedPose& sample : plan.end_effector_path)
-    samples.push_back(ClampedTip{compose(sample.pose, ee_T_tip)});
-  const std::vector<double> required = problem.scene.required_gaps(problem.rod.clamp.position);
-  Replay result;
-  FollowOptions options;
-  options.substeps = static_cast<int>(samples.size()) - 1;
-  options.observer = [&](double, const RodConfiguration& c) {
-    const SceneGap gap = problem.scene.least_gap(c.p, required);
-    if (gap.margin < result.least.margin) result.least = gap;
-    return true;
-  };
-  result.followed = follow_equilibrium(problem.rod, sampled_tip_path(samples), plan.initial_wrench,
-                                       options, &plan.steps.back().solution.configuration);
-  return result;
-}
 
 TEST(ScenePlan, TheBundledPostIsPassedByADetourAndAnIndependentReplayStaysClear) {
   const PlanTask task = read_plan_task(kExamples + "plan_around_post.yaml");
@@ -59,7 +35,7 @@ TEST(ScenePlan, TheBundledPostIsPassedByADetourAndAnIndependentReplayStaysClear)
             1.5 * std::max(plan.initial_configuration.energy,
                            plan.steps.back().solution.configuration.energy));
 
-  const Replay check = replay(task.problem, plan);
+  const testing::SceneReplay check = testing::replay_scene(task.problem, plan);
   ASSERT_TRUE(check.followed.followed()) << check.followed.brief();
   // Arrives on the planned final shape (1 mm: the tracking's branch tolerance).
   EXPECT_LT(check.followed.arrival_deviation, 1e-3);
