@@ -332,26 +332,33 @@ std::vector<Eigen::Vector3d> drawn_points(const PlanResult& plan, const PlanProb
 /// Title: what, and how it went.
 void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask& task) {
   const int n = static_cast<int>(plan.steps.size());
-  std::ostringstream title;
+  std::ostringstream title, details;
   title << "rodshape plan: " << task.source << " \u2014 " << to_string(plan.status) << ", " << n
         << " steps (" << task.options.steps << " requested";
   if (plan.tracking.refinements > 0) title << ", " << plan.tracking.refinements << " inserted";
+  const auto detours = std::count_if(plan.steps.begin(), plan.steps.end(),
+                                     [](const PlanStep& step) { return step.detour; });
+  if (detours > 0) title << ", " << detours << " on a detour";
   title << ")";
   if (n > 0) {
     const ShapeResult& last = plan.steps.back().solution;
-    title << "; final max distance " << millimetres(last.cost.max_distance) << ", energy "
-          << std::setprecision(3) << last.cost.energy << " J";
+    details << "final max distance " << millimetres(last.cost.max_distance) << ", energy "
+            << std::setprecision(3) << last.cost.energy << " J";
   }
   if (plan.tracking.performed)
-    title << "; tracked peak energy " << std::setprecision(3) << plan.tracking.peak_energy << " J";
+    details << "; tracked peak energy " << std::setprecision(3) << plan.tracking.peak_energy
+            << " J";
   if (plan.scene && std::isfinite(plan.scene->min_gap))
-    title << "; least gap " << millimetres(plan.scene->min_gap) << " (clearance "
-          << millimetres(plan.scene->clearance) << ")";
-  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"24\" font-family=\"sans-serif\" "
+    details << "; least gap to the scene " << millimetres(plan.scene->min_gap) << " (obstacle "
+            << plan.scene->obstacle_label << ", clearance " << millimetres(plan.scene->clearance)
+            << ")";
+  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"22\" font-family=\"sans-serif\" "
       << "font-size=\"15\" font-weight=\"bold\" fill=\"#111\">" << escaped(title.str())
       << "</text>\n";
+  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"39\" font-family=\"sans-serif\" "
+      << "font-size=\"12\" fill=\"#333\">" << escaped(details.str()) << "</text>\n";
   if (plan.status != PlanStatus::Complete) {
-    out << "<text x=\"" << px(kLeft - 40) << "\" y=\"44\" font-family=\"sans-serif\" "
+    out << "<text x=\"" << px(kLeft - 40) << "\" y=\"54\" font-family=\"sans-serif\" "
         << "font-size=\"12\" fill=\"" << kTargetColour << "\">" << escaped(plan.message)
         << "</text>\n";
   }
@@ -387,7 +394,7 @@ void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& requ
   }
 }
 
-void draw_legend(Canvas& canvas, int n) {
+void draw_legend(Canvas& canvas, int n, bool scene) {
   std::ostringstream& out = canvas.out();
   const double top = kTop + kPanel + 52;
   const double left = kLeft;
@@ -425,7 +432,10 @@ void draw_legend(Canvas& canvas, int n) {
       << "\">clamp p(0)</text>\n";
   const double row3 = row2 + 24;
   out << "<text x=\"" << px(left) << "\" y=\"" << px(row3 + 4) << "\" fill=\"#555\">"
-      << "Orthographic projections, one scale in all panels; grid and labels in metres.</text>\n";
+      << "Orthographic projections, one scale in all panels; grid and labels in metres"
+      << (scene ? "; the scene's obstacles in grey (a half-space where its plane is seen edge-on)"
+                : "")
+      << ".</text>\n";
   out << "</g>\n";
 }
 
@@ -441,7 +451,7 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   draw_title(out, plan, task);
   draw_panels(canvas, plan, task.problem);
-  draw_legend(canvas, static_cast<int>(plan.steps.size()));
+  draw_legend(canvas, static_cast<int>(plan.steps.size()), !task.problem.scene.empty());
   out << "</svg>\n";
   return out.str();
 }
