@@ -255,6 +255,35 @@ TEST_F(CliPlan, BadPlanFieldsExitTwoWithFileLineAndField) {
        ":10: target.points[1] has magnitude 1e+300 m; at most 10000 m"},
       {"plant_gravity", kTask + "plant: {gravity: [0, 0, -1e300]}\n",
        ":17: plant.gravity has magnitude 1e+300 m/s^2; at most 10000 m/s^2"},
+      // Issue 20: the scene's fields, checked like the rest.
+      {"scene_shape", kTask + "scene:\n  obstacles:\n    - {shape: cone, center: [1, 0, 0]}\n",
+       ":19: scene.obstacles[0].shape = cone"},
+      {"scene_normal",
+       kTask + "scene:\n  obstacles:\n    - {shape: half_space, normal: [0, 0, 0], "
+               "offset: -0.1}\n",
+       ":19: scene.obstacles[0].normal must not be zero"},
+      {"scene_radius",
+       kTask + "scene:\n  obstacles:\n    - {shape: sphere, center: [1, 0, 0], "
+               "radius: .nan}\n",
+       ":19: scene.obstacles[0].radius"},
+      {"scene_key",
+       kTask + "scene:\n  obstacles:\n    - {shape: sphere, centre: [1, 0, 0], "
+               "radius: 0.1}\n",
+       ":19: scene.obstacles[0].centre: unknown key; did you mean 'center'?"},
+      {"scene_clamp",
+       kTask + "scene:\n  obstacles:\n    - {shape: sphere, center: [0, 0, 0], "
+               "radius: 0.01}\n",
+       ": base.position lies inside obstacle 0 (0.01 m deep)"},
+      {"scene_section",
+       [] {
+         std::string text =
+             task_with("  section: {shape: rectangle, width: 0.02, height: 0.02}\n", "");
+         const std::string stiffness = "stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}";
+         text.replace(text.find(stiffness), stiffness.size(),
+                      "stiffness: {EA: 1280, GA: 426.7, EIx: 0.04, EIy: 0.04, GJ: 0.028}");
+         return text + "scene:\n  obstacles: []\n";
+       }(),
+       ":16: scene needs rod.section, which is missing"},
   };
   for (const Bad& bad : cases) {
     SCOPED_TRACE(bad.name);
