@@ -4,6 +4,7 @@
 // sample.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "rodshape/solvers/follow_equilibrium.hpp"
@@ -24,14 +25,27 @@ inline SceneReplay replay_scene(const PlanProblem& problem, const PlanResult& pl
   const std::vector<double> required = problem.scene.required_gaps(problem.rod.clamp.position);
   SceneReplay result;
   FollowOptions options;
-  options.substeps = static_cast<int>(samples.size()) - 1;
   options.observer = [&](double, const RodConfiguration& c) {
     const SceneGap gap = problem.scene.least_gap(c.p, required);
     if (gap.margin < result.least.margin) result.least = gap;
     return true;
   };
-  result.followed = follow_equilibrium(problem.rod, sampled_tip_path(samples), plan.initial_wrench,
-                                       options, &plan.steps.back().solution.configuration);
+  // In pieces of at most FollowOptions::kMaxSubsteps samples, each from where the last ended;
+  // the last piece arrives on the plan's final shape.
+  BaseWrench w = plan.initial_wrench;
+  for (std::size_t first = 0; first + 1 < samples.size();) {
+    const std::size_t last =
+        std::min(samples.size() - 1, first + static_cast<std::size_t>(FollowOptions::kMaxSubsteps));
+    const std::vector<TipCondition> piece(samples.begin() + first, samples.begin() + last + 1);
+    options.substeps = static_cast<int>(piece.size()) - 1;
+    const bool final = last == samples.size() - 1;
+    result.followed =
+        follow_equilibrium(problem.rod, sampled_tip_path(piece), w, options,
+                           final ? &plan.steps.back().solution.configuration : nullptr);
+    if (!result.followed.followed()) break;
+    w = result.followed.base_wrench;
+    first = last;
+  }
   return result;
 }
 
