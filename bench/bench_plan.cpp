@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/io/task_reader.hpp"
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -27,12 +28,18 @@ PointSet target_points() {
   return points;
 }
 
-void plan_experiment(benchmark::State& state, bool track) {
+/// The paper's experiment: the band at N = 100 and the ten points, W1 = 1e-3, W2 = 1.
+PlanProblem paper_request() {
   PlanProblem request;
   request.rod = rubber_band(100);
   request.target.points = target_points();
   request.target.energy_weight = 1e-3;
   request.target.distance_weight = 1.0;
+  return request;
+}
+
+void plan_experiment(benchmark::State& state, bool track) {
+  const PlanProblem request = paper_request();
   PlanOptions options;
   options.steps = 7;
   options.track_between_waypoints = track;
@@ -90,11 +97,7 @@ Scene scene_near(const PlanResult& free_plan) {
 }
 
 void BM_PlanWithScene(benchmark::State& state) {
-  PlanProblem request;
-  request.rod = rubber_band(100);
-  request.target.points = target_points();
-  request.target.energy_weight = 1e-3;
-  request.target.distance_weight = 1.0;
+  PlanProblem request = paper_request();
   PlanOptions options;
   options.steps = 7;
   request.scene = scene_near(rodshape::plan(request, options));
@@ -112,25 +115,12 @@ void BM_PlanWithScene(benchmark::State& state) {
                                              : double(rows) / plan.scene->obstacles_per_step.size();
 }
 
-/// examples/plan_around_post.yaml's problem built in code: the C of plan_c_arc past a post that
-/// needs a detour.
+/// examples/plan_around_post.yaml: the C of plan_c_arc past a post that needs a detour.
 void BM_PlanAroundPost(benchmark::State& state) {
-  PlanProblem request;
-  request.rod = rubber_band(100);
-  request.target.points = {{0.003, 0.0, 0.028}, {0.012, 0.0, 0.055}, {0.027, 0.0, 0.080},
-                           {0.047, 0.0, 0.101}, {0.070, 0.0, 0.118}, {0.097, 0.0, 0.128},
-                           {0.126, 0.0, 0.133}, {0.155, 0.0, 0.132}, {0.183, 0.0, 0.124},
-                           {0.208, 0.0, 0.110}};
-  request.target.energy_weight = 1e-3;
-  request.target.distance_weight = 1.0;
-  request.scene.rod_radius = 0.5 * std::hypot(0.02, 0.02);
-  request.scene.obstacles = {
-      {"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.03}},
-      {"post", CapsuleObstacle{{0.13, -0.03, 0.21}, {0.13, 0.03, 0.21}, 0.012}}};
-  PlanOptions options;
-  options.steps = 7;
-  options.end_effector.max_linear_speed = 0.02;
-  options.end_effector.max_angular_speed = 0.2;
+  const PlanTask task =
+      read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_around_post.yaml");
+  const PlanProblem& request = task.problem;
+  const PlanOptions& options = task.options;
   PlanResult plan;
   for (auto _ : state) {
     plan = rodshape::plan(request, options);

@@ -20,6 +20,14 @@ inline std::string format_value(double value) {
   return out.str();
 }
 
+/// "[x, y, z]" with 4 significant digits, for messages.
+inline std::string format_point(const Eigen::Vector3d& p) {
+  std::ostringstream out;
+  out.precision(4);
+  out << "[" << p.x() << ", " << p.y() << ", " << p.z() << "]";
+  return out.str();
+}
+
 inline void require_finite(const std::string& field, double value) {
   if (!std::isfinite(value))
     throw InputError(field, " = " + format_value(value) + " must be finite");

@@ -194,10 +194,6 @@ SegmentDistance Obstacle::distance(const Eigen::Vector3d& a, const Eigen::Vector
                     shape);
 }
 
-double Obstacle::distance_lower_bound(const Eigen::Vector3d& center, double radius) const {
-  return distance(center).distance - radius;
-}
-
 void Obstacle::validate(const std::string& field) const {
   std::visit(detail::Overloaded{
                  [&](const SphereObstacle& s) {

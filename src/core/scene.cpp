@@ -38,18 +38,26 @@ std::vector<double> Scene::required_gaps(const Eigen::Vector3d& clamp) const {
   return required;
 }
 
+SceneGap Scene::obstacle_gap(std::size_t j,
+                             const std::vector<Eigen::Vector3d>& nodes,
+                             double required) const {
+  SceneGap least;
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+    const SegmentDistance d = obstacles[j].distance(nodes[i], nodes[i + 1]);
+    const double gap = d.distance - rod_radius;
+    if (gap < least.gap)
+      least = {gap, gap - required, static_cast<int>(j), static_cast<int>(i), d.t};
+  }
+  return least;
+}
+
 SceneGap Scene::least_gap(const std::vector<Eigen::Vector3d>& nodes,
                           const std::vector<double>& required) const {
   SceneGap least;
   for (std::size_t j = 0; j < obstacles.size(); ++j) {
-    for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
-      const SegmentDistance d = obstacles[j].distance(nodes[i], nodes[i + 1]);
-      const double gap = d.distance - rod_radius;
-      const double margin = gap - required[j];
-      if (margin < least.margin || (margin == least.margin && gap < least.gap)) {
-        least = {gap, margin, static_cast<int>(j), static_cast<int>(i), d.t};
-      }
-    }
+    const SceneGap gap = obstacle_gap(j, nodes, required[j]);
+    if (gap.margin < least.margin || (gap.margin == least.margin && gap.gap < least.gap))
+      least = gap;
   }
   return least;
 }

@@ -38,15 +38,15 @@ InputError PlanTask::infeasible_target(const PlanResult& plan) const {
   const int i = plan.feasibility.offending_point;
   if (i < 0) return InputError(source + ": infeasible target: " + fields_in_task_names(reason));
   // Located at the offending point: "<source>:<line>: target.points[i] <why>".
-  const std::string field = "ShapeTarget.points", index = "[" + std::to_string(i) + "]";
-  // Appended, not `": " + reason`: GCC 12 warns (-Wrestrict) on that inlined concatenation.
-  std::string why;
-  if (reason.starts_with(field + index)) {
-    why = reason.substr(field.size() + index.size());
-  } else {
-    why = ": ";
-    why += reason;
-  }
+  const std::string field = "ShapeTarget.points";
+  // Appended, not `"[" + std::to_string(i)`: GCC 12 warns (-Wrestrict, a false positive) on
+  // that inlined concatenation of a temporary.
+  std::string index = "[";
+  index += std::to_string(i);
+  index += "]";
+  const std::string why = reason.starts_with(field + index)
+                              ? reason.substr(field.size() + index.size())
+                              : ": " + reason;
   return InputError(locate(InputError(field, index + why + ": the target is infeasible")));
 }
 

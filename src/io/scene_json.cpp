@@ -43,15 +43,13 @@ Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
   json["min_gap"] = json_number(result->min_gap);
   json["margin"] = json_number(result->margin);
   json["clear"] = result->clear();
-  json["min_gap_at"] =
-      result->obstacle < 0
-          ? Json(nullptr)
-          : Json{{"step", result->step},
-                 {"s", json_number(result->s)},
-                 {"obstacle",
-                  scene.obstacles[static_cast<std::size_t>(result->obstacle)].name.empty()
-                      ? Json(result->obstacle)
-                      : Json(scene.obstacles[static_cast<std::size_t>(result->obstacle)].name)}};
+  json["min_gap_at"] = nullptr;
+  if (result->obstacle >= 0) {
+    const std::string& name = scene.obstacles[static_cast<std::size_t>(result->obstacle)].name;
+    json["min_gap_at"] = {{"step", result->step},
+                          {"s", json_number(result->s)},
+                          {"obstacle", name.empty() ? Json(result->obstacle) : Json(name)}};
+  }
   json["obstacles_per_step"] = result->obstacles_per_step;
   json["detours"] = result->detours;
   return json;

@@ -109,41 +109,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   dg_dw_ = Eigen::MatrixXd::Zero(constraint_count_, 6);
 }
 
-ShapeProblem::ShapeProblem(const ShapeProblem& other)
-    : rod_(other.rod_),
-      target_(other.target_),
-      workspace_(other.workspace_),
-      grasp_(other.grasp_),
-      limits_(other.limits_),
-      wrench_bounds_(other.wrench_bounds_),
-      clearance_(other.clearance_),
-      rows_(other.rows_),
-      constraint_count_(other.constraint_count_),
-      g_lower_(other.g_lower_),
-      g_upper_(other.g_upper_),
-      evaluated_(other.evaluated_),
-      w_(other.w_),
-      configuration_(other.configuration_),
-      projections_(other.projections_),
-      balls_(other.balls_),
-      breakdown_(other.breakdown_),
-      cost_gradient_(other.cost_gradient_),
-      g_(other.g_),
-      dg_dw_(other.dg_dw_) {
-  for (const auto& block : other.blocks_) blocks_.push_back(block->clone());
-}
-
 ShapeProblem::~ShapeProblem() = default;
-
-std::vector<ShapeProblem::BlockRows> ShapeProblem::blocks() const {
-  std::vector<BlockRows> rows;
-  int first = 0;
-  for (const auto& block : blocks_) {
-    if (block->rows() > 0) rows.push_back({block->name(), first, block->rows()});
-    first += block->rows();
-  }
-  return rows;
-}
 
 void ShapeProblem::evaluate(const Vector6d& w) {
   if (evaluated_ && w == w_) return;

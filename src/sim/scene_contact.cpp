@@ -12,9 +12,7 @@ void SceneContact::see(const PlantFrame& frame) {
   const std::vector<Eigen::Vector3d>& p = frame.configuration.p;
   for (std::size_t j = 0; j < scene_.obstacles.size(); ++j) {
     const Obstacle& obstacle = scene_.obstacles[j];
-    double gap = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i + 1 < p.size(); ++i)
-      gap = std::min(gap, obstacle.distance(p[i], p[i + 1]).distance - scene_.rod_radius);
+    const double gap = scene_.obstacle_gap(j, p, required_[j]).gap;
     min_gap_ = std::min(min_gap_, gap);
     // The clamp's mount may be touched where the clamp itself touches it (its own gap).
     const bool touching = gap < std::min(0.0, required_[j]);

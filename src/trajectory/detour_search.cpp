@@ -66,22 +66,14 @@ class Tree {
       previous = c.p;
       return !blocked;
     };
-    const Pose ee_T_tip = inverse(problem_.grasp.tip_to_end_effector);
-    const Pose from = start.end_effector;
-    const Grasp& grasp = problem_.grasp;
-    const EquilibriumPath path{[&](double sigma) {
-                                 return plan_stages::held_tip(
-                                     compose(interpolate(from, to, sigma), ee_T_tip), grasp);
-                               },
-                               false};
-    const FollowResult followed =
-        follow_equilibrium(problem_.rod, path, start.wrench, follow, expected, kBranchTolerance);
-    if (blocked || !followed.followed()) return std::nullopt;
+    const FollowResult followed = follow_equilibrium(
+        problem_.rod, plan_stages::commanded_segment(problem_, start.end_effector, to),
+        start.wrench, follow, expected, kBranchTolerance);
+    if (blocked || !followed.followed()) return std::nullopt;  // the observer saw every substep
     for (const FollowedState& state : followed.states) {
       end.peak_energy = std::max(end.peak_energy, state.energy);
       end.peak_curvature = std::max(end.peak_curvature, state.max_curvature);
     }
-    if (end.peak_energy > energy_cap_) return std::nullopt;  // a coiled shape on the way
     end.end_effector = to;
     end.stability = followed.arrival_stability;
     end.wrench = followed.base_wrench;

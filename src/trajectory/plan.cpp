@@ -284,8 +284,7 @@ bool plan_steps(const PlanProblem& problem,
         if (auto around = take_detour(problem, options, loop, set, step, unconstrained, result))
           segment = std::move(*around);
       }
-      if ((segment.jump || segment.collision) &&
-          result.tracking.refinements < options.max_refinements) {
+      if ((segment.jump || segment.collision) && refinable) {
         const ObjectiveSet half = halfway_set(loop.path, loop.history.f_last, set);
         loop.pending.insert(loop.pending.begin() + static_cast<std::ptrdiff_t>(next), half);
         ++result.tracking.refinements;

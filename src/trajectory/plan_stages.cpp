@@ -13,17 +13,11 @@
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 #include "rodshape/solvers/stable_equilibrium.hpp"
+#include "validation.hpp"
 
 namespace rodshape::plan_stages {
 
 namespace {
-
-std::string format_point(const Eigen::Vector3d& p) {
-  std::ostringstream out;
-  out.precision(4);
-  out << "[" << p.x() << ", " << p.y() << ", " << p.z() << "]";
-  return out.str();
-}
 
 bool any(const std::array<bool, 6>& flags) {
   return std::any_of(flags.begin(), flags.end(), [](bool b) { return b; });
@@ -33,7 +27,7 @@ bool any(const std::array<bool, 6>& flags) {
 /// when the reach shell is what excludes it).
 void require_in_workspace(const Workspace& workspace, const Pose& tip, InitialState::Kind initial) {
   if (workspace.contains(tip, 1e-9)) return;
-  std::string reason = " excludes the initial tip at " + format_point(tip.position);
+  std::string reason = " excludes the initial tip at " + detail::format_point(tip.position);
   if (const auto& reach = workspace.reach) {
     const double r = reach->distance(tip);
     if (r > reach->outer_radius || r < reach->inner_radius)
@@ -93,6 +87,14 @@ InitialEquilibrium given_equilibrium(const PlanProblem& problem, const BaseWrenc
 TipCondition held_tip(const Pose& tip, const Grasp& grasp) {
   if (!any(grasp.released)) return ClampedTip{tip};
   return GraspedTip{tip, grasp.released};
+}
+
+EquilibriumPath commanded_segment(const PlanProblem& problem, const Pose& from, const Pose& to) {
+  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
+  return {[from, to, ee_T_tip, grasp = problem.grasp](double sigma) {
+            return held_tip(compose(interpolate(from, to, sigma), ee_T_tip), grasp);
+          },
+          false};
 }
 
 InitialEquilibrium initial_equilibrium(const PlanProblem& problem) {
@@ -205,20 +207,13 @@ SegmentTracking track_segment(const PlanProblem& problem,
       return true;
     };
   }
-  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
-  const Pose to = step.end_effector;
-  const Grasp& grasp = problem.grasp;
-  const EquilibriumPath path{[&](double sigma) {
-                               return held_tip(compose(interpolate(from, to, sigma), ee_T_tip),
-                                               grasp);
-                             },
-                             false};
-  const FollowResult followed = follow_equilibrium(problem.rod, path, w, follow,
-                                                   &step.solution.configuration, kJumpDeviation);
+  const FollowResult followed =
+      follow_equilibrium(problem.rod, commanded_segment(problem, from, step.end_effector), w,
+                         follow, &step.solution.configuration, kJumpDeviation);
   SegmentTracking segment;
   segment.jump = !followed.followed();
   segment.gap = least;
-  segment.collision = least && !(least->margin >= -SceneResult::kTolerance);
+  segment.collision = least && !least->clear();
   for (const FollowedState& state : followed.states) {
     segment.peak_energy = std::max(segment.peak_energy, state.energy);
     segment.peak_curvature = std::max(segment.peak_curvature, state.max_curvature);

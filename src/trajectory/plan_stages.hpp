@@ -15,6 +15,7 @@
 
 #include "rodshape/core/scene.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -23,6 +24,11 @@ namespace rodshape::plan_stages {
 /// The condition the gripper imposes while it moves: the tip held at a pose, with the components
 /// the grasp cannot transmit released.
 TipCondition held_tip(const Pose& tip, const Grasp& grasp);
+
+/// The rod held while the end effector moves straight from `from` to `to` (σ ∈ [0, 1]: position
+/// interpolated, rotation slerped), the tip at the end effector's pose · (tip_T_ee)⁻¹: what the
+/// tracking and the detour search follow.
+EquilibriumPath commanded_segment(const PlanProblem& problem, const Pose& from, const Pose& to);
 
 /// 1. The equilibrium the rod starts in, with all-node derivatives. Throws InputError when no
 /// equilibrium holds the rod at the initial tip pose, when a given wrench loads a released grasp

@@ -4,16 +4,11 @@
 #include <algorithm>
 #include <sstream>
 
+#include "validation.hpp"
+
 namespace rodshape::scene_stages {
 
 namespace {
-
-std::string format_point(const Eigen::Vector3d& p) {
-  std::ostringstream out;
-  out.precision(4);
-  out << "[" << p.x() << ", " << p.y() << ", " << p.z() << "]";
-  return out.str();
-}
 
 bool is_mount(const Scene& scene, const std::vector<double>& required, std::size_t j) {
   return required[j] < scene.clearance;
@@ -30,7 +25,7 @@ std::optional<BlockedPoint> target_clear(const Scene& scene,
       if (gap < required[j]) {
         std::ostringstream out;
         out.precision(4);
-        out << "objective point " << k << " at " << format_point(points[k])
+        out << "objective point " << k << " at " << detail::format_point(points[k])
             << " is within the rod's radius plus the clearance of obstacle "
             << scene.obstacles[j].label(static_cast<int>(j)) << " (gap " << gap * 1e3
             << " mm, required " << required[j] * 1e3 << " mm)";
@@ -100,24 +95,9 @@ std::vector<int> violated_obstacles(const Scene& scene,
     if (std::find(selected.indices.begin(), selected.indices.end(), index) !=
         selected.indices.end())
       continue;
-    for (int i = 0; i + 1 < c.nodes(); ++i) {
-      const double gap =
-          scene.obstacles[j].distance(c.p[i], c.p[i + 1]).distance - scene.rod_radius;
-      if (gap < required[j]) {
-        violated.push_back(index);
-        break;
-      }
-    }
+    if (scene.obstacle_gap(j, c.p, required[j]).margin < 0.0) violated.push_back(index);
   }
   return violated;
-}
-
-void GapWatch::see(const RodConfiguration& c, double sigma) {
-  const SceneGap gap = scene->least_gap(c.p, *required);
-  if (gap.margin < least.margin) {
-    least = gap;
-    least_sigma = sigma;
-  }
 }
 
 }  // namespace rodshape::scene_stages

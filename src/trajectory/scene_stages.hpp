@@ -6,7 +6,6 @@
 //                      its start and its objective points (a fixed set of rows), with the gaps
 //                      they require widened by the planning margin
 //   violated_obstacles the obstacles an optimum violates that its step did not include
-//   GapWatch           the least gap of the tracked rod, substep by substep
 #pragma once
 
 #include <optional>
@@ -52,14 +51,5 @@ std::vector<int> violated_obstacles(const Scene& scene,
                                     const std::vector<double>& required,
                                     const RodConfiguration& c,
                                     const Clearance& selected);
-
-/// The least gap of every configuration shown to it (the tracked rod at each substep).
-struct GapWatch {
-  const Scene* scene = nullptr;
-  const std::vector<double>* required = nullptr;
-  SceneGap least;          // over every configuration seen
-  double least_sigma = 0;  // where along the segment
-  void see(const RodConfiguration& c, double sigma);
-};
 
 }  // namespace rodshape::scene_stages

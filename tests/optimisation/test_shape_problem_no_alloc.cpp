@@ -47,7 +47,16 @@ ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
   StrainLimits limits;
   limits.max_curvature = 20.0;
   limits.max_axial_strain = 0.05;
-  return ShapeProblem(rod, target, ws, grasp, limits);
+  // One obstacle of each kind: the clearance rows (a box's golden-section search included).
+  Clearance clearance;
+  clearance.scene.rod_radius = 0.002;
+  clearance.scene.obstacles = {
+      {"ball", SphereObstacle{{0.1, 0.0, 0.1}, 0.02}},
+      {"crate", BoxObstacle{{-0.1, 0.05, 0.1}, {0.02, 0.03, 0.04}, Eigen::Matrix3d::Identity()}},
+      {"rail", CapsuleObstacle{{0.0, -0.1, 0.1}, {0.0, -0.1, 0.2}, 0.01}},
+      {"floor", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.05}}};
+  clearance.required.assign(4, 0.005);
+  return ShapeProblem(rod, target, ws, grasp, limits, WrenchBounds{}, clearance);
 }
 
 using testing::count_allocations;
@@ -82,7 +91,8 @@ TEST(ShapeProblemNoAlloc, EvaluateAllocatesNothingAfterConstruction) {
         EXPECT_EQ(mallocs, 0) << "malloc calls, " << label;
       }
       EXPECT_EQ(problem.configuration().n.front(), w2.head<3>());  // the calls did run
-      EXPECT_GE(problem.constraint_count(), 6 + 3 + 33);           // workspace, grasp, curvature
+      EXPECT_EQ(problem.row_blocks().clearance, 4 * 32);
+      EXPECT_GE(problem.constraint_count(), 6 + 3 + 33);  // workspace, grasp, curvature
       EXPECT_GT(problem.cost(), 0.0);
     }
   }

@@ -53,30 +53,33 @@ void expect_identical(const std::vector<ArmSample>& a, const std::vector<ArmSamp
   }
 }
 
+/// Each arm of `arms` evaluated by its own thread, all at once.
+std::vector<std::vector<ArmSample>> evaluate_in_threads(const std::vector<const ArmModel*>& arms,
+                                                        int count) {
+  std::vector<std::vector<ArmSample>> results(arms.size());
+  std::vector<std::thread> threads;
+  for (std::size_t k = 0; k < arms.size(); ++k)
+    threads.emplace_back([&, k] { results[k] = evaluate(*arms[k], count); });
+  for (std::thread& thread : threads) thread.join();
+  return results;
+}
+
+constexpr int kCount = 60;
+
 TEST(ArmModelThreads, OneModelSharedByFourThreadsGivesTheSerialResults) {
   const ArmModel arm = rodshape::samples::panda();
-  constexpr int kCount = 60;
   const std::vector<ArmSample> serial = evaluate(arm, kCount);
-  std::vector<std::vector<ArmSample>> parallel(4);
-  std::vector<std::thread> threads;
-  for (auto& result : parallel)
-    threads.emplace_back([&arm, &result] { result = evaluate(arm, kCount); });
-  for (std::thread& thread : threads) thread.join();
-  for (const auto& result : parallel) expect_identical(result, serial);
+  for (const auto& result : evaluate_in_threads({&arm, &arm, &arm, &arm}, kCount))
+    expect_identical(result, serial);
 }
 
 TEST(ArmModelThreads, CopiesOfOneModelInThreadsGiveTheSerialResults) {
   const ArmModel arm = rodshape::samples::panda();
-  constexpr int kCount = 60;
   const std::vector<ArmSample> serial = evaluate(arm, kCount);
-  std::vector<std::vector<ArmSample>> parallel(4);
-  std::vector<std::thread> threads;
-  for (auto& result : parallel) {
-    const ArmModel copy = arm;  // shares the description with `arm`
-    threads.emplace_back([copy, &result] { result = evaluate(copy, kCount); });
-  }
-  for (std::thread& thread : threads) thread.join();
-  for (const auto& result : parallel) expect_identical(result, serial);
+  const std::vector<ArmModel> copies(4, arm);  // they share the model's description
+  for (const auto& result :
+       evaluate_in_threads({&copies[0], &copies[1], &copies[2], &copies[3]}, kCount))
+    expect_identical(result, serial);
 }
 
 }  // namespace

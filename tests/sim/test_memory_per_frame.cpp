@@ -14,22 +14,13 @@
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan.hpp"
+#include "support/band_problem.hpp"
 #include "support/heap_peak.hpp"
 
 namespace rodshape {
 namespace {
 
-/// The band bent by a wrench, sampled at 10 points, in 3 steps (test_plan_validation.cpp's).
-PlanProblem band_problem() {
-  PlanProblem problem;
-  problem.rod = samples::rubber_band(ConstitutiveModel::Cosserat, 50);
-  const RodConfiguration bent = integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200),
-                                          {{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}});
-  for (int i = 0; i < 10; ++i) problem.target.points.push_back(bent.p[20 * i + 10]);
-  problem.target.energy_weight = 1e-3;
-  problem.target.distance_weight = 1.0;
-  return problem;
-}
+using testing::band_problem;
 
 struct Measured {
   long long peak_bytes = 0;  // above what was live before

@@ -14,24 +14,14 @@
 #include "rodshape/sim/commanded_path.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan.hpp"
+#include "support/band_problem.hpp"
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
 namespace {
 
+using testing::band_problem;
 using testing::CompareMatrices;
-
-/// The band bent by a wrench, sampled at 10 points; planned in 3 steps (a small, quick plan).
-PlanProblem band_problem() {
-  PlanProblem problem;
-  problem.rod = samples::rubber_band(ConstitutiveModel::Cosserat, 50);
-  const RodConfiguration bent = integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200),
-                                          {{-0.3, 0.0, 0.0}, {0.0, 0.05, 0.0}});
-  for (int i = 0; i < 10; ++i) problem.target.points.push_back(bent.p[20 * i + 10]);
-  problem.target.energy_weight = 1e-3;
-  problem.target.distance_weight = 1.0;
-  return problem;
-}
 
 const PlanResult& band_plan() {
   static const PlanResult plan = [] {

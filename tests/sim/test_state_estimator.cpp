@@ -67,15 +67,21 @@ TEST(StateEstimator, RecoversTheStiffnessScaleWithTheWristSensor) {
             1e-6 * w_real.to_vector().norm());
 }
 
+/// What a camera that sees no marker (dropout 1) and a noiseless wrist sensor give of the rod at
+/// kTrue; `model` is left with that dropout and wrist.
+SensorFrame blind_frame(const ClampedRod& rod, MarkerSensorModel& model) {
+  model.dropout = 1.0;
+  model.wrist = WristNoise{0.0, 0.0};
+  MarkerSensor sensor(model, 1);
+  return look(rod, kTrue, sensor);
+}
+
 TEST(StateEstimator, TheWristWrenchAloneFixesTheShape) {
   // A camera-free shape sensor: no marker is seen (dropout 1), but with the gripper's pose known
   // the wrench it measures is the tip's, and the tip wrench and pose fix the whole rod.
   const ClampedRod rod = samples::rubber_band();
   MarkerSensorModel model = noiseless();
-  model.dropout = 1.0;
-  model.wrist = WristNoise{0.0, 0.0};
-  MarkerSensor sensor(model, 1);
-  const SensorFrame seen = look(rod, kTrue, sensor);
+  const SensorFrame seen = blind_frame(rod, model);
   ASSERT_EQ(seen.visible(), 0);
   const Pose tip = integrate(rod, kTrue).tip();
   model.wrist = WristNoise{1e-3, 1e-4};  // the fit's weights
@@ -90,10 +96,7 @@ TEST(StateEstimator, NothingMeasuredIsNoEstimate) {
   // that "converged, residual 0"; the closed loop then took it as consistent.
   const ClampedRod rod = samples::rubber_band();
   MarkerSensorModel model = noiseless();
-  model.dropout = 1.0;
-  model.wrist = WristNoise{0.0, 0.0};
-  MarkerSensor sensor(model, 1);
-  SensorFrame seen = look(rod, kTrue, sensor);
+  SensorFrame seen = blind_frame(rod, model);
   ASSERT_EQ(seen.visible(), 0);
   seen.wrist.reset();
   model.wrist.reset();  // no wrist sensor

@@ -134,10 +134,10 @@ Outcome run_case(int k) {
     EXPECT_GE(plan.scene->min_gap, scene.clearance - SceneResult::kTolerance) << "case " << k;
     const testing::SceneReplay check = testing::replay_scene(task.problem, plan);
     EXPECT_TRUE(check.followed.followed()) << "case " << k << ": " << check.followed.brief();
-    // Between the planner's substeps the replay's finer samples see the rod a little nearer: the
-    // plan keeps the clearance at its substeps, the replay must not find an overlap.
-    EXPECT_GE(check.least.gap, 0.0) << "case " << k << ": complete through an obstacle";
-    EXPECT_GE(check.least.margin, -0.2 * scene.clearance) << "case " << k;
+    // Done when (issue 20): the replay, at the path's samples rather than the planner's tracking
+    // substeps, keeps the clearance itself (within the tracked rod's accuracy).
+    EXPECT_GE(check.least.margin, -SceneResult::kTolerance)
+        << "case " << k << ": gap " << check.least.gap << " m to obstacle " << check.least.obstacle;
   }
   return outcome;
 }

@@ -70,9 +70,6 @@ struct Obstacle {
   std::string label(int index) const;
   PointDistance distance(const Eigen::Vector3d& p) const;
   SegmentDistance distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
-  /// A lower bound of d over the ball of `radius` around `center` (d(center) - radius): what
-  /// prunes obstacles far from a rod.
-  double distance_lower_bound(const Eigen::Vector3d& center, double radius) const;
   /// Throws InputError naming `field` (e.g. "Scene.obstacles[2]") and the member: sizes and radii
   /// finite and > 0 (at most kMaxSize), positions finite, a rotation, a non-zero normal.
   void validate(const std::string& field) const;

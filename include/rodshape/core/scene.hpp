@@ -30,7 +30,9 @@ struct SceneGap {
   int obstacle = -1;  // index into Scene::obstacles, -1 for an empty scene
   int segment = -1;   // the segment [p_i, p_{i+1}], i = segment
   double t = 0.0;     // where along it
-  bool clear() const { return margin >= 0.0; }
+  /// Clear within the solved rod's accuracy (the shooting residual's, far below the µm).
+  static constexpr double kTolerance = 1e-9;  // m
+  bool clear() const { return margin >= -kTolerance; }
 };
 
 struct Scene {
@@ -51,6 +53,10 @@ struct Scene {
   /// `required` (one per obstacle, from required_gaps()).
   SceneGap least_gap(const std::vector<Eigen::Vector3d>& nodes,
                      const std::vector<double>& required) const;
+  /// The same for obstacle `j` alone, against the gap `required` of it.
+  SceneGap obstacle_gap(std::size_t j,
+                        const std::vector<Eigen::Vector3d>& nodes,
+                        double required) const;
   /// Throws InputError naming the field: "Scene.clearance" (≥ 0, ≤ kMaxClearance),
   /// "Scene.rod_radius" (≥ 0), "Scene.obstacles" (at most kMaxObstacles), each obstacle's fields
   /// ("Scene.obstacles[2].radius").

@@ -27,8 +27,6 @@ class ConstraintBlock {
   virtual void evaluate(const RodConfiguration& c,
                         Eigen::Ref<Eigen::VectorXd> g,
                         Eigen::Ref<Eigen::MatrixXd> dg_dw) = 0;
-  /// A copy with its own scratch (a ShapeProblem's copies evaluate independently).
-  virtual std::unique_ptr<ConstraintBlock> clone() const = 0;
 };
 
 }  // namespace rodshape

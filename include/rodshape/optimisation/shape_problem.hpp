@@ -55,7 +55,8 @@ class ShapeProblem {
                StrainLimits limits = {},
                WrenchBounds wrench_bounds = {},
                Clearance clearance = {});
-  ShapeProblem(const ShapeProblem& other);
+  // Move-only: each block keeps its own scratch.
+  ShapeProblem(const ShapeProblem&) = delete;
   ShapeProblem& operator=(const ShapeProblem&) = delete;
   ShapeProblem(ShapeProblem&&) noexcept = default;
   ~ShapeProblem();
@@ -66,12 +67,6 @@ class ShapeProblem {
   struct RowBlocks {
     int workspace = 0, grasp = 0, curvature = 0, axial = 0, clearance = 0;
   };
-  /// The blocks in their order, each with the first row it owns.
-  struct BlockRows {
-    std::string name;
-    int first = 0, count = 0;
-  };
-  std::vector<BlockRows> blocks() const;
 
   int constraint_count() const { return constraint_count_; }
   const RowBlocks& row_blocks() const { return rows_; }

@@ -11,6 +11,7 @@
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/core/scene.hpp"
 #include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/robot/arm_reach.hpp"
@@ -82,9 +83,9 @@ struct SceneResult {
   std::string note;  // where the rod first came too near, when it did
   /// Each detour search: what it found ("detour of 2 waypoints (…)") or why not.
   std::vector<std::string> detours;
+  /// Clear within the tracked rod's accuracy (SceneGap's).
+  static constexpr double kTolerance = SceneGap::kTolerance;
   bool clear() const { return margin >= -kTolerance; }
-  /// Clear within the tracked rod's accuracy (the shooting residual's, far below the µm).
-  static constexpr double kTolerance = 1e-9;
 };
 
 enum class ArmPlanStatus {

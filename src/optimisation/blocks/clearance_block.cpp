@@ -41,9 +41,6 @@ class ClearanceBlock final : public ConstraintBlock {
       }
     }
   }
-  std::unique_ptr<ConstraintBlock> clone() const override {
-    return std::make_unique<ClearanceBlock>(*this);
-  }
 
  private:
   Clearance clearance_;

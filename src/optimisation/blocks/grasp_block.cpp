@@ -40,9 +40,6 @@ class GraspBlock final : public ConstraintBlock {
       ++row;
     }
   }
-  std::unique_ptr<ConstraintBlock> clone() const override {
-    return std::make_unique<GraspBlock>(*this);
-  }
 
  private:
   std::array<bool, 6> released_;

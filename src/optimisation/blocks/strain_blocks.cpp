@@ -36,9 +36,6 @@ class CurvatureBlock final : public ConstraintBlock {
       dg_dw.row(i) = 2.0 * du.cwiseProduct(C_rot_).transpose() * dm_body;
     }
   }
-  std::unique_ptr<ConstraintBlock> clone() const override {
-    return std::make_unique<CurvatureBlock>(*this);
-  }
 
  private:
   Eigen::Vector3d C_rot_;  // K_rot⁻¹
@@ -67,9 +64,6 @@ class AxialStrainBlock final : public ConstraintBlock {
       g(i) = c_axial_ * n_body.z();  // v_z - ṽ_z, without the cancellation against ṽ_z ≈ 1
       dg_dw.row(i) = c_axial_ * dn_body.row(2);
     }
-  }
-  std::unique_ptr<ConstraintBlock> clone() const override {
-    return std::make_unique<AxialStrainBlock>(*this);
   }
 
  private:

@@ -28,9 +28,6 @@ class WorkspaceBlock final : public ConstraintBlock {
     dg_dw = dg_dp_.lazyProduct(c.tip_dp_dw);  // lazy: no GEMM buffers
     if (workspace_.reach) dg_dw += dg_dtheta_.lazyProduct(c.tip_dtheta_dw);
   }
-  std::unique_ptr<ConstraintBlock> clone() const override {
-    return std::make_unique<WorkspaceBlock>(*this);
-  }
 
  private:
   Workspace workspace_;
