@@ -62,4 +62,23 @@ SceneGap Scene::least_gap(const std::vector<Eigen::Vector3d>& nodes,
   return least;
 }
 
+SceneGap Scene::swept_gap(const std::vector<Eigen::Vector3d>& from,
+                          const std::vector<Eigen::Vector3d>& to,
+                          const std::vector<double>& required) const {
+  SceneGap least;
+  for (std::size_t i = 0; i + 1 < to.size(); ++i) {
+    const double half_moved =
+        0.5 * std::max((to[i] - from[i]).norm(), (to[i + 1] - from[i + 1]).norm());
+    for (std::size_t j = 0; j < obstacles.size(); ++j) {
+      const SegmentDistance a = obstacles[j].distance(from[i], from[i + 1]);
+      const SegmentDistance b = obstacles[j].distance(to[i], to[i + 1]);
+      const SegmentDistance& nearer = a.distance < b.distance ? a : b;
+      const double gap = nearer.distance - rod_radius - half_moved;
+      if (gap - required[j] < least.margin)
+        least = {gap, gap - required[j], static_cast<int>(j), static_cast<int>(i), nearer.t};
+    }
+  }
+  return least;
+}
+
 }  // namespace rodshape

@@ -10,10 +10,13 @@
 // arrival. Samples: the goal (a fifth of the time), else a tip pose near the two ends (positions
 // in their box widened by half the rod, within its reach; rotations slerped between theirs and
 // turned by up to 45°). From every new node the goal is tried; the edge to the goal must arrive on
-// the planned shape. The path found is then shortened greedily (each node joined to the farthest
-// later one it reaches directly). Seeded: the same problem gives the same detour.
+// the planned shape, or on another stable equilibrium there from which the goal's step, optimised
+// again, is reached (a few times per search). The path found is then shortened greedily (each node
+// joined to the farthest later one it reaches directly). Seeded: the same problem gives the same
+// detour.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,14 +40,21 @@ struct Search {
   bool found = false;
   std::vector<Waypoint> via;  // the detour's waypoints between the start and the goal
   Waypoint goal;              // the goal as reached (the planned shape's equilibrium)
-  int edges = 0;              // edges tried
-  int nodes = 0;              // tree size
+  /// When the rod reached the goal's pose only on another equilibrium, the goal's step optimised
+  /// again from there (Reoptimise): the step the detour arrives at instead of the planned one.
+  std::optional<PlanStep> goal_step;
+  int edges = 0;  // edges tried
+  int nodes = 0;  // tree size
   std::string message;
 };
 
 /// Upper bounds (docs/limits.md): an edge is tracking_substeps solves.
 inline constexpr int kMaxEdges = 600;
 inline constexpr int kMaxNodes = 300;
+
+/// The goal's step optimised from the base wrench of another equilibrium at its pose; nullopt
+/// when that optimisation fails.
+using Reoptimise = std::function<std::optional<PlanStep>(const BaseWrench&)>;
 
 /// From the end-effector pose `from` (the rod's equilibrium `w` there) to the step `goal`'s
 /// waypoint, arriving on its planned shape, clear of problem.scene by `required` (one per
@@ -54,6 +64,7 @@ Search search(const PlanProblem& problem,
               const std::vector<double>& required,
               const Pose& from,
               const BaseWrench& w,
-              const PlanStep& goal);
+              const PlanStep& goal,
+              const Reoptimise& reoptimise = {});
 
 }  // namespace rodshape::detour

@@ -219,18 +219,31 @@ SegmentTracking detour_tracking(const detour::Waypoint& reached, double deviatio
 }
 
 /// Searches a detour to `step` from the last waypoint; when found, appends its waypoints as
-/// steps (detour: true) and returns the tracking of the last edge, which arrives at `step`.
+/// steps (detour: true) and returns the tracking of the last edge, which arrives at `step` (or at
+/// the step optimised again on the branch the rod reaches: `step` is then replaced by it).
 std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
                                            const PlanOptions& options,
                                            StepLoop& loop,
                                            const ObjectiveSet& set,
-                                           const PlanStep& step,
+                                           PlanStep& step,
                                            ShapeProblem& step_problem,
                                            PlanResult& result) {
-  const detour::Search found =
-      detour::search(problem, options, loop.required, loop.from, loop.tracked, step);
+  ShapeTarget target = problem.target;
+  target.points = step.objective_points;
+  const detour::Reoptimise reoptimise = [&](const BaseWrench& w) -> std::optional<PlanStep> {
+    ShapeResult solution = solve_step(problem, options, target, step_problem, w, loop, result);
+    result.scene->obstacles_per_step.pop_back();  // the step is counted once
+    if (!solution.converged()) return std::nullopt;
+    const Pose end_effector =
+        compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
+    return PlanStep{step.fraction,         step.inserted,       false,
+                    step.objective_points, std::move(solution), end_effector};
+  };
+  detour::Search found =
+      detour::search(problem, options, loop.required, loop.from, loop.tracked, step, reoptimise);
   result.scene->detours.push_back(found.message);
   if (!found.found) return std::nullopt;
+  if (found.goal_step) step = std::move(*found.goal_step);
   for (const detour::Waypoint& via : found.via) {
     const int number = static_cast<int>(result.steps.size()) + 1;
     record(result.tracking, detour_tracking(via, 0.0), number - 1);
@@ -241,6 +254,71 @@ std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
   }
   return detour_tracking(found.goal,
                          node_deviation(found.goal.configuration, step.solution.configuration));
+}
+
+/// The last set's optimum, from the first of a few warm starts that converges: the history's
+/// extrapolation, the last optimum, the tracked rod's wrench.
+std::optional<PlanStep> last_set_step(const PlanProblem& problem,
+                                      const PlanOptions& options,
+                                      const StepLoop& loop,
+                                      const ShapeTarget& target,
+                                      ShapeProblem& unconstrained,
+                                      PlanResult& result) {
+  const ObjectiveSet& last = loop.pending.back();
+  const BaseWrench starts[] = {warm_start(unconstrained, loop.history, last.fraction),
+                               loop.history.last, loop.tracked};
+  for (const BaseWrench& start : starts) {
+    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
+    if (!solution.converged()) {
+      result.scene->obstacles_per_step.pop_back();  // only the step taken is counted
+      continue;
+    }
+    const Pose end_effector =
+        compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
+    return PlanStep{last.fraction, last.inserted,       false,
+                    target.points, std::move(solution), end_effector};
+  }
+  return std::nullopt;
+}
+
+/// With a scene, where the steps cannot get past an obstacle (a step's optimisation fails, or the
+/// rod would jump or come too near with no refinement left): the last set's optimum, reached by
+/// a detour from the last waypoint, and the sets between skipped (the straight sequence of
+/// objective sets leads into the obstacle; its end is clear of it). Returns false when there is
+/// no such way; the plan then ends as the failed step says.
+bool skip_to_last_set(const PlanProblem& problem,
+                      const PlanOptions& options,
+                      StepLoop& loop,
+                      std::size_t next,
+                      PlanResult& result) {
+  if (problem.scene.empty() || !options.scene_detour || !loop.tracking ||
+      loop.pending.back().detour_tried)
+    return false;
+  loop.pending.back().detour_tried = true;
+  const ObjectiveSet last = loop.pending.back();
+  ShapeTarget target = problem.target;
+  target.points = scene_stages::clear_of_scene(problem.scene, loop.required, last.points);
+  ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
+                             problem.wrench_bounds);
+  std::optional<PlanStep> step =
+      last_set_step(problem, options, loop, target, unconstrained, result);
+  if (!step) return false;
+  auto around = take_detour(problem, options, loop, last, *step, unconstrained, result);
+  if (!around) {
+    result.scene->obstacles_per_step.pop_back();
+    return false;
+  }
+  record(result.tracking, *around, static_cast<int>(result.steps.size()));
+  if (around->gap)
+    record_gap(result, problem, *around->gap, static_cast<int>(result.steps.size()) + 1);
+  loop.tracked = around->arrived;
+  loop.from = step->end_effector;
+  loop.history.push(step->solution.base_wrench, last.fraction);
+  result.scene->detours.back() +=
+      "; to the last objective set (fraction " + std::to_string(last.fraction) + "), the " +
+      std::to_string(loop.pending.size() - 1 - next) + " sets before it skipped";
+  result.steps.push_back(std::move(*step));
+  return true;
 }
 
 /// Steps 3–6: one optimal shape per objective set, each warm-started from the last and tracked
@@ -263,6 +341,7 @@ bool plan_steps(const PlanProblem& problem,
     ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
     const int number = static_cast<int>(result.steps.size()) + 1;
     if (!solution.converged()) {
+      if (skip_to_last_set(problem, options, loop, next, result)) return true;
       result.status = PlanStatus::Partial;
       result.failed_step = static_cast<int>(result.steps.size());
       result.message = "step " + std::to_string(number) + " (fraction " +
@@ -290,13 +369,16 @@ bool plan_steps(const PlanProblem& problem,
         ++result.tracking.refinements;
         continue;
       }
+      if ((segment.jump || segment.collision) &&
+          skip_to_last_set(problem, options, loop, next, result))
+        return true;
       record(result.tracking, segment, static_cast<int>(result.steps.size()));
       if (segment.gap)
         record_gap(result, problem, *segment.gap, static_cast<int>(result.steps.size()) + 1);
       if (segment.collision && result.scene->note.empty()) result.scene->note = segment.note;
       if (segment.jump) loop.tracking = false;
       loop.tracked = segment.arrived;
-      loop.from = end_effector;
+      loop.from = step.end_effector;  // the planned one, or the detour's goal optimised again
     }
     loop.history.push(step.solution.base_wrench, set.fraction);
     result.steps.push_back(std::move(step));

@@ -1,5 +1,6 @@
 // plan_stages.cpp: the stages of plan() (see plan_stages.hpp).
 #include "plan_stages.hpp"
+#include "scene_stages.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -200,9 +201,11 @@ SegmentTracking track_segment(const PlanProblem& problem,
   follow.final_derivatives = Derivatives::AllNodes;  // for the stability test on arrival
   follow.arrival_stability = true;
   std::optional<SceneGap> least;
+  std::optional<scene_stages::SweptGap> swept;
   if (required != nullptr) {
+    swept.emplace(problem.scene, *required, integrate(problem.rod, w, Derivatives::None).p);
     follow.observer = [&](double, const RodConfiguration& c) {
-      const SceneGap gap = problem.scene.least_gap(c.p, *required);
+      const SceneGap gap = swept->add(c.p);
       if (!least || gap.margin < least->margin) least = gap;
       return true;
     };

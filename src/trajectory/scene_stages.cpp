@@ -100,4 +100,15 @@ std::vector<int> violated_obstacles(const Scene& scene,
   return violated;
 }
 
+SweptGap::SweptGap(const Scene& scene,
+                   const std::vector<double>& required,
+                   const std::vector<Eigen::Vector3d>& start)
+    : scene_(scene), required_(required), previous_(start) {}
+
+SceneGap SweptGap::add(const std::vector<Eigen::Vector3d>& p) {
+  const SceneGap swept = scene_.swept_gap(previous_, p, required_);
+  previous_ = p;
+  return swept;
+}
+
 }  // namespace rodshape::scene_stages

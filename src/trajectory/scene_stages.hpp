@@ -6,6 +6,8 @@
 //                      its start and its objective points (a fixed set of rows), with the gaps
 //                      they require widened by the planning margin
 //   violated_obstacles the obstacles an optimum violates that its step did not include
+//   SweptGap           the least gap of the rod moving between followed substeps (tracking and
+//                      the detour's edges)
 #pragma once
 
 #include <optional>
@@ -51,5 +53,21 @@ std::vector<int> violated_obstacles(const Scene& scene,
                                     const std::vector<double>& required,
                                     const RodConfiguration& c,
                                     const Clearance& selected);
+
+/// The least gap over a rod followed through substeps, including the motion between them
+/// (Scene::swept_gap of each substep and the one before). Each add() returns that bound for the
+/// interval it closes.
+class SweptGap {
+ public:
+  SweptGap(const Scene& scene,
+           const std::vector<double>& required,
+           const std::vector<Eigen::Vector3d>& start);
+  SceneGap add(const std::vector<Eigen::Vector3d>& p);
+
+ private:
+  const Scene& scene_;
+  const std::vector<double>& required_;
+  std::vector<Eigen::Vector3d> previous_;
+};
 
 }  // namespace rodshape::scene_stages

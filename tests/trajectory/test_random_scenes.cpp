@@ -79,6 +79,7 @@ struct Outcome {
   PlanStatus status = PlanStatus::Infeasible;
   double seconds = 0.0;
   bool detour = false;
+  std::string message;  // a plan that did not complete: why
 };
 
 Outcome run_case(int k) {
@@ -128,6 +129,10 @@ Outcome run_case(int k) {
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.status = plan.status;
+  if (plan.status != PlanStatus::Complete) {
+    outcome.message = plan.message;
+    for (const std::string& detour : plan.scene->detours) outcome.message += " [" + detour + "]";
+  }
   outcome.detour = std::any_of(plan.steps.begin(), plan.steps.end(),
                                [](const PlanStep& step) { return step.detour; });
   if (plan.status == PlanStatus::Complete) {
@@ -150,9 +155,10 @@ TEST(RandomScenes, CompleteClearOrReportedNeverThroughAnObstacle) {
   const int first = first_text ? std::max(0, std::atoi(first_text)) : 0;
   for (int k = first; k < first + cases; ++k) {
     const Outcome outcome = run_case(k);
-    std::printf("case %d: %s, %s, %.3f s%s\n", k, outcome.beside ? "beside" : "across",
+    std::printf("case %d: %s, %s, %.3f s%s%s%s\n", k, outcome.beside ? "beside" : "across",
                 to_string(outcome.status).c_str(), outcome.seconds,
-                outcome.detour ? ", detour" : "");
+                outcome.detour ? ", detour" : "", outcome.message.empty() ? "" : ": ",
+                outcome.message.c_str());
     std::fflush(stdout);
     times.push_back(outcome.seconds);
     detours += outcome.detour ? 1 : 0;

@@ -53,6 +53,14 @@ struct Scene {
   /// `required` (one per obstacle, from required_gaps()).
   SceneGap least_gap(const std::vector<Eigen::Vector3d>& nodes,
                      const std::vector<double>& required) const;
+  /// The least margin of the polyline moving from `from` to `to` (the same number of nodes):
+  /// each segment's least gap at the two ends, lowered by half the larger displacement of its two
+  /// nodes (a node between the two is, to first order, within half its displacement of one of
+  /// them, and a signed distance changes by at most the distance moved). The SceneGap is that of
+  /// the end where the segment is nearer, its gap and margin lowered.
+  SceneGap swept_gap(const std::vector<Eigen::Vector3d>& from,
+                     const std::vector<Eigen::Vector3d>& to,
+                     const std::vector<double>& required) const;
   /// The same for obstacle `j` alone, against the gap `required` of it.
   SceneGap obstacle_gap(std::size_t j,
                         const std::vector<Eigen::Vector3d>& nodes,
