@@ -27,9 +27,12 @@ constexpr double kGoalBias = 0.2;
 constexpr double kMaxEnergyRatio = 1.5;
 constexpr double kWiderEnergyRatio = 3.0;
 constexpr double kMaxTurn = 0.25 * 3.141592653589793;  // rad: a sample's turn off the slerp
-constexpr double kBranchTolerance = 1e-3;
-constexpr int kMaxReoptimisations = 3;  // goals optimised again from another branch, per search  //
-                                        // m, arrival on the planned shape (as the tracking)
+constexpr double kBranchTolerance = 1e-3;  // m, arrival on the planned shape (as the tracking)
+constexpr int kMaxReoptimisations = 3;     // goals optimised again from another branch, per search
+constexpr int kFoldCheckResolution = 16;   // substeps per search substep, verifying the path
+constexpr double kSpike = 4.0;             // a substep's motion over the largest before it: a snap
+/// The longest edge towards a sample, in pose_distance.
+constexpr double kSteerLength(double rod_length) { return rod_length / 6.0; }
 
 struct Node {
   Waypoint state;
@@ -62,18 +65,25 @@ class Tree {
   std::optional<Waypoint> follow_edge(const Waypoint& start,
                                       const Pose& to,
                                       const RodConfiguration* expected,
-                                      std::optional<Waypoint>* elsewhere = nullptr) {
+                                      std::optional<Waypoint>* elsewhere = nullptr,
+                                      int resolution = 1) {
     ++edges_;
     FollowOptions follow;
-    follow.substeps = options_.tracking_substeps;
+    const double L = problem_.rod.properties.length;
+    const double distance = pose_distance(start.end_effector, to, L);
+    // One resolution along every edge: tracking_substeps per sixth of the rod's length (a steered
+    // edge's), more on the long edges to the goal, so that no fold is stepped over.
+    follow.substeps = std::clamp(
+        resolution *
+            static_cast<int>(std::ceil(options_.tracking_substeps * distance / kSteerLength(L))),
+        resolution * options_.tracking_substeps, FollowOptions::kMaxSubsteps);
     follow.final_derivatives = Derivatives::AllNodes;
     follow.arrival_stability = true;
-    const double L = problem_.rod.properties.length;
-    const double jump = std::max(
-        4.0 * pose_distance(start.end_effector, to, L) / options_.tracking_substeps, 0.02 * L);
+    const double jump = std::max(4.0 * distance / follow.substeps, 0.02 * L);
     Waypoint end;
     bool blocked = false;
     std::vector<Eigen::Vector3d> previous = start.configuration.p;
+    double largest = 0.0;  // the largest node displacement of a substep so far
     scene_stages::SweptGap swept(problem_.scene, required_, start.configuration.p);
     // Every substep: clear of the scene (with the motion since the last), no node moving like a
     // snap, below the energy cap; the first that is not stops the edge.
@@ -82,8 +92,14 @@ class Tree {
       if (gap.margin < end.gap.margin) end.gap = gap;
       if (!gap.clear()) blocked = ++stops_.scene > 0;
       if (!blocked && c.energy > energy_cap_) blocked = ++stops_.energy > 0;
-      for (std::size_t i = 0; i < c.p.size() && !blocked; ++i)
-        if ((c.p[i] - previous[i]).norm() > jump) blocked = ++stops_.snap > 0;
+      double moved = 0.0;
+      for (std::size_t i = 0; i < c.p.size(); ++i)
+        moved = std::max(moved, (c.p[i] - previous[i]).norm());
+      // A snap: a node moving farther than `jump`, or, when following finely (resolution > 1), a
+      // substep moving kSpike times farther than any before it (smooth motion changes gradually).
+      const bool spike = resolution > 1 && largest > 0.0 && moved > kSpike * largest;
+      if (!blocked && (moved > jump || spike)) blocked = ++stops_.snap > 0;
+      largest = std::max(largest, moved);
       previous = c.p;
       return !blocked;
     };
@@ -150,7 +166,7 @@ class Tree {
   Pose steer(const Pose& from, const Pose& to) const {
     const double L = problem_.rod.properties.length;
     const double d = pose_distance(from, to, L);
-    const double step = L / 6.0;
+    const double step = kSteerLength(L);
     return d <= step ? to : interpolate(from, to, step / d);
   }
 
@@ -170,9 +186,10 @@ class Tree {
       nodes_.push_back({std::move(*reached), from});
       const int added = static_cast<int>(nodes_.size()) - 1;
       std::optional<Waypoint> elsewhere;
-      if (auto arrived = follow_edge(nodes_[added].state, goal_.end_effector,
-                                     &goal_.solution.configuration, &elsewhere)) {
-        return found(added, std::move(*arrived));
+      if (follow_edge(nodes_[added].state, goal_.end_effector, &goal_.solution.configuration,
+                      &elsewhere)) {
+        if (std::optional<Search> search = found(added)) return std::move(*search);
+        continue;
       }
       if (elsewhere && reoptimise_ && reoptimised_ < kMaxReoptimisations) {
         if (auto search = goal_from(added, std::move(*elsewhere))) return std::move(*search);
@@ -199,46 +216,60 @@ class Tree {
     ++reoptimised_;
     std::optional<PlanStep> step = reoptimise_(other.wrench);
     if (!step) return std::nullopt;
-    std::optional<Waypoint> on =
-        follow_edge(other, step->end_effector, &step->solution.configuration);
-    if (!on) return std::nullopt;
+    if (!follow_edge(other, step->end_effector, &step->solution.configuration))
+      return std::nullopt;
     nodes_.push_back({std::move(other), added});
     goal_ = std::move(*step);
     goal_replaced_ = true;
-    return found(static_cast<int>(nodes_.size()) - 1, std::move(*on));
+    return found(static_cast<int>(nodes_.size()) - 1);
+  }
+
+  /// An edge of the path taken, followed kFoldCheckResolution times as finely as the search's
+  /// (a fold stepped over by the coarse edge shows there as a spike, or as the rod lost or
+  /// arriving elsewhere), arriving on `expected`.
+  std::optional<Waypoint> verified(const Waypoint& at,
+                                   const Pose& to,
+                                   const RodConfiguration& expected) {
+    return follow_edge(at, to, &expected, nullptr, kFoldCheckResolution);
   }
 
   /// The path root → … → node `last` → goal, shortened: from each waypoint, the farthest later
-  /// one (or the goal) reached directly.
-  Search found(int last, Waypoint arrived) {
+  /// one (or the goal) reached directly; every edge taken verified. nullopt when an edge of the
+  /// tree fails its verification (the search goes on).
+  std::optional<Search> found(int last) {
     std::vector<Waypoint> chain;
     for (int k = last; k >= 0; k = nodes_[k].parent) chain.push_back(nodes_[k].state);
     std::reverse(chain.begin(), chain.end());  // chain[0] is the root
     Search search;
-    search.found = true;
     Waypoint at = chain.front();
-    std::size_t i = 0;
-    while (true) {
-      if (auto direct = follow_edge(at, goal_.end_effector, &goal_.solution.configuration)) {
-        search.goal = std::move(*direct);
-        break;
+    for (std::size_t i = 0;;) {
+      const RodConfiguration& goal = goal_.solution.configuration;
+      const bool last_node = i == chain.size() - 1;
+      if (last_node || follow_edge(at, goal_.end_effector, &goal)) {
+        std::optional<Waypoint> direct = verified(at, goal_.end_effector, goal);
+        if (direct) {
+          search.goal = std::move(*direct);
+          break;
+        }
+        if (last_node) return std::nullopt;
       }
       std::size_t j = chain.size() - 1;
       std::optional<Waypoint> hop;
-      for (; j > i + 1; --j)
-        if ((hop = follow_edge(at, chain[j].end_effector, nullptr))) break;
-      if (!hop) {  // the tree's own edge, as found
+      for (; j > i + 1 && !hop; --j) {
+        if (std::optional<Waypoint> coarse = follow_edge(at, chain[j].end_effector, nullptr))
+          hop = verified(at, chain[j].end_effector, coarse->configuration);
+        if (hop) break;
+      }
+      if (!hop) {  // the tree's own edge
         j = i + 1;
-        hop = chain[j];
+        hop = verified(at, chain[j].end_effector, chain[j].configuration);
+        if (!hop) return std::nullopt;
       }
       search.via.push_back(*hop);
       at = std::move(*hop);
       i = j;
-      if (i == chain.size() - 1) {
-        search.goal = std::move(arrived);
-        break;
-      }
     }
+    search.found = true;
     search.edges = edges_;
     search.nodes = static_cast<int>(nodes_.size());
     if (goal_replaced_) search.goal_step = goal_;

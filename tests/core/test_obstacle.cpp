@@ -177,6 +177,44 @@ TEST(Scene, TheClampsMountRequiresOnlyTheClampsOwnGap) {
   EXPECT_THROW(scene.check_clamp(Vector3d(0.2, 0.0, 0.1)), rodshape::InputError);
 }
 
+// The swept gap bounds the gap of every polyline on the straight way between its two ends from
+// below (here an oracle of 200 samples along the way), for random motions past every kind of
+// obstacle; without motion it is the least gap itself.
+TEST(Scene, TheSweptGapBoundsTheGapAlongTheWayFromBelow) {
+  rodshape::Scene scene;
+  scene.clearance = 0.005;
+  scene.rod_radius = 0.002;
+  scene.obstacles = {{"ball", SphereObstacle{{0.1, 0.02, 0.0}, 0.02}},
+                     {"box", BoxObstacle{{0.2, -0.03, 0.01}, {0.02, 0.03, 0.04},
+                                         Eigen::Matrix3d::Identity()}},
+                     {"pole", CapsuleObstacle{{0.15, 0.0, -0.1}, {0.15, 0.0, 0.1}, 0.004}},
+                     {"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.06}}};
+  const std::vector<double> required(scene.obstacles.size(), scene.clearance);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    std::vector<Vector3d> from, to;
+    for (int i = 0; i <= 20; ++i) {
+      const Vector3d p(0.3 * i / 20.0, 0.05 * unit(rng), 0.05 * unit(rng));
+      from.push_back(p);
+      to.push_back(p + 0.01 * Vector3d(unit(rng), unit(rng), unit(rng)));
+    }
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 200; ++k) {
+      std::vector<Vector3d> between(from.size());
+      for (std::size_t i = 0; i < from.size(); ++i)
+        between[i] = from[i] + (k / 200.0) * (to[i] - from[i]);
+      least = std::min(least, scene.least_gap(between, required).margin);
+    }
+    const rodshape::SceneGap swept = scene.swept_gap(from, to, required);
+    EXPECT_LE(swept.margin, least) << "trial " << trial;
+    EXPECT_LE(swept.margin, std::min(scene.least_gap(from, required).margin,
+                                     scene.least_gap(to, required).margin));
+    EXPECT_DOUBLE_EQ(scene.swept_gap(to, to, required).margin,
+                     scene.least_gap(to, required).margin);
+  }
+}
+
 TEST(Scene, BadObstaclesNameTheirField) {
   using rodshape::testing::input_error_message;
   rodshape::Scene scene;
