@@ -2,6 +2,7 @@
 #include "rodshape/core/scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "validation.hpp"
@@ -67,15 +68,18 @@ SceneGap Scene::swept_gap(const std::vector<Eigen::Vector3d>& from,
                           const std::vector<double>& required) const {
   SceneGap least;
   for (std::size_t i = 0; i + 1 < to.size(); ++i) {
-    const double half_moved =
-        0.5 * std::max((to[i] - from[i]).norm(), (to[i + 1] - from[i + 1]).norm());
+    // Every point of the segment moves at most d (its nodes' larger displacement).
+    const double d = std::max((to[i] - from[i]).norm(), (to[i + 1] - from[i + 1]).norm());
     for (std::size_t j = 0; j < obstacles.size(); ++j) {
       const SegmentDistance a = obstacles[j].distance(from[i], from[i + 1]);
       const SegmentDistance b = obstacles[j].distance(to[i], to[i + 1]);
-      const SegmentDistance& nearer = a.distance < b.distance ? a : b;
-      const double gap = nearer.distance - rod_radius - half_moved;
-      if (gap - required[j] < least.margin)
+      const double g0 = a.distance - rod_radius, g1 = b.distance - rod_radius;
+      // Lipschitz: gap(τ) ≥ max(g0 - τ d, g1 - (1 - τ) d); its least over τ ∈ [0, 1].
+      const double gap = std::abs(g0 - g1) >= d ? std::min(g0, g1) : 0.5 * (g0 + g1 - d);
+      if (gap - required[j] < least.margin) {
+        const SegmentDistance& nearer = g0 < g1 ? a : b;
         least = {gap, gap - required[j], static_cast<int>(j), static_cast<int>(i), nearer.t};
+      }
     }
   }
   return least;

@@ -21,11 +21,12 @@ namespace {
 
 constexpr double kGoalBias = 0.2;
 /// Gentleness: an edge's peak energy at most this times the larger of the start's and the goal's
-/// (the closed loop's guard against coiled re-plans uses the same ratio) for the first half of the
-/// edges; when that finds no way, the second half allows kWiderEnergyRatio (the plan's tracked peak
-/// energy reports what was used).
+/// (the closed loop's guard against coiled re-plans uses the same ratio) for the first
+/// kGentleEdges edges; when they find no way, the rest allow kWiderEnergyRatio (the plan's tracked
+/// peak energy reports what was used: the path taken, shortened, is often below the first cap).
 constexpr double kMaxEnergyRatio = 1.5;
 constexpr double kWiderEnergyRatio = 3.0;
+constexpr int kGentleEdges = 100;
 constexpr double kMaxTurn = 0.25 * 3.141592653589793;  // rad: a sample's turn off the slerp
 constexpr double kBranchTolerance = 1e-3;  // m, arrival on the planned shape (as the tracking)
 constexpr int kMaxReoptimisations = 3;     // goals optimised again from another branch, per search
@@ -176,7 +177,7 @@ class Tree {
     nodes_.push_back({root, -1});
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     while (edges_ < kMaxEdges && static_cast<int>(nodes_.size()) < kMaxNodes) {
-      if (edges_ >= kMaxEdges / 2) energy_cap_ = kWiderEnergyRatio * larger;
+      if (edges_ >= kGentleEdges) energy_cap_ = kWiderEnergyRatio * larger;
       const Pose target = unit(rng_) < kGoalBias ? goal_.end_effector
                                                  : sample(root.end_effector, goal_.end_effector);
       const int from = nearest(target);
@@ -199,16 +200,20 @@ class Tree {
     search.edges = edges_;
     search.nodes = static_cast<int>(nodes_.size());
     search.message = "no detour found in " + std::to_string(edges_) + " edges (" +
-                     std::to_string(nodes_.size()) + " equilibria; edges stopped by the scene " +
-                     std::to_string(stops_.scene) +
-                     ", by the energy cap (1.5, then 3 x the larger end energy) " +
-                     std::to_string(stops_.energy) + ", by a snap " + std::to_string(stops_.snap) +
-                     ", rod lost or unstable " + std::to_string(stops_.lost) +
-                     ", arrived off the planned shape " + std::to_string(stops_.elsewhere) + ")";
+                     std::to_string(nodes_.size()) + " equilibria; " + stops_text() + ")";
     return search;
   }
 
  private:
+  /// Why edges stopped, for the search's message.
+  std::string stops_text() const {
+    return "edges stopped by the scene " + std::to_string(stops_.scene) +
+           ", by the energy cap (1.5, then 3 x the larger end energy) " +
+           std::to_string(stops_.energy) + ", by a snap " + std::to_string(stops_.snap) +
+           ", rod lost or unstable " + std::to_string(stops_.lost) +
+           ", arrived off the planned shape " + std::to_string(stops_.elsewhere);
+  }
+
   /// The rod arrived at the goal's pose on another equilibrium `other` than the planned one: the
   /// goal's step optimised again from there (a local optimum of the same objective set, on the
   /// branch the rod can reach), and followed to from `other`.
@@ -216,8 +221,7 @@ class Tree {
     ++reoptimised_;
     std::optional<PlanStep> step = reoptimise_(other.wrench);
     if (!step) return std::nullopt;
-    if (!follow_edge(other, step->end_effector, &step->solution.configuration))
-      return std::nullopt;
+    if (!follow_edge(other, step->end_effector, &step->solution.configuration)) return std::nullopt;
     nodes_.push_back({std::move(other), added});
     goal_ = std::move(*step);
     goal_replaced_ = true;
@@ -275,7 +279,7 @@ class Tree {
     if (goal_replaced_) search.goal_step = goal_;
     search.message = "detour of " + std::to_string(search.via.size()) + " waypoints (" +
                      std::to_string(edges_) + " edges tried, " + std::to_string(nodes_.size()) +
-                     " equilibria)" +
+                     " equilibria; " + stops_text() + ")" +
                      (goal_replaced_ ? "; the goal optimised again on the branch it reaches" : "");
     return search;
   }

@@ -256,36 +256,13 @@ std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
                          node_deviation(found.goal.configuration, step.solution.configuration));
 }
 
-/// The last set's optimum, from the first of a few warm starts that converges: the history's
-/// extrapolation, the last optimum, the tracked rod's wrench.
-std::optional<PlanStep> last_set_step(const PlanProblem& problem,
-                                      const PlanOptions& options,
-                                      const StepLoop& loop,
-                                      const ShapeTarget& target,
-                                      ShapeProblem& unconstrained,
-                                      PlanResult& result) {
-  const ObjectiveSet& last = loop.pending.back();
-  const BaseWrench starts[] = {warm_start(unconstrained, loop.history, last.fraction),
-                               loop.history.last, loop.tracked};
-  for (const BaseWrench& start : starts) {
-    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
-    if (!solution.converged()) {
-      result.scene->obstacles_per_step.pop_back();  // only the step taken is counted
-      continue;
-    }
-    const Pose end_effector =
-        compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
-    return PlanStep{last.fraction, last.inserted,       false,
-                    target.points, std::move(solution), end_effector};
-  }
-  return std::nullopt;
-}
-
 /// With a scene, where the steps cannot get past an obstacle (a step's optimisation fails, or the
 /// rod would jump or come too near with no refinement left): the last set's optimum, reached by
 /// a detour from the last waypoint, and the sets between skipped (the straight sequence of
-/// objective sets leads into the obstacle; its end is clear of it). Returns false when there is
-/// no such way; the plan then ends as the failed step says.
+/// objective sets leads into the obstacle; its end is clear of it). The optimum is tried from a
+/// few warm starts (the steps' extrapolation, the last optimum, the tracked rod, the initial rod:
+/// they may end in different local optima, on different sides of an obstacle) until a detour
+/// reaches one. Returns false when none does; the plan then ends as the failed step says.
 bool skip_to_last_set(const PlanProblem& problem,
                       const PlanOptions& options,
                       StepLoop& loop,
@@ -300,25 +277,41 @@ bool skip_to_last_set(const PlanProblem& problem,
   target.points = scene_stages::clear_of_scene(problem.scene, loop.required, last.points);
   ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                              problem.wrench_bounds);
-  std::optional<PlanStep> step =
-      last_set_step(problem, options, loop, target, unconstrained, result);
-  if (!step) return false;
-  auto around = take_detour(problem, options, loop, last, *step, unconstrained, result);
-  if (!around) {
-    result.scene->obstacles_per_step.pop_back();
-    return false;
+  const BaseWrench starts[] = {warm_start(unconstrained, loop.history, last.fraction),
+                               loop.history.last, loop.tracked, result.initial_wrench};
+  std::vector<RodConfiguration> tried;
+  for (const BaseWrench& start : starts) {
+    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
+    const bool known = std::any_of(tried.begin(), tried.end(), [&](const RodConfiguration& c) {
+      return solution.converged() && node_deviation(c, solution.configuration) < 1e-3;
+    });
+    if (!solution.converged() || known) {
+      result.scene->obstacles_per_step.pop_back();  // only the step taken is counted
+      continue;
+    }
+    tried.push_back(solution.configuration);
+    const Pose end_effector =
+        compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
+    PlanStep step{last.fraction, last.inserted,       false,
+                  target.points, std::move(solution), end_effector};
+    auto around = take_detour(problem, options, loop, last, step, unconstrained, result);
+    if (!around) {
+      result.scene->obstacles_per_step.pop_back();
+      continue;
+    }
+    record(result.tracking, *around, static_cast<int>(result.steps.size()));
+    if (around->gap)
+      record_gap(result, problem, *around->gap, static_cast<int>(result.steps.size()) + 1);
+    loop.tracked = around->arrived;
+    loop.from = step.end_effector;
+    loop.history.push(step.solution.base_wrench, last.fraction);
+    result.scene->detours.back() +=
+        "; to the last objective set (fraction " + std::to_string(last.fraction) + "), the " +
+        std::to_string(loop.pending.size() - 1 - next) + " sets before it skipped";
+    result.steps.push_back(std::move(step));
+    return true;
   }
-  record(result.tracking, *around, static_cast<int>(result.steps.size()));
-  if (around->gap)
-    record_gap(result, problem, *around->gap, static_cast<int>(result.steps.size()) + 1);
-  loop.tracked = around->arrived;
-  loop.from = step->end_effector;
-  loop.history.push(step->solution.base_wrench, last.fraction);
-  result.scene->detours.back() +=
-      "; to the last objective set (fraction " + std::to_string(last.fraction) + "), the " +
-      std::to_string(loop.pending.size() - 1 - next) + " sets before it skipped";
-  result.steps.push_back(std::move(*step));
-  return true;
+  return false;
 }
 
 /// Steps 3–6: one optimal shape per objective set, each warm-started from the last and tracked

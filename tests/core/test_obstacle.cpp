@@ -184,11 +184,11 @@ TEST(Scene, TheSweptGapBoundsTheGapAlongTheWayFromBelow) {
   rodshape::Scene scene;
   scene.clearance = 0.005;
   scene.rod_radius = 0.002;
-  scene.obstacles = {{"ball", SphereObstacle{{0.1, 0.02, 0.0}, 0.02}},
-                     {"box", BoxObstacle{{0.2, -0.03, 0.01}, {0.02, 0.03, 0.04},
-                                         Eigen::Matrix3d::Identity()}},
-                     {"pole", CapsuleObstacle{{0.15, 0.0, -0.1}, {0.15, 0.0, 0.1}, 0.004}},
-                     {"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.06}}};
+  scene.obstacles = {
+      {"ball", SphereObstacle{{0.1, 0.02, 0.0}, 0.02}},
+      {"box", BoxObstacle{{0.2, -0.03, 0.01}, {0.02, 0.03, 0.04}, Eigen::Matrix3d::Identity()}},
+      {"pole", CapsuleObstacle{{0.15, 0.0, -0.1}, {0.15, 0.0, 0.1}, 0.004}},
+      {"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.06}}};
   const std::vector<double> required(scene.obstacles.size(), scene.clearance);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -53,11 +53,12 @@ struct Scene {
   /// `required` (one per obstacle, from required_gaps()).
   SceneGap least_gap(const std::vector<Eigen::Vector3d>& nodes,
                      const std::vector<double>& required) const;
-  /// The least margin of the polyline moving from `from` to `to` (the same number of nodes):
-  /// each segment's least gap at the two ends, lowered by half the larger displacement of its two
-  /// nodes (a node between the two is, to first order, within half its displacement of one of
-  /// them, and a signed distance changes by at most the distance moved). The SceneGap is that of
-  /// the end where the segment is nearer, its gap and margin lowered.
+  /// The least margin of the polyline moving from `from` to `to` (the same number of nodes), to
+  /// first order (each point on the straight line between its two places): a segment whose points
+  /// move at most d (its nodes' larger displacement) with gaps g0 and g1 at the two ends keeps,
+  /// since a signed distance changes by at most the distance moved, at least
+  /// min over τ of max(g0 - τ d, g1 - (1 - τ) d) = (g0 + g1 - d) / 2, or min(g0, g1) when
+  /// |g0 - g1| ≥ d. The SceneGap is that of the end where the segment is nearer, its gap lowered.
   SceneGap swept_gap(const std::vector<Eigen::Vector3d>& from,
                      const std::vector<Eigen::Vector3d>& to,
                      const std::vector<double>& required) const;
