@@ -328,6 +328,11 @@ bool plan_steps(const PlanProblem& problem,
     ShapeTarget target = problem.target;
     target.points =
         scene ? scene_stages::clear_of_scene(problem.scene, loop.required, set.points) : set.points;
+    // An intermediate set with points inside an obstacle: the straight sequence of sets leads
+    // through it, and its optimum would wrap the rod around it; the last set first.
+    if (scene && next + 1 < loop.pending.size() && target.points != set.points &&
+        skip_to_last_set(problem, options, loop, next, result))
+      return true;
     ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                                problem.wrench_bounds);
     const BaseWrench start = warm_start(unconstrained, loop.history, set.fraction);
