@@ -7,8 +7,8 @@
 //  - across the way (odd cases): one ball or pole centred on a node of a middle step (the plan made
 //    without the scene passes through it), clear of the initial rod and the target.
 // Never garbage: a plan reported complete is re-solved independently (scene_replay.hpp) and its rod
-// stays the clearance away from every obstacle at every sample of its path. The cases beside the
-// way must complete (≥ 99 % of them; the CI sample: all). RODSHAPE_SCENE_CASES sets the number of
+// stays the clearance away from every obstacle at every sample of its path. The cases must
+// complete (≥ 99 % of them, issue 20; the CI sample: all). RODSHAPE_SCENE_CASES sets the number of
 // cases (default 8; scripts/scene_sweep.sh runs 200) and RODSHAPE_SCENE_FIRST the first case's
 // seed index (default 0); each case, the counts and the times are printed.
 #include <gtest/gtest.h>
@@ -163,10 +163,10 @@ TEST(RandomScenes, CompleteClearOrReportedNeverThroughAnObstacle) {
     times.push_back(outcome.seconds);
     detours += outcome.detour ? 1 : 0;
     const bool complete = outcome.status == PlanStatus::Complete;
+    EXPECT_TRUE(complete || cases >= 100) << "case " << k << ": " << to_string(outcome.status);
     if (outcome.beside) {
       ++beside;
       beside_complete += complete ? 1 : 0;
-      EXPECT_TRUE(complete || cases >= 100) << "case " << k << ": " << to_string(outcome.status);
     } else {
       ++across;
       across_complete += complete ? 1 : 0;
@@ -178,7 +178,7 @@ TEST(RandomScenes, CompleteClearOrReportedNeverThroughAnObstacle) {
       "(the others reported); %d with a detour; time median %.3f s, worst %.3f s\n",
       cases, beside_complete, beside, across_complete, across, detours, times[times.size() / 2],
       times.back());
-  EXPECT_GE(beside_complete, 0.99 * beside);
+  EXPECT_GE(beside_complete + across_complete, 0.99 * cases);
 }
 
 }  // namespace
