@@ -153,9 +153,13 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
 namespace {
 
 ObjectiveInterpolation read_interpolation(const YamlField& field) {
-  const std::string name = field.choice({"shape", "arc_length", "projection"});
-  if (name == "projection") return ObjectiveInterpolation::Projection;
-  return name == "arc_length" ? ObjectiveInterpolation::ArcLength : ObjectiveInterpolation::Shape;
+  const std::string name = field.choice({"auto", "shape", "arc_length", "projection", "pose"});
+  for (ObjectiveInterpolation scheme :
+       {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
+        ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
+        ObjectiveInterpolation::Pose})
+    if (to_string(scheme) == name) return scheme;
+  return ObjectiveInterpolation::Auto;  // choice() accepted only the names above
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "arm_replanning.hpp"
 #include "detour_search.hpp"
 #include "plan_stages.hpp"
+#include "pose_continuation.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
@@ -61,6 +62,10 @@ std::string to_string(ObjectiveInterpolation interpolation) {
       return "arc_length";
     case ObjectiveInterpolation::Projection:
       return "projection";
+    case ObjectiveInterpolation::Pose:
+      return "pose";
+    case ObjectiveInterpolation::Auto:
+      return "auto";
   }
   return "unknown";
 }
@@ -415,10 +420,12 @@ std::string tracking_note(const TrackingResult& tracking) {
 
 }  // namespace
 
-PlanResult plan_rod(const PlanProblem& problem,
-                    const PlanOptions& options,
-                    const plan_stages::InitialEquilibrium& initial) {
+/// Stages 2–7 with objective sets (Shape, ArcLength, Projection).
+PlanResult plan_by_sets(const PlanProblem& problem,
+                        const PlanOptions& options,
+                        const plan_stages::InitialEquilibrium& initial) {
   PlanResult result;
+  result.interpolation.used = options.interpolation;
   result.initial_wrench = initial.wrench;
   result.initial_configuration = initial.configuration;
   result.initial_stable_search = initial.stable_search;
@@ -481,6 +488,113 @@ PlanResult plan_rod(const PlanProblem& problem,
   return result;
 }
 
+namespace {
+
+/// The tracked peak energy over the larger end energy (NaN without steps or tracking).
+double peak_ratio(const PlanResult& plan) {
+  if (plan.steps.empty() || !plan.tracking.performed) return std::nan("");
+  const double larger =
+      std::max(plan.initial_configuration.energy, plan.steps.back().solution.configuration.energy);
+  return larger > 0.0 ? plan.tracking.peak_energy / larger : std::nan("");
+}
+
+/// Gentle enough that Auto tries nothing else.
+bool gentle(const PlanResult& plan) {
+  return plan.complete() && plan.tracking.refinements == 0 &&
+         !(peak_ratio(plan) > PlanOptions::kGentleRatio);
+}
+
+PlanOptions with_interpolation(PlanOptions options, ObjectiveInterpolation scheme) {
+  options.interpolation = scheme;
+  return options;
+}
+
+/// Pose: the target's optimum by the Shape sets (untracked), then the end effector's path to it.
+PlanResult plan_by_pose(const PlanProblem& problem,
+                        const PlanOptions& options,
+                        const plan_stages::InitialEquilibrium& initial,
+                        const PlanResult* shape_plan) {
+  PlanOptions untracked = with_interpolation(options, ObjectiveInterpolation::Shape);
+  untracked.track_between_waypoints = false;
+  PlanResult reference;
+  if (!shape_plan || shape_plan->steps.empty() || shape_plan->status == PlanStatus::Partial) {
+    reference = plan_by_sets(problem, untracked, initial);
+    shape_plan = &reference;
+  }
+  const bool reached = shape_plan->status != PlanStatus::Partial &&
+                       shape_plan->status != PlanStatus::Infeasible && !shape_plan->steps.empty();
+  pose_continuation::Refusal refusal;
+  std::optional<PlanResult> result =
+      reached ? pose_continuation::plan(problem, options, initial, *shape_plan, refusal)
+              : std::nullopt;
+  if (!result) {  // the reference's status and message, or why the path was not taken
+    PlanResult failed = *shape_plan;
+    if (reached) {
+      failed.status = refusal.status;
+      failed.message = refusal.why;
+    }
+    failed.interpolation.used = ObjectiveInterpolation::Pose;
+    return failed;
+  }
+  result->interpolation.used = ObjectiveInterpolation::Pose;
+  return std::move(*result);
+}
+
+InterpolationTrial trial(const PlanResult& plan, ObjectiveInterpolation scheme) {
+  return {scheme, plan.status, peak_ratio(plan), plan.complete() ? "" : plan.message};
+}
+
+/// Auto: Shape, and when it is not gentle, Pose and Projection; the complete plan with the least
+/// peak ratio (the earlier on a tie).
+PlanResult gentlest_plan(const PlanProblem& problem,
+                         const PlanOptions& options,
+                         const plan_stages::InitialEquilibrium& initial) {
+  PlanResult best =
+      plan_by_sets(problem, with_interpolation(options, ObjectiveInterpolation::Shape), initial);
+  std::vector<InterpolationTrial> tried = {trial(best, ObjectiveInterpolation::Shape)};
+  if (options.planned_steps() == options.steps && options.track_between_waypoints &&
+      !gentle(best)) {
+    PlanResult others[] = {
+        plan_by_pose(problem, options, initial, &best),
+        plan_by_sets(problem, with_interpolation(options, ObjectiveInterpolation::Projection),
+                     initial)};
+    const ObjectiveInterpolation schemes[] = {ObjectiveInterpolation::Pose,
+                                              ObjectiveInterpolation::Projection};
+    for (int k = 0; k < 2; ++k) {
+      tried.push_back(trial(others[k], schemes[k]));
+      const bool better =
+          others[k].complete() && (!best.complete() || peak_ratio(others[k]) < peak_ratio(best));
+      if (better) best = std::move(others[k]);
+    }
+    for (InterpolationTrial& t : tried)
+      if (t.scheme != best.interpolation.used && t.note.empty())
+        t.note = "not the gentlest complete plan";
+  }
+  best.interpolation.tried = std::move(tried);
+  return best;
+}
+
+}  // namespace
+
+PlanResult plan_rod(const PlanProblem& problem,
+                    const PlanOptions& options,
+                    const plan_stages::InitialEquilibrium& initial) {
+  switch (options.interpolation) {
+    case ObjectiveInterpolation::Auto:
+      return gentlest_plan(problem, options, initial);
+    case ObjectiveInterpolation::Pose: {
+      PlanResult result = plan_by_pose(problem, options, initial, nullptr);
+      result.interpolation.tried = {trial(result, ObjectiveInterpolation::Pose)};
+      return result;
+    }
+    default: {
+      PlanResult result = plan_by_sets(problem, options, initial);
+      result.interpolation.tried = {trial(result, options.interpolation)};
+      return result;
+    }
+  }
+}
+
 }  // namespace detail
 
 double estimated_plan_seconds(const PlanProblem& problem, const PlanOptions& options) {
@@ -515,6 +629,10 @@ PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
     throw InputError("PlanOptions.track_between_waypoints",
                      " must be true with a scene: the rod is checked clear of it between "
                      "waypoints by following it");
+  if (options.interpolation == ObjectiveInterpolation::Pose &&
+      options.planned_steps() < options.steps)
+    throw InputError("PlanOptions.interpolation",
+                     " = pose plans the whole way: it cannot be used with a horizon");
   check_plan_cost(problem, options);
   if (problem.arm) return detail::plan_with_arm(problem, options);
   return detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));

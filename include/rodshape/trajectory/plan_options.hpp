@@ -41,8 +41,19 @@ enum class ObjectiveInterpolation {
   /// The paper's: p_init is the objective point's projection on the initial shape, then straight
   /// lines to p_obj.
   Projection,
+  /// The end-effector pose continued: the target's optimum first (the Shape steps' last, solved
+  /// without tracking), then the held rod followed along the end effector's straight path (position
+  /// on the line, rotation slerped) from the initial pose to that optimum's; the steps are the
+  /// followed equilibria at fractions i / n of that path (not optima of objective sets), the last
+  /// the target's optimum. Plans the whole way (no horizon).
+  Pose,
+  /// Shape, and where its tracked peak energy exceeds kGentleRatio × the larger end energy, or it
+  /// inserted steps, or it did not complete, also Pose and Projection: the gentlest complete plan
+  /// that reaches the target (PlanResult::interpolation says which and what was tried). With a
+  /// horizon, Shape alone.
+  Auto,
 };
-/// "shape", "arc_length", "projection"
+/// "shape", "arc_length", "projection", "pose", "auto"
 std::string to_string(ObjectiveInterpolation interpolation);
 
 struct PlanOptions {
@@ -61,7 +72,10 @@ struct PlanOptions {
   int horizon = 0;
   /// The steps plan() optimises: steps, or horizon when it cuts them short.
   int planned_steps() const { return horizon > 0 && horizon < steps ? horizon : steps; }
-  ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
+  ObjectiveInterpolation interpolation = ObjectiveInterpolation::Auto;
+  /// Auto: a plan whose tracked peak energy is at most this × the larger of its end energies is
+  /// gentle (no other scheme is tried).
+  static constexpr double kGentleRatio = 1.1;
   ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;
   bool track_between_waypoints = true;

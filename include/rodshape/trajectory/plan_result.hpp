@@ -18,6 +18,7 @@
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/intermediate_targets.hpp"
 #include "rodshape/trajectory/joint_trajectory.hpp"
+#include "rodshape/trajectory/plan_options.hpp"
 
 namespace rodshape {
 
@@ -117,6 +118,22 @@ struct ArmPlanResult {
   std::string brief() const { return to_string(status) + ": " + message; }
 };
 
+/// One way from the initial shape to the target that plan() tried (PlanOptions::interpolation).
+struct InterpolationTrial {
+  ObjectiveInterpolation scheme = ObjectiveInterpolation::Shape;
+  PlanStatus status = PlanStatus::Infeasible;
+  /// The tracked peak energy over the larger of the initial and final energies (NaN when the plan
+  /// has no step or was not tracked).
+  double peak_ratio = std::numeric_limits<double>::quiet_NaN();
+  std::string note;  // why it was not taken (empty for the one used)
+};
+
+/// Which way made the plan: the scheme used and, with Auto, every scheme tried.
+struct InterpolationResult {
+  ObjectiveInterpolation used = ObjectiveInterpolation::Shape;
+  std::vector<InterpolationTrial> tried;
+};
+
 struct PlanResult {
   PlanStatus status = PlanStatus::Infeasible;
   std::string message;
@@ -135,6 +152,7 @@ struct PlanResult {
   std::vector<PlanStep> steps;  // the steps that succeeded
   std::vector<TimedPose> end_effector_path;
   TrackingResult tracking;
+  InterpolationResult interpolation;
   std::optional<SceneResult> scene;  // when the problem has a scene
   std::optional<ArmPlanResult> arm;  // when the problem has an arm
 

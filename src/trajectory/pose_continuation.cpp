@@ -1,0 +1,179 @@
+// pose_continuation.cpp: the Pose plan of pose_continuation.hpp, in stages: follow_path (the held
+// rod along the straight end-effector path, the waypoint equilibria kept), path_step (a waypoint
+// as a step), then the plan's tracking and timing.
+#include "pose_continuation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/solvers/follow_equilibrium.hpp"
+#include "rodshape/solvers/stability.hpp"
+#include "scene_stages.hpp"
+
+namespace rodshape::pose_continuation {
+
+namespace {
+
+using plan_stages::SegmentTracking;
+
+/// The followed path, cut at the waypoints σ_i = i / n.
+struct FollowedPath {
+  FollowResult followed;
+  std::vector<BaseWrench> waypoint_wrench;  // at σ_1 … σ_n-1
+  std::vector<SegmentTracking> segments;  // per waypoint σ_1 … σ_n: peak energy, curvature, gap
+  std::optional<SceneGap> least;
+};
+
+/// The held rod from the initial pose to `goal`'s, `substeps` per waypoint, arriving on `goal`.
+FollowedPath follow_path(const PlanProblem& problem,
+                         const Pose& from,
+                         const BaseWrench& w,
+                         const PlanStep& goal,
+                         int waypoints,
+                         int substeps,
+                         const std::vector<double>* required,
+                         const RodConfiguration& start) {
+  FollowedPath path;
+  path.segments.resize(static_cast<std::size_t>(waypoints));
+  FollowOptions follow;
+  follow.substeps = waypoints * substeps;
+  follow.final_derivatives = Derivatives::AllNodes;
+  follow.arrival_stability = true;
+  std::optional<scene_stages::SweptGap> swept;
+  if (required) swept.emplace(problem.scene, *required, start.p);
+  int substep = 0;
+  follow.observer = [&](double, const RodConfiguration& c) {
+    SegmentTracking& segment = path.segments[static_cast<std::size_t>(substep / substeps)];
+    if (swept) {
+      const SceneGap gap = swept->add(c.p);
+      if (!segment.gap || gap.margin < segment.gap->margin) segment.gap = gap;
+      if (!path.least || gap.margin < path.least->margin) path.least = gap;
+      if (!gap.clear()) return false;
+    }
+    ++substep;
+    return true;
+  };
+  path.followed = follow_equilibrium(
+      problem.rod, plan_stages::commanded_segment(problem, from, goal.end_effector), w, follow,
+      &goal.solution.configuration, 1e-3);
+  for (std::size_t k = 0; k < path.followed.states.size(); ++k) {
+    const FollowedState& state = path.followed.states[k];
+    SegmentTracking& segment = path.segments[k / static_cast<std::size_t>(substeps)];
+    segment.peak_energy = std::max(segment.peak_energy, state.energy);
+    segment.peak_curvature = std::max(segment.peak_curvature, state.max_curvature);
+    if ((k + 1) % static_cast<std::size_t>(substeps) == 0 &&
+        path.waypoint_wrench.size() + 1 < static_cast<std::size_t>(waypoints))
+      path.waypoint_wrench.push_back(state.base_wrench);
+  }
+  return path;
+}
+
+/// The equilibrium at waypoint σ as a step: its cost terms those of the objective set `set`
+/// (the reference's way), its stability assessed (an unstable waypoint is no place to stop).
+PlanStep path_step(const PlanProblem& problem,
+                   const plan_stages::ObjectiveSet& set,
+                   const BaseWrench& w,
+                   const Pose& end_effector) {
+  ShapeTarget target = problem.target;
+  target.points = set.points;
+  ShapeProblem costs(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
+                     problem.wrench_bounds);
+  ShapeResult solution;
+  solution.status = SolveStatus::Converged;
+  solution.message = "an equilibrium on the end effector's straight path to the target's optimum";
+  solution.base_wrench = w;
+  solution.configuration = integrate(problem.rod, w, Derivatives::AllNodes);
+  costs.evaluate(w.to_vector());
+  solution.cost = costs.breakdown();
+  const Pose tip = compose(end_effector, inverse(problem.grasp.tip_to_end_effector));
+  solution.stability = assess_stability(problem.rod, solution.configuration,
+                                        plan_stages::held_tip(tip, problem.grasp));
+  return {set.fraction, false, false, set.points, std::move(solution), end_effector};
+}
+
+}  // namespace
+
+std::optional<PlanResult> plan(const PlanProblem& problem,
+                               const PlanOptions& options,
+                               const plan_stages::InitialEquilibrium& initial,
+                               const PlanResult& reference,
+                               Refusal& refusal) {
+  const PlanStep& goal = reference.steps.back();
+  const int n = options.steps;
+  const int substeps =
+      std::max(1, std::min(options.tracking_substeps, FollowOptions::kMaxSubsteps / n));
+  const Pose from = compose(initial.configuration.tip(), problem.grasp.tip_to_end_effector);
+  const std::vector<double> required =
+      problem.scene.empty() ? std::vector<double>{}
+                            : problem.scene.required_gaps(problem.rod.clamp.position);
+  const FollowedPath path =
+      follow_path(problem, from, initial.wrench, goal, n, substeps,
+                  problem.scene.empty() ? nullptr : &required, initial.configuration);
+  if (!path.followed.followed()) {
+    const bool scene = path.followed.event == FollowEvent::Stopped;
+    refusal.status = scene ? PlanStatus::Collision : PlanStatus::SnapThrough;
+    refusal.why =
+        "the rod cannot follow the end effector's straight path to the target's optimum: " +
+        (scene ? "it would come within " + std::to_string(path.least->gap * 1e3) +
+                     " mm of obstacle " +
+                     problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
+                         path.least->obstacle)
+               : path.followed.message);
+    return std::nullopt;
+  }
+  PlanResult result;
+  result.status = PlanStatus::Complete;
+  result.message = "complete: " + std::to_string(n) +
+                   " steps on the end effector's straight path to the target's optimum";
+  result.feasibility = reference.feasibility;
+  result.initial_wrench = initial.wrench;
+  result.initial_configuration = initial.configuration;
+  result.initial_stable_search = initial.stable_search;
+  result.initial_points = reference.initial_points;
+  plan_stages::ObjectivePath sets{problem.rod.clamp.position, reference.initial_points,
+                                  problem.target.points, ObjectiveInterpolation::Shape};
+  for (int i = 1; i < n; ++i) {
+    const double sigma = static_cast<double>(i) / n;
+    result.steps.push_back(path_step(problem, {sigma, sets.at(sigma)},
+                                     path.waypoint_wrench[static_cast<std::size_t>(i - 1)],
+                                     interpolate(from, goal.end_effector, sigma)));
+    if (!result.steps.back().solution.stability->stable) {
+      refusal.why = "the end effector's straight path passes an unstable equilibrium at " +
+                    std::to_string(sigma) + " of the way";
+      return std::nullopt;
+    }
+  }
+  result.steps.push_back(goal);
+  for (std::size_t k = 0; k < path.segments.size(); ++k) {
+    SegmentTracking segment = path.segments[k];
+    segment.arrived =
+        k + 1 < path.segments.size() ? path.waypoint_wrench[k] : path.followed.base_wrench;
+    segment.deviation = k + 1 < path.segments.size() ? 0.0 : path.followed.arrival_deviation;
+    plan_stages::record(result.tracking, segment, static_cast<int>(k));
+  }
+  result.tracking.note = "the rod follows the plan (the end effector's straight path)";
+  if (!problem.scene.empty()) {
+    result.scene = SceneResult{};
+    result.scene->clearance = problem.scene.clearance;
+    if (path.least) {
+      result.scene->min_gap = path.least->gap;
+      result.scene->margin = path.least->margin;
+      result.scene->step =
+          1 + static_cast<int>(std::find_if(path.segments.begin(), path.segments.end(),
+                                            [&](const SegmentTracking& s) {
+                                              return s.gap && s.gap->margin == path.least->margin;
+                                            }) -
+                               path.segments.begin());
+      result.scene->s = (path.least->segment + path.least->t) * problem.rod.step();
+      result.scene->obstacle = path.least->obstacle;
+      result.scene->obstacle_label =
+          problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
+              path.least->obstacle);
+    }
+  }
+  result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
+  return result;
+}
+
+}  // namespace rodshape::pose_continuation

@@ -1,0 +1,33 @@
+// pose_continuation.hpp (private): the plan of ObjectiveInterpolation::Pose. The target's optimum
+// comes from a plan by objective sets (its last step); the held rod is then followed along the end
+// effector's straight path from the initial pose to that optimum's, and the equilibria at the
+// fractions i / n of the path are the steps (the last one the optimum itself). A straight tip-pose
+// continuation rarely bends the rod beyond its end shapes: where the sets' optima coil the rod on
+// the way (a helix wound from straight), it stays at its end energies.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "plan_stages.hpp"
+#include "rodshape/trajectory/plan.hpp"
+
+namespace rodshape::pose_continuation {
+
+/// Why the path was not taken: SnapThrough (the rod lost, unstable, or arriving on another
+/// equilibrium than the optimum) or Collision (nearer to an obstacle than it requires).
+struct Refusal {
+  PlanStatus status = PlanStatus::SnapThrough;
+  std::string why;
+};
+
+/// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
+/// last step (a plan by objective sets that reached the target, tracked or not); nullopt, with
+/// `refusal`, when the rod cannot be followed there.
+std::optional<PlanResult> plan(const PlanProblem& problem,
+                               const PlanOptions& options,
+                               const plan_stages::InitialEquilibrium& initial,
+                               const PlanResult& reference,
+                               Refusal& refusal);
+
+}  // namespace rodshape::pose_continuation
