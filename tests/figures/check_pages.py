@@ -87,7 +87,7 @@ def find_pages(arguments):
 
 def browser():
     options = Options()
-    for flag in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1280,800",
+    for flag in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1200,720",
                  "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-gpu-sandbox",
                  "--hide-scrollbars", "--force-device-scale-factor=1"):
         options.add_argument(flag)

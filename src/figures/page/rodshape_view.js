@@ -161,7 +161,7 @@
   // Looking at the rod (with an arm, the scene is the arm's size and the rod a small part of it).
   var rodBox = bounds({ initial: data.initial, target: data.target, steps: data.steps, clamp: data.clamp, arm: null, obstacles: [] });
   var centre = new THREE.Vector3(rodBox.centre[0], rodBox.centre[1], rodBox.centre[2]);
-  var reach = data.arm ? 0.45 * box.span + 0.6 * rodBox.span : box.span;
+  var reach = data.arm ? 0.65 * box.span + 0.4 * rodBox.span : box.span;
   camera.position.set(centre.x + 0.8 * reach, centre.y - 1.9 * reach, centre.z + 0.7 * reach);
   var orbit = new THREE.OrbitControls(camera, renderer.domElement);
   orbit.target.copy(centre);
