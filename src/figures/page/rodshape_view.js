@@ -285,7 +285,7 @@
     dots(s.objective, stepColour(k, nSteps), 4);
   });
   if (nSteps > 0) tube(data.steps[nSteps - 1].shape, drawRadius, finalColour, 0.35);
-  dots(data.target, 0xd62728, 9, true);
+  dots(data.target, 0xd62728, 7, true);
   if (data.target.length > 1) line([data.clamp].concat(data.target), 0xd62728, 0.5);
   ball(data.clamp, Math.max(markRadius, 1.2 * drawRadius), 0x222222);
   if (data.path.p.length > 1) line(data.path.p, 0x555555, 0.6);
