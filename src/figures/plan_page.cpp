@@ -13,6 +13,7 @@
 #include "figures/svg_drawing.hpp"
 #include "overloaded.hpp"
 #include "rodshape/figures/figures.hpp"
+#include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/robot/arm_placement.hpp"
 #include "rodshape/version.hpp"
 
@@ -168,6 +169,10 @@ json plan_data(const PlanResult& plan, const PlanProblem& problem, const FigureC
   data["clamp"] = point(problem.rod.clamp.position);
   data["initial"] = shape(plan.initial_configuration);
   data["target"] = points(problem.target.points);
+  // The target's B-spline, as the feasibility check fits it: 10 samples between points.
+  data["target_curve"] = points(sample_target_curve(
+      problem.target, problem.rod.clamp.position,
+      std::min(10 * static_cast<int>(problem.target.points.size()) + 1, kPageMaxPathSamples)));
   data["initial_points"] = points(plan.initial_points);
   // Keyframes: the initial rod at t = 0, then the steps at the times the path reaches them.
   const std::vector<double> times = step_times(plan, length);

@@ -162,6 +162,17 @@ TEST(PlanHtml, OnePageWithTheSignatureAndTheData) {
   EXPECT_LT(data["steps"][0]["t"].get<double>(), data["steps"][2]["t"].get<double>());
   EXPECT_DOUBLE_EQ(data["steps"][2]["t"].get<double>(), plan.end_effector_path.back().t);
   EXPECT_DOUBLE_EQ(data["duration"].get<double>(), plan.end_effector_path.back().t);
+  // The target's B-spline: from the clamp to the last target point, through the others.
+  const Json& curve = data["target_curve"];
+  ASSERT_EQ(curve.size(), 31u);
+  const auto at = [](const Json& p) { return Eigen::Vector3d(p[0], p[1], p[2]); };
+  EXPECT_LT((at(curve.front()) - task.problem.rod.clamp.position).norm(), 1e-6);
+  EXPECT_LT((at(curve.back()) - task.problem.target.points.back()).norm(), 1e-6);
+  for (const Eigen::Vector3d& p : task.problem.target.points) {
+    double nearest = 1.0;
+    for (const Json& q : curve) nearest = std::min(nearest, (at(q) - p).norm());
+    EXPECT_LT(nearest, 0.02);  // a sample within a chord's tenth of each point
+  }
   EXPECT_TRUE(data["arm"].is_null());
   EXPECT_TRUE(data["validation"].is_null());
   EXPECT_NE(html.find("window.rodshape ="), std::string::npos);  // the view's code

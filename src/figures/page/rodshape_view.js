@@ -221,7 +221,8 @@
   function dots(points, colour, size, onTop) {
     if (points.length === 0) return null;
     var g = new THREE.BufferGeometry().setFromPoints(points.map(v3));
-    var m = new THREE.PointsMaterial({ color: colour, size: size, sizeAttenuation: false, depthTest: !onTop });
+    // On top: in the see-through pass (after the see-through tubes), last, without a depth test.
+    var m = new THREE.PointsMaterial({ color: colour, size: size, sizeAttenuation: false, depthTest: !onTop, transparent: Boolean(onTop) });
     var p = new THREE.Points(g, m);
     if (onTop) p.renderOrder = 10;
     scene.add(p);
@@ -286,7 +287,7 @@
   });
   if (nSteps > 0) tube(data.steps[nSteps - 1].shape, drawRadius, finalColour, 0.35);
   dots(data.target, 0xd62728, 7, true);
-  if (data.target.length > 1) line([data.clamp].concat(data.target), 0xd62728, 0.5);
+  if (data.target_curve.length > 1) line(data.target_curve, 0xd62728, 0.6);
   ball(data.clamp, Math.max(markRadius, 1.2 * drawRadius), 0x222222);
   if (data.path.p.length > 1) line(data.path.p, 0x555555, 0.6);
 
@@ -314,6 +315,21 @@
     plantMesh = tube(run.plant_final, drawRadius, 0x2ca02c, 0.75);
     if (run.markers.length > 0) markerMeshes.push(dots(run.markers, 0x111111, 7, true));
     drawPlot();
+    listCheckpoints(run);
+  }
+
+  /** A closed-loop run's checkpoints: when, at which waypoint, what the loop did. */
+  function listCheckpoints(run) {
+    if (!checkpointList) return;
+    checkpointList.textContent = '';
+    if (run.checkpoints.length === 0) return;
+    element('h2', {}, checkpointList, 'Checkpoints (' + run.checkpoints.length + ')');
+    run.checkpoints.forEach(function (c) {
+      element('div', { 'class': 'checkpoint' }, checkpointList,
+        't = ' + c.t.toFixed(2) + ' s, waypoint ' + c.waypoint + ': ' +
+        (c.replanned ? 're-planned' : 'kept') + (c.consistent ? '' : ' (estimate not consistent)') +
+        (c.message ? ' \u2014 ' + c.message : ''));
+    });
   }
 
   // ---- side panel: legend, run selector, plot ---------------------------------------------------
@@ -331,6 +347,7 @@
     legendRow(hex(finalColour), 'final rod (step ' + nSteps + ')');
   }
   legendRow('#d62728', 'target points', true);
+  if (data.target_curve.length > 1) legendRow('#e88a8b', "the target's B-spline");
   legendRow('#222222', 'clamp', true);
   legendRow('#555555', 'end-effector path');
   if (data.arm) legendRow('#6c7a89', 'arm (' + data.arm.name + '): links between joint frames');
@@ -351,6 +368,7 @@
   element('h2', {}, side, data.validation ? 'Errors over time (mm, log)' : 'Elastic energy at the steps (J)');
   var plot = element('canvas', { id: 'rs-plot', width: '250', height: '150' }, side);
   var plotNote = element('div', { 'class': 'note' }, side, '');
+  var checkpointList = data.validation ? element('div', { id: 'rs-checkpoints' }, side) : null;
   element('h2', {}, side, 'Mouse');
   element('div', {}, side, 'drag: turn; right-drag: pan; wheel: zoom. Grid lines every ' +
     (gridStep >= 1 ? gridStep + ' m' : Math.round(gridStep * 1000) + ' mm') + '.');
