@@ -12,6 +12,7 @@
 Each function returns the figure (or the files written); nothing is shown. scripts/plot_plan.py is
 the command-line face of plan_directory_figures.
 """
+import io
 import json
 import os
 import secrets
@@ -27,8 +28,11 @@ DEFAULT_URDF = Path(__file__).resolve().parents[2] / "data" / "robots" / "panda.
 
 
 try:
-    from ._rodshape import InputError  # the package's one exception for bad input
+    # The package's one exception for bad input, and the CLI's own file writer.
+    from ._rodshape import InputError, write_file_atomically
 except ImportError:  # this file loaded on its own (scripts/plot_plan.py), without the module
+    write_file_atomically = None
+
     class InputError(ValueError):
         """A plan directory that cannot be drawn (the message says why)."""
 
@@ -219,11 +223,20 @@ def plot_path(path, waypoint_rows):
 
 
 def save(fig, path):
-    """Writes fig to path whole or not at all: a temporary file in the same directory, renamed.
-    The temporary file is created as open() would (mode 0666 less the umask, which the system
-    applies: the process's umask is neither read nor changed)."""
+    """Writes fig to path whole or not at all, with the package's write_file_atomically (as the
+    CLI writes its files) or, loaded on its own, a temporary file in the same directory created as
+    open() would (mode 0666 less the umask, which the system applies: the process's umask is
+    neither read nor changed), renamed."""
     if not fig.get_constrained_layout():
         fig.tight_layout()
+    if write_file_atomically is not None:
+        png = io.BytesIO()
+        try:
+            fig.savefig(png, format="png", dpi=DPI)
+        finally:
+            plt.close(fig)
+        write_file_atomically(str(path), png.getvalue())
+        return path
     temporary = path.parent / f".{path.name}.{secrets.token_hex(6)}.tmp"
     fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
     try:

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
@@ -170,6 +171,14 @@ void bind_outcomes(py::module_& m) {
 }  // namespace
 
 void bind_io(py::module_& m) {
+  m.def(
+      "write_file_atomically",
+      [](const std::string& path, const py::bytes& content) {
+        write_file_atomically(path, std::string(content));
+      },
+      py::arg("path"), py::arg("content"),
+      "Writes the bytes `content` to `path` whole or not at all, as the CLI writes its files (a "
+      "device, a FIFO or a link is written through, never replaced); InputError on failure.");
   m.def("html_unavailable", &html_unavailable,
         "Why the 3D pages (plan.html, validation.html) cannot be written: three.js not found "
         "(Debian: libjs-three); \"\" when they can.");

@@ -229,15 +229,24 @@ def test_plot_saves_like_open(tmp_path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from rodshape import plot
-    fig, ax = plt.subplots()
-    ax.plot([0, 1], [0, 1])
-    old = os.umask(0o027)
-    try:
-        plot.save(fig, tmp_path / "line.png")
-    finally:
-        os.umask(old)
-    assert (tmp_path / "line.png").stat().st_mode & 0o777 == 0o640
-    assert [p.name for p in tmp_path.iterdir()] == ["line.png"]  # no temporary left
+    import importlib.util
+    assert plot.write_file_atomically is rodshape.write_file_atomically  # the CLI's writer
+    # And loaded on its own (scripts/plot_plan.py), without the compiled module: its own writer.
+    spec = importlib.util.spec_from_file_location("plot_alone", SOURCE / "python" / "rodshape" / "plot.py")
+    alone = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(alone)
+    assert alone.write_file_atomically is None
+    for module, name in ((plot, "line.png"), (alone, "alone.png")):
+        fig, ax = plt.subplots()
+        ax.plot([0, 1], [0, 1])
+        old = os.umask(0o027)
+        try:
+            module.save(fig, tmp_path / name)
+        finally:
+            os.umask(old)
+        assert (tmp_path / name).stat().st_mode & 0o777 == 0o640
+        assert (tmp_path / name).read_bytes().startswith(b"\x89PNG")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["alone.png", "line.png"]  # no temporary
 
 
 def test_optimise_shape_passes_through_points_of_a_reachable_shape():
