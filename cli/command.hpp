@@ -3,6 +3,10 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+
+#include "rodshape/io/plan_output.hpp"
 
 namespace rodshape::cli {
 
@@ -15,5 +19,15 @@ class Command {
   /// rodshape::InputError, which main() prints as one line and turns into kBadInput.
   virtual int run() = 0;
 };
+
+/// Unless `no_html`: a warning on standard error when the 3D pages cannot be written (three.js
+/// missing: html_unavailable()); the SVG figures are written as ever.
+inline void warn_without_html(bool no_html) {
+  if (no_html) return;
+  const std::string why = html_unavailable();
+  if (!why.empty())
+    std::cerr << "warning: the 3D pages (plan.html, validation.html) are not written: " << why
+              << "; the SVG figures are\n";
+}
 
 }  // namespace rodshape::cli

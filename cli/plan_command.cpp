@@ -57,7 +57,9 @@ class PlanCommand final : public Command {
         "plan",
         "Plan the rod's deformation towards a target shape (objective points): n_inter optimal "
         "shapes, each warm-started from the last, and the timed end-effector path through their "
-        "tip poses. Writes OUTDIR/plan.json, OUTDIR/trajectory.csv and OUTDIR/plan.svg; with a "
+        "tip poses. Writes OUTDIR/plan.json, OUTDIR/trajectory.csv, OUTDIR/plan.svg and the 3D "
+        "page "
+        "OUTDIR/plan.html (docs/figures.md); with a "
         "robot section, also the joint trajectory OUTDIR/joint_trajectory.csv and "
         "OUTDIR/joint_trajectory.json.");
     command->add_option("task", task_path_, "Task file (YAML); format in docs/task-file.md")
@@ -70,6 +72,8 @@ class PlanCommand final : public Command {
         ->required()
         ->type_name("OUTDIR");
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
+    command->add_flag("--no-html", no_html_,
+                      "Do not write plan.html (the 3D page, which inlines Debian's libjs-three)");
     return command;
   }
 
@@ -88,7 +92,9 @@ class PlanCommand final : public Command {
       throw InputError(task.locate(error));
     }
     if (result.status == PlanStatus::Infeasible) throw task.infeasible_target(result);
-    const std::vector<std::string> written = write_plan(output_directory_, result, task);
+    warn_without_html(no_html_);
+    const std::vector<std::string> written =
+        write_plan(output_directory_, result, task, {.html = !no_html_});
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief(task.options.steps))
                 << "; wrote";
@@ -103,6 +109,7 @@ class PlanCommand final : public Command {
   std::string task_path_;
   std::string output_directory_;
   bool quiet_ = false;
+  bool no_html_ = false;
 };
 
 }  // namespace

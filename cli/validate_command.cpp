@@ -44,7 +44,7 @@ class ValidateCommand final : public Command {
         "Plan the task, then carry the plan out in simulation: the real rod (the task's plant "
         "section) driven along the commanded path and seen by the sensors (its sensor section). "
         "Writes OUTDIR/validation.json, OUTDIR/validation.csv (the errors over time) and "
-        "OUTDIR/validation.svg, besides the plan's files.");
+        "OUTDIR/validation.svg and the 3D page OUTDIR/validation.html, besides the plan's files.");
     command->add_option("task", task_path_, "Task file (YAML); format in docs/task-file.md")
         ->required()
         ->type_name("TASK.yaml");
@@ -67,6 +67,8 @@ class ValidateCommand final : public Command {
                       "Close the loop: at each waypoint, estimate the rod from the sensors and "
                       "re-plan the rest (the task's closed_loop section)");
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
+    command->add_flag("--no-html", no_html_,
+                      "Do not write plan.html and validation.html (the 3D pages)");
     command->footer(
         "Exit codes: 0 the plant followed the whole path; 2 bad input (task file, command line, "
         "output path, an infeasible target): nothing written or removed; 3 the plant snapped, was "
@@ -103,7 +105,7 @@ class ValidateCommand final : public Command {
       std::cerr << "error: " << task_path_
                 << ": nothing to validate: " << fields_in_task_names(plan.brief(task.options.steps))
                 << "\n";
-      write_plan(output_directory_, plan, task);
+      write_plan(output_directory_, plan, task, {.html = !no_html_});
       remove_earlier_outputs(output_directory_, validation_file_names());
       return kPartialPlan;
     }
@@ -114,8 +116,11 @@ class ValidateCommand final : public Command {
     } catch (const InputError& error) {
       throw InputError(task.locate(error));
     }
-    std::vector<std::string> written = write_plan(output_directory_, plan, task);
-    for (const std::string& name : write_validation(output_directory_, result, plan, task))
+    warn_without_html(no_html_);
+    std::vector<std::string> written =
+        write_plan(output_directory_, plan, task, {.html = !no_html_});
+    for (const std::string& name :
+         write_validation(output_directory_, result, plan, task, {.html = !no_html_}))
       written.push_back(name);
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief()) << "; wrote";
@@ -135,6 +140,7 @@ class ValidateCommand final : public Command {
   ValidationOptions options_;
   std::string seed_ = "1";
   bool quiet_ = false;
+  bool no_html_ = false;
 };
 
 }  // namespace

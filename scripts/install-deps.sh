@@ -16,6 +16,8 @@ packages=(
   python3                  # test helpers
   pybind11-dev python3-dev # the Python package (python/)
   python3-numpy python3-pytest python3-matplotlib  # its arrays, tests and figures
+  libjs-three              # plan.html, validation.html: three.js, inlined when a page is written
+  chromium chromium-driver python3-selenium  # the pages' test in a real browser (.ci/run, 3b)
 )
 
 missing=()

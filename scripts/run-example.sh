@@ -3,7 +3,7 @@
 # examples of the paper's rubber band: its equilibrium clamped at both ends
 # (examples/rubber_band.yaml → out/rubber_band.json), then the main job, a plan that bends it into an
 # S in seven optimal steps (examples/plan_s_curve.yaml → out/plan_s_curve/: plan.json,
-# trajectory.csv, plan.svg). One summary line each.
+# trajectory.csv, plan.svg, plan.html). One summary line each.
 # Usage: bash scripts/run-example.sh       (as root, or with sudo available)
 # RODSHAPE_JOBS sets the number of parallel compile jobs (default 2).
 set -euo pipefail

@@ -5,7 +5,7 @@ a wanted shape, and check the plan in simulation.
     task = rodshape.load_task("examples/plan_c_arc.yaml")
     plan = rodshape.plan(task)              # as `rodshape plan`
     print(plan.brief(), plan.steps[-1].configuration.positions.shape)
-    plan.write("out/c_arc")                 # plan.json, trajectory.csv, plan.svg
+    plan.write("out/c_arc")                 # plan.json, trajectory.csv, plan.svg, plan.html
 
 Arrays are numpy float64 in SI units: positions (N+1, 3), rotations (N+1, 3, 3), wrenches (3,).
 Bad input raises rodshape.InputError (a ValueError) with the library's one-line message.

@@ -12,11 +12,10 @@
 Each function returns the figure (or the files written); nothing is shown. scripts/plot_plan.py is
 the command-line face of plan_directory_figures.
 """
-import argparse
+import io
 import json
 import os
-import sys
-import tempfile
+import secrets
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -24,15 +23,16 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 DPI = 150
-UMASK = os.umask(0)
-os.umask(UMASK)
 # The bundled Panda, when this file is run from a source tree.
 DEFAULT_URDF = Path(__file__).resolve().parents[2] / "data" / "robots" / "panda.urdf"
 
 
 try:
-    from ._rodshape import InputError  # the package's one exception for bad input
+    # The package's one exception for bad input, and the CLI's own file writer.
+    from ._rodshape import InputError, write_file_atomically
 except ImportError:  # this file loaded on its own (scripts/plot_plan.py), without the module
+    write_file_atomically = None
+
     class InputError(ValueError):
         """A plan directory that cannot be drawn (the message says why)."""
 
@@ -131,7 +131,8 @@ def plot_joints(outdir, urdf, waypoint_rows, path_samples):
     # stretched where the arm was slowed), so the waypoints arrive at the same rows.
     times = t[waypoint_rows] if len(t) == path_samples else []
 
-    fig, (ax_q, ax_v) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
+    # Constrained layout keeps the legends beside the axes inside the figure.
+    fig, (ax_q, ax_v) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True, layout="constrained")
     # (margin to a limit, joint) and (|q̇| / limit, joint) at the worst sample
     closest, fastest = (np.inf, None), (0.0, None)
     for j, name in enumerate(names):
@@ -222,13 +223,25 @@ def plot_path(path, waypoint_rows):
 
 
 def save(fig, path):
-    """Writes fig to path whole or not at all: a temporary file in the same directory, renamed."""
-    fig.tight_layout()
-    fd, temporary = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    os.close(fd)
+    """Writes fig to path whole or not at all, with the package's write_file_atomically (as the
+    CLI writes its files) or, loaded on its own, a temporary file in the same directory created as
+    open() would (mode 0666 less the umask, which the system applies: the process's umask is
+    neither read nor changed), renamed."""
+    if not fig.get_constrained_layout():
+        fig.tight_layout()
+    if write_file_atomically is not None:
+        png = io.BytesIO()
+        try:
+            fig.savefig(png, format="png", dpi=DPI)
+        finally:
+            plt.close(fig)
+        write_file_atomically(str(path), png.getvalue())
+        return path
+    temporary = path.parent / f".{path.name}.{secrets.token_hex(6)}.tmp"
+    fd = os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
     try:
-        os.chmod(temporary, 0o666 & ~UMASK)  # mkstemp's 0600, made what open() would give
-        fig.savefig(temporary, format="png", dpi=DPI)
+        with os.fdopen(fd, "wb") as f:
+            fig.savefig(f, format="png", dpi=DPI)
         os.replace(temporary, path)
     except BaseException:
         os.unlink(temporary)
@@ -293,9 +306,25 @@ def _steps_of(plan):
     return initial, steps, steps[-1][1] if steps else np.empty((0, 3))
 
 
+def set_equal_scales(ax, points):
+    """One scale on the three axes of a 3-D `ax`, a cube around `points` (n × 3): a planar plan
+    keeps a flat axis of the rod's size instead of an autoscaled ±1e-14 m."""
+    points = np.asarray(points, float).reshape(-1, 3)
+    points = points[np.isfinite(points).all(axis=1)]
+    if not len(points):
+        return
+    low, high = points.min(axis=0), points.max(axis=0)
+    centre, half = 0.5 * (low + high), 0.55 * max((high - low).max(), 1e-3)
+    ax.set_xlim(centre[0] - half, centre[0] + half)
+    ax.set_ylim(centre[1] - half, centre[1] + half)
+    ax.set_zlim(centre[2] - half, centre[2] + half)
+    ax.set_box_aspect((1, 1, 1))
+
+
 def plan_steps(plan, ax=None):
-    """The rod at every step of `plan` (a Plan, PlanResult or plan.json dict) in 3D (grey: the initial rod; a colour ramp from the first
-    step to the last), each step's objective points as dots and the target's as red crosses."""
+    """The rod at every step of `plan` (a Plan, PlanResult or plan.json dict) in 3D (grey: the
+    initial rod; a colour ramp from the first step to the last), each step's objective points as
+    dots and the target's as red crosses, at one scale on the three axes."""
     if ax is None:
         fig = plt.figure(figsize=(6, 6))
         ax = fig.add_subplot(projection="3d")
@@ -311,6 +340,10 @@ def plan_steps(plan, ax=None):
     if len(target):
         ax.scatter(target[:, 0], target[:, 1], target[:, 2], color="#d62728", marker="x",
                    label="target")
+    drawn = [p for p in [initial, target] + [s for step in steps for s in step]
+             if p is not None and len(p)]
+    if drawn:
+        set_equal_scales(ax, np.concatenate([np.asarray(p, float).reshape(-1, 3) for p in drawn]))
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     ax.set_zlabel("z (m)")
@@ -335,16 +368,14 @@ def validation_errors(validation, ax=None):
     return ax.figure
 
 
-
-
 def joint_trajectory(plan, axes=None):
     """The joint positions and velocities of a rodshape.Plan with an arm, as fractions of the
     arm's limits (dashed: the limits), over time. Raises ValueError for a plan without an arm."""
     joints, arm = plan.result.joints, plan.task.arm
     if joints is None or arm is None:
         raise ValueError("the plan has no arm (no robot section), so no joint trajectory")
-    if axes is None:
-        _, axes = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
+    if axes is None:  # constrained layout keeps the legend beside the axes inside the figure
+        _, axes = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True, layout="constrained")
     ax_q, ax_v = axes
     lower, upper, velocity = arm.lower_limits, arm.upper_limits, arm.velocity_limits
     t, q, qdot = joints.t, joints.q, joints.qdot

@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
@@ -137,10 +138,12 @@ void bind_outcomes(py::module_& m) {
       .def("to_json", &Plan::to_json, "The plan.json document `rodshape plan` writes.")
       .def(
           "write",
-          [](const Plan& p, const std::string& directory) {
-            return write_plan(directory, p.result, p.task);
+          [](const Plan& p, const std::string& directory, bool html) {
+            return write_plan(directory, p.result, p.task, {.html = html});
           },
-          py::arg("directory"), "Writes the files `rodshape plan` writes; returns their names.");
+          py::arg("directory"), py::arg("html") = true,
+          "Writes the files `rodshape plan` writes (plan.html unless html=False, and when three.js "
+          "is installed: rodshape.html_unavailable()); returns their names.");
   py::class_<Validation>(m, "Validation", "What `rodshape validate` computes for a task.")
       .def_readonly("plan", &Validation::plan)
       .def_property_readonly("status",
@@ -154,18 +157,31 @@ void bind_outcomes(py::module_& m) {
       .def("to_json", &Validation::to_json, "The validation.json document.")
       .def(
           "write",
-          [](const Validation& v, const std::string& directory) {
-            std::vector<std::string> names = write_plan(directory, v.plan, v.task);
-            for (std::string& name : write_validation(directory, v.result, v.plan, v.task))
+          [](const Validation& v, const std::string& directory, bool html) {
+            std::vector<std::string> names = write_plan(directory, v.plan, v.task, {.html = html});
+            for (std::string& name :
+                 write_validation(directory, v.result, v.plan, v.task, {.html = html}))
               names.push_back(std::move(name));
             return names;
           },
-          py::arg("directory"), "Writes the files `rodshape validate` writes.");
+          py::arg("directory"), py::arg("html") = true,
+          "Writes the files `rodshape validate` writes (the HTML pages unless html=False).");
 }
 
 }  // namespace
 
 void bind_io(py::module_& m) {
+  m.def(
+      "write_file_atomically",
+      [](const std::string& path, const py::bytes& content) {
+        write_file_atomically(path, std::string(content));
+      },
+      py::arg("path"), py::arg("content"),
+      "Writes the bytes `content` to `path` whole or not at all, as the CLI writes its files (a "
+      "device, a FIFO or a link is written through, never replaced); InputError on failure.");
+  m.def("html_unavailable", &html_unavailable,
+        "Why the 3D pages (plan.html, validation.html) cannot be written: three.js not found "
+        "(Debian: libjs-three); \"\" when they can.");
   bind_tasks(m);
   bind_outcomes(m);
   m.def("solve", &solve_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),

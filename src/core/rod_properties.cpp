@@ -10,13 +10,12 @@
 namespace rodshape {
 
 std::string to_string(ConstitutiveModel model) {
-  return model == ConstitutiveModel::Cosserat ? "cosserat" : "kirchhoff";
+  return std::string(name_of(kConstitutiveModelNames, model));
 }
 
 ConstitutiveModel constitutive_model_from_string(const std::string& name,
                                                  const std::string& field) {
-  if (name == "cosserat") return ConstitutiveModel::Cosserat;
-  if (name == "kirchhoff") return ConstitutiveModel::Kirchhoff;
+  if (const auto model = value_of(kConstitutiveModelNames, name)) return *model;
   throw InputError(field, " = '" + name + "' must be 'cosserat' or 'kirchhoff'");
 }
 

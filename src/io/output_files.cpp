@@ -62,8 +62,6 @@ bool is_joint_header(std::string_view line) {
 
 std::string generator_signature() { return "rodshape " + version(); }
 
-std::string svg_signature_comment() { return "<!-- generator: " + generator_signature() + " -->"; }
-
 bool is_rodshape_output(const std::string& path) {
   std::error_code error;
   if (!fs::is_regular_file(path, error)) return false;
@@ -71,7 +69,8 @@ bool is_rodshape_output(const std::string& path) {
   const std::string name = fs::path(path).filename().string();
   const std::string extension = fs::path(path).extension().string();
   if (extension == ".json") return has_json_signature(head);
-  if (extension == ".svg") return head.find("<!-- generator: rodshape") != std::string::npos;
+  if (extension == ".svg" || extension == ".html")
+    return head.find("<!-- generator: rodshape") != std::string::npos;
   const std::string_view header = first_line(head);
   if (name == "trajectory.csv") return header == "t,x,y,z,qw,qx,qy,qz";
   if (name == "validation.csv")

@@ -1,5 +1,6 @@
 // plan_writer.cpp: which files a plan writes into its output directory (see plan_output.hpp).
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,9 @@ void make_directory(const std::string& directory) {
 }  // namespace
 
 const std::vector<std::string>& plan_file_names() {
-  static const std::vector<std::string> names = {"plan.json", "trajectory.csv", "plan.svg",
-                                                 "joint_trajectory.csv", "joint_trajectory.json"};
+  static const std::vector<std::string> names = {
+      "plan.json", "trajectory.csv",       "plan.svg",
+      "plan.html", "joint_trajectory.csv", "joint_trajectory.json"};
   return names;
 }
 
@@ -42,9 +44,21 @@ void check_output_directory(const std::string& directory) {
     throw InputError(directory + ": cannot create the output directory: it is not a directory");
 }
 
+FigureCaption figure_caption(const PlanTask& task) { return {task.source, task.options.steps}; }
+
+std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
+  return plan_svg(plan, task.problem, figure_caption(task));
+}
+
+std::string html_unavailable() {
+  std::string why;
+  return load_page_library(&why) ? std::string() : why;
+}
+
 std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
-                                    const PlanTask& task) {
+                                    const PlanTask& task,
+                                    const FigureFiles& figures) {
   make_directory(directory);
   const fs::path dir(directory);
   std::vector<std::string> written;
@@ -63,6 +77,12 @@ std::vector<std::string> write_plan(const std::string& directory,
     remove("trajectory.csv");
     remove("plan.svg");
   }
+  const std::optional<PageLibrary> library =
+      figures.html && plan.status != PlanStatus::Infeasible ? load_page_library() : std::nullopt;
+  if (library)
+    write("plan.html", plan_html(plan, task.problem, figure_caption(task), *library));
+  else
+    remove("plan.html");
   if (plan.arm && plan.arm->joints.complete()) {
     write("joint_trajectory.csv", joint_trajectory_csv(plan.arm->joints));
     write("joint_trajectory.json", joint_trajectory_json(plan.arm->joints));

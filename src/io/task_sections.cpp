@@ -116,7 +116,7 @@ RodSection read_rod_section(const YamlField& rod) {
     if (result.nodes > kMaxNodes) nodes.fail_value("must be <= " + std::to_string(kMaxNodes));
   }
   if (const YamlField model = rod.get("model"); model.present()) {
-    const std::string name = model.choice({"cosserat", "kirchhoff"});
+    const std::string name = model.choice(names_of(kConstitutiveModelNames));
     description.model =
         model.located([&] { return constitutive_model_from_string(name, model.path()); });
   }

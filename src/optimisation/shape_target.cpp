@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <unsupported/Eigen/Splines>
 
@@ -61,6 +62,40 @@ double spline_length(const Eigen::Spline3d& spline, double a, double b) {
     }
   }
   return length;
+}
+
+/// The chord-length cubic B-spline from the clamp through the target's points. Points that repeat
+/// the previous one are dropped (a zero chord would make the interpolation singular); `owner`
+/// maps the spline's data points back to target.points (-1 for the clamp). No spline (nullopt)
+/// when fewer than two data points remain.
+struct TargetSpline {
+  std::optional<Eigen::Spline3d> spline;
+  Eigen::Spline3d::KnotVectorType parameters;
+  std::vector<int> owner;
+};
+
+TargetSpline fit_target_spline(const ShapeTarget& target,
+                               const Eigen::Vector3d& clamp,
+                               double length_scale) {
+  TargetSpline fitted;
+  std::vector<Eigen::Vector3d> data{clamp};
+  fitted.owner = {-1};
+  const double repeat = 1e-12 * std::max(length_scale, 1.0);
+  for (std::size_t i = 0; i < target.points.size(); ++i) {
+    if ((target.points[i] - data.back()).norm() > repeat) {
+      data.push_back(target.points[i]);
+      fitted.owner.push_back(static_cast<int>(i));
+    }
+  }
+  const int n = static_cast<int>(data.size());
+  if (n < 2) return fitted;
+  Eigen::Matrix3Xd points(3, n);
+  for (int j = 0; j < n; ++j) points.col(j) = data[j];
+  Eigen::ChordLengths(points, fitted.parameters);
+  const int degree = std::min(3, n - 1);
+  fitted.spline =
+      Eigen::SplineFitting<Eigen::Spline3d>::Interpolate(points, degree, fitted.parameters);
+  return fitted;
 }
 
 }  // namespace
@@ -106,28 +141,15 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
     }
   }
 
-  // 2. The spline from the clamp through the points. Points that repeat the previous one are
-  // dropped (a zero chord would make the interpolation singular); `owner` maps the spline's data
-  // points back to target.points (-1 for the clamp).
-  std::vector<Eigen::Vector3d> data{clamp};
-  std::vector<int> owner{-1};
-  const double repeat = 1e-12 * std::max(L, 1.0);
-  for (std::size_t i = 0; i < target.points.size(); ++i) {
-    if ((target.points[i] - data.back()).norm() > repeat) {
-      data.push_back(target.points[i]);
-      owner.push_back(static_cast<int>(i));
-    }
-  }
-  const int n = static_cast<int>(data.size());
+  // 2. The spline from the clamp through the points.
+  const TargetSpline fitted = fit_target_spline(target, clamp, L);
+  const double repeat = 1e-12 * std::max(L, 1.0);  // as fit_target_spline skips a repeated point
+  const std::vector<int>& owner = fitted.owner;
+  const int n = static_cast<int>(owner.size());
   result.arc_lengths.assign(target.points.size(), 0.0);
   if (n < 2) return result;  // every point is at the clamp: length 0
-  Eigen::Matrix3Xd points(3, n);
-  for (int j = 0; j < n; ++j) points.col(j) = data[j];
-  Eigen::Spline3d::KnotVectorType parameters;
-  Eigen::ChordLengths(points, parameters);
-  const int degree = std::min(3, n - 1);
-  const Eigen::Spline3d spline =
-      Eigen::SplineFitting<Eigen::Spline3d>::Interpolate(points, degree, parameters);
+  const Eigen::Spline3d& spline = *fitted.spline;
+  const Eigen::Spline3d::KnotVectorType& parameters = fitted.parameters;
 
   // Integrate between consecutive breakpoints: the knots (where C' changes polynomial) and the
   // data parameters (to know the length up to each point).
@@ -162,6 +184,18 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
                     point_field(static_cast<std::size_t>(first_beyond)) + " beyond that length";
   }
   return result;
+}
+
+std::vector<Eigen::Vector3d> sample_target_curve(const ShapeTarget& target,
+                                                 const Eigen::Vector3d& clamp,
+                                                 int samples) {
+  const TargetSpline fitted = fit_target_spline(target, clamp, 1.0);
+  if (!fitted.spline) return {clamp};
+  std::vector<Eigen::Vector3d> curve;
+  const int count = std::max(samples, 2);
+  for (int k = 0; k < count; ++k)
+    curve.push_back(fitted.spline->operator()(static_cast<double>(k) / (count - 1)));
+  return curve;
 }
 
 std::string FeasibilityResult::brief() const {

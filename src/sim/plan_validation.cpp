@@ -173,17 +173,7 @@ void ValidationOptions::validate() const {
 }
 
 std::string to_string(ValidationStatus status) {
-  switch (status) {
-    case ValidationStatus::Complete:
-      return "complete";
-    case ValidationStatus::SnapThrough:
-      return "snap_through";
-    case ValidationStatus::Lost:
-      return "lost";
-    case ValidationStatus::Contact:
-      return "contact";
-  }
-  return "lost";
+  return std::string(name_of(kValidationStatusNames, status, "lost"));
 }
 
 std::string ValidationResult::brief() const {

@@ -57,15 +57,7 @@ PlantFrame frame_at(double t, const Pose& end_effector, const ShootingResult& st
 }  // namespace
 
 std::string to_string(PlantEvent::Kind kind) {
-  switch (kind) {
-    case PlantEvent::Kind::SnapThrough:
-      return "snap_through";
-    case PlantEvent::Kind::Contact:
-      return "contact";
-    case PlantEvent::Kind::Lost:
-      break;
-  }
-  return "lost";
+  return std::string(name_of(kPlantEventKindNames, kind, "lost"));
 }
 
 void PlantOptions::validate() const {

@@ -23,21 +23,7 @@ void FollowOptions::validate() const {
   shooting.validate();
 }
 
-std::string to_string(FollowEvent event) {
-  switch (event) {
-    case FollowEvent::None:
-      return "none";
-    case FollowEvent::Lost:
-      return "lost";
-    case FollowEvent::Unstable:
-      return "unstable";
-    case FollowEvent::OtherBranch:
-      return "other_branch";
-    case FollowEvent::Stopped:
-      return "stopped";
-  }
-  return "unknown";
-}
+std::string to_string(FollowEvent event) { return std::string(name_of(kFollowEventNames, event)); }
 
 std::string FollowResult::brief() const {
   std::ostringstream out;

@@ -197,6 +197,41 @@ TEST_F(CliPlan, CompletePlanWritesPlanTrajectoryAndPicture) {
     EXPECT_NE(svg.find(view), std::string::npos) << view;
 }
 
+// plan.html (issue 23): written beside plan.svg when three.js is found; without it a warning, the
+// SVG and the usual exit code; --no-html writes no page and says nothing of it.
+TEST_F(CliPlan, ThePageIsWrittenOrWarnedAboutOrTurnedOff) {
+  const fs::path task = write_task("band.yaml", kTask);
+  const fs::path three = directory_ / "three";
+  fs::create_directories(three / "examples/js/controls");
+  std::ofstream(three / "three.min.js") << "window.THREE = {};\n";
+  std::ofstream(three / "examples/js/controls/OrbitControls.js") << "THREE.OrbitControls = 1;\n";
+  ::setenv("RODSHAPE_THREE_JS_DIR", three.string().c_str(), 1);
+  Outcome result = plan(task, directory_ / "page");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  EXPECT_NE(result.out.find("plan.html"), std::string::npos) << result.out;
+  EXPECT_EQ(read_file(directory_ / "page" / "plan.html").rfind("<!DOCTYPE html>\n", 0), 0u);
+
+  ::setenv("RODSHAPE_THREE_JS_DIR", (directory_ / "none").string().c_str(), 1);
+  result = plan(task, directory_ / "page");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(
+      result.err.rfind("warning: the 3D pages (plan.html, validation.html) are not written: ", 0),
+      0u)
+      << result.err;
+  EXPECT_NE(result.err.find("libjs-three"), std::string::npos) << result.err;
+  EXPECT_TRUE(fs::exists(directory_ / "page" / "plan.svg"));
+  EXPECT_FALSE(fs::exists(directory_ / "page" / "plan.html"));  // the earlier run's is removed
+
+  result = run("plan " + quoted(task.string()) + " -o " +
+               quoted((directory_ / "no_html").string()) + " --no-html");
+  ::unsetenv("RODSHAPE_THREE_JS_DIR");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  EXPECT_TRUE(fs::exists(directory_ / "no_html" / "plan.svg"));
+  EXPECT_FALSE(fs::exists(directory_ / "no_html" / "plan.html"));
+}
+
 TEST_F(CliPlan, InfeasibleTargetIsBadInputNamingThePointAndNothingIsWritten) {
   // Issue 24: an infeasible target was exit 2 with a plan.json here and exit 3 in validate; it is
   // bad input as any other: one line naming the offending point and its line, nothing written.

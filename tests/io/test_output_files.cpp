@@ -101,7 +101,8 @@ TEST(OutputFiles, AFileInTheWayThatIsNotRodshapesIsNamedAndLeftAlone) {
 
 TEST(OutputFiles, ValidationNamesItsFiles) {
   EXPECT_EQ(validation_file_names(),
-            (std::vector<std::string>{"validation.json", "validation.csv", "validation.svg"}));
+            (std::vector<std::string>{"validation.json", "validation.csv", "validation.svg",
+                                      "validation.html"}));
 }
 
 }  // namespace

@@ -66,7 +66,7 @@ TEST(RemovePlanFiles, AMissingDirectoryIsLeftMissing) {
 
 TEST(RemovePlanFiles, NamesTheFilesWritePlanWrites) {
   EXPECT_EQ(plan_file_names(),
-            (std::vector<std::string>{"plan.json", "trajectory.csv", "plan.svg",
+            (std::vector<std::string>{"plan.json", "trajectory.csv", "plan.svg", "plan.html",
                                       "joint_trajectory.csv", "joint_trajectory.json"}));
 }
 

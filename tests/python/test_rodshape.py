@@ -158,6 +158,10 @@ def test_validate_repeats_bit_for_bit_and_writes_the_clis_files(tmp_path):
     assert a.runs[0].final.true_error < 1e-3
     names = a.write(str(tmp_path))
     assert "validation.json" in names and "plan.json" in names
+    if rodshape.html_unavailable() == "":  # libjs-three installed: the 3D pages too
+        assert "plan.html" in names and "validation.html" in names
+    names = a.write(str(tmp_path), html=False)
+    assert "plan.html" not in names and not (tmp_path / "plan.html").exists()
     assert json.loads((tmp_path / "validation.json").read_text()) == json.loads(a.to_json())
 
 
@@ -195,6 +199,54 @@ def test_plot_figures(tmp_path):
     validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
     plot.validation_errors(validation).savefig(tmp_path / "errors.png")
     assert (tmp_path / "steps.png").stat().st_size > 1000
+    # One scale on the three axes: the planar S-curve keeps a flat axis as wide as the others
+    # (autoscaled, y spanned ±3e-14 m and the steps looked like loops).
+    ax = fig.axes[0]
+    spans = [np.ptp(limits) for limits in (ax.get_xlim(), ax.get_ylim(), ax.get_zlim())]
+    assert spans == pytest.approx([spans[0]] * 3) and spans[0] > 0.1
+
+
+def test_plot_imports_cleanly(monkeypatch):
+    # Importing rodshape.plot neither reads nor changes the umask (os.umask(0) then back was a
+    # moment of umask 0 for every thread), and saving gives a file open() would.
+    import importlib
+    import sys
+    import matplotlib
+    matplotlib.use("Agg")
+    sys.modules.pop("rodshape.plot", None)
+
+    def no_umask(mask):
+        raise AssertionError("os.umask called")
+    monkeypatch.setattr(os, "umask", no_umask)
+    plot = importlib.import_module("rodshape.plot")
+    assert plot.InputError is rodshape.InputError
+    for unused in ("argparse", "sys", "tempfile"):
+        assert not hasattr(plot, unused), unused
+
+
+def test_plot_saves_like_open(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from rodshape import plot
+    import importlib.util
+    assert plot.write_file_atomically is rodshape.write_file_atomically  # the CLI's writer
+    # And loaded on its own (scripts/plot_plan.py), without the compiled module: its own writer.
+    spec = importlib.util.spec_from_file_location("plot_alone", SOURCE / "python" / "rodshape" / "plot.py")
+    alone = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(alone)
+    assert alone.write_file_atomically is None
+    for module, name in ((plot, "line.png"), (alone, "alone.png")):
+        fig, ax = plt.subplots()
+        ax.plot([0, 1], [0, 1])
+        old = os.umask(0o027)
+        try:
+            module.save(fig, tmp_path / name)
+        finally:
+            os.umask(old)
+        assert (tmp_path / name).stat().st_mode & 0o777 == 0o640
+        assert (tmp_path / name).read_bytes().startswith(b"\x89PNG")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["alone.png", "line.png"]  # no temporary
 
 
 def test_optimise_shape_passes_through_points_of_a_reachable_shape():
@@ -272,8 +324,13 @@ def test_a_plan_with_an_arm_has_a_joint_trajectory_within_the_limits(tmp_path):
     assert np.all(joints.q >= arm.lower_limits - 1e-12)
     assert np.all(joints.q <= arm.upper_limits + 1e-12)
     assert np.all(np.abs(joints.qdot) <= arm.velocity_limits * (1 + 1e-9))
-    plot.joint_trajectory(plan).savefig(tmp_path / "joints.png")
+    fig = plot.joint_trajectory(plan)
+    fig.savefig(tmp_path / "joints.png")
     assert (tmp_path / "joints.png").stat().st_size > 1000
+    # The legend beside the axes is inside the figure (it was cut off at its right edge).
+    fig.canvas.draw()
+    legend = fig.axes[0].get_legend().get_window_extent()
+    assert legend.x1 <= fig.bbox.x1 + 1 and legend.x0 >= 0
     validation = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_panda_s_curve.yaml")))
     assert validation.driven_by_joints
     assert all(run.driven_by_joints for run in validation.runs)

@@ -9,12 +9,18 @@
 
 #include "rodshape/core/cross_section.hpp"
 #include "rodshape/core/material.hpp"
+#include "rodshape/enum_names.hpp"
 
 namespace rodshape {
 
 /// `cosserat`: shear and extension (the paper's model). `kirchhoff`: inextensible, unshearable (v =
 /// ṽ).
 enum class ConstitutiveModel { Cosserat, Kirchhoff };
+/// The names of ConstitutiveModel (to_string, and the task file's rod.model).
+inline constexpr EnumNames<ConstitutiveModel, 2> kConstitutiveModelNames = {{
+    {ConstitutiveModel::Cosserat, "cosserat"},
+    {ConstitutiveModel::Kirchhoff, "kirchhoff"},
+}};
 std::string to_string(ConstitutiveModel model);
 /// Throws InputError naming `field` for anything but "cosserat" or "kirchhoff".
 ConstitutiveModel constitutive_model_from_string(const std::string& name,

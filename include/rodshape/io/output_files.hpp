@@ -8,19 +8,22 @@
 #include <string>
 #include <vector>
 
+#include "rodshape/figures/figures.hpp"
+
 namespace rodshape {
 
 /// The first member of every JSON document rodshape writes into an output directory (plan.json,
 /// joint_trajectory.json, validation.json): {"generator": "rodshape <version>", ...}.
 inline constexpr const char* kGeneratorKey = "generator";
 std::string generator_signature();  // "rodshape <version>"
-/// The comment every SVG rodshape writes has after its XML declaration.
-std::string svg_signature_comment();  // "<!-- generator: rodshape <version> -->"
+// svg_signature_comment(): the comment every SVG and HTML page rodshape writes begins with
+// (rodshape/figures/figures.hpp).
 
 /// True when the file at `path` is one rodshape writes under its name: a JSON document whose
-/// first member is kGeneratorKey with a value starting "rodshape", an SVG with the signature
-/// comment, trajectory.csv or validation.csv with their exact headers, joint_trajectory.csv with
-/// a header "t,<joint names>". False for anything else, including files it cannot read.
+/// first member is kGeneratorKey with a value starting "rodshape", an SVG or an HTML page with
+/// the signature comment, trajectory.csv or validation.csv with their exact headers,
+/// joint_trajectory.csv with a header "t,<joint names>". False for anything else, including files
+/// it cannot read.
 bool is_rodshape_output(const std::string& path);
 
 /// InputError "<output>: is <input>, an input of this run; ..." when `output` names the same file

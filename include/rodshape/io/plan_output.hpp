@@ -1,13 +1,14 @@
 // plan_output.hpp: what `rodshape plan` writes: the plan as JSON (plan.json), the timed
-// end-effector path as CSV (trajectory.csv), a picture of the steps as SVG (plan.svg) and, when the
-// task has a robot, the joint trajectory (joint_trajectory.csv, joint_trajectory.json). Each
-// function returns the whole text; write it with write_file_atomically(). Schemas are in
-// docs/task-file.md.
+// end-effector path as CSV (trajectory.csv), a picture of the steps as SVG (plan.svg), the 3D page
+// (plan.html, made by the figures area) and, when the task has a robot, the joint trajectory
+// (joint_trajectory.csv, joint_trajectory.json). Each function returns the whole text; write it
+// with write_file_atomically(). Schemas are in docs/task-file.md, the page in docs/figures.md.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "rodshape/figures/figures.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/joint_trajectory.hpp"
@@ -41,18 +42,25 @@ std::string joint_trajectory_csv(const JointTrajectoryResult& trajectory);
 ///  "time_from_start": {"sec": int, "nanosec": int}}, ...]}. Ends with a newline.
 std::string joint_trajectory_json(const JointTrajectoryResult& trajectory);
 
-/// A self-contained SVG picture of the plan: three projections (x–z, y–z, x–y) at one common
-/// scale, with grids labelled in metres; the initial rod (grey), each step's rod (a colour ramp
-/// from the first step to the last, the last drawn thick), each step's objective points (small dots
-/// of the step's colour), the target points (red ×) and a legend.
+/// The figures' caption of a task: its source and the steps it asks for.
+FigureCaption figure_caption(const PlanTask& task);
+/// plan_svg() (rodshape/figures/figures.hpp) of the task's problem, captioned by the task.
 std::string plan_svg(const PlanResult& plan, const PlanTask& task);
+
+/// What write_plan() and write_validation() write besides the data: the HTML pages (plan.html,
+/// validation.html; `rodshape plan --no-html` turns them off). When three.js cannot be read
+/// (load_page_library()), no page is written and html_unavailable() says why, for the caller to
+/// warn: the SVG figures are written as ever.
+struct FigureFiles {
+  bool html = true;
+};
 
 /// InputError when `directory` exists but is not a directory (to check before planning, which may
 /// take a while).
 void check_output_directory(const std::string& directory);
 
 /// The files write_plan() may write, in its order: plan.json, trajectory.csv, plan.svg,
-/// joint_trajectory.csv, joint_trajectory.json.
+/// plan.html, joint_trajectory.csv, joint_trajectory.json.
 const std::vector<std::string>& plan_file_names();
 
 /// Removes the plan files (plan_file_names()) of an earlier run from `directory`: those that are
@@ -63,7 +71,8 @@ const std::vector<std::string>& plan_file_names();
 void remove_plan_files(const std::string& directory);
 
 /// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
-/// plan is infeasible, trajectory.csv and plan.svg; with a complete joint trajectory,
+/// plan is infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html;
+/// with a complete joint trajectory,
 /// joint_trajectory.csv and joint_trajectory.json. Each file is written whole or not at all, and
 /// the files of an earlier run that this plan does not write are removed when they are
 /// rodshape's (they would not match plan.json; check_output_files() first, to refuse others).
@@ -71,6 +80,11 @@ void remove_plan_files(const std::string& directory);
 /// file cannot be written.
 std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
-                                    const PlanTask& task);
+                                    const PlanTask& task,
+                                    const FigureFiles& figures = {});
+
+/// Why the HTML pages cannot be written ("" when they can): three.js not found
+/// (load_page_library()). The CLI prints it as a warning before writing.
+std::string html_unavailable();
 
 }  // namespace rodshape

@@ -1,12 +1,14 @@
 // validation_output.hpp: what `rodshape validate` writes: validation.json (the plant, the sensor,
 // each run's errors over time, final errors, events and the plant's last equilibrium),
-// validation.csv (the errors over time, one line per run and frame) and validation.svg (the errors
-// over time, as the paper's figure). Schemas in docs/task-file.md.
+// validation.csv (the errors over time, one line per run and frame) validation.svg (the errors over
+// time, as the paper's figure) and validation.html (the 3D page).  Schemas in docs/task-file.md.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "rodshape/figures/figures.hpp"
+#include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan_result.hpp"
@@ -20,15 +22,17 @@ std::string validation_json(const ValidationResult& result,
 /// "run,seed,t,error_3d,error_2d,true_error,visible_markers" and one line per run and frame
 /// (s, m).
 std::string validation_csv(const ValidationResult& result);
-/// A self-contained SVG: the 3D, 2D and true errors (mm) over time (s) of every run.
-std::string validation_svg(const ValidationResult& result);
-/// The files write_validation() writes: validation.json, validation.csv, validation.svg.
+// validation_svg() and validation_html(): rodshape/figures/figures.hpp.
+/// The files write_validation() may write: validation.json, validation.csv, validation.svg,
+/// validation.html.
 const std::vector<std::string>& validation_file_names();
-/// Writes validation.json, validation.csv and validation.svg into `directory` (created with its
-/// parents if missing), each whole or not at all. Returns the names written.
+/// Writes validation.json, validation.csv, validation.svg and (figures.html, three.js found:
+/// html_unavailable()) validation.html into `directory` (created with its parents if missing),
+/// each whole or not at all. Returns the names written.
 std::vector<std::string> write_validation(const std::string& directory,
                                           const ValidationResult& result,
                                           const PlanResult& plan,
-                                          const PlanTask& task);
+                                          const PlanTask& task,
+                                          const FigureFiles& figures = {});
 
 }  // namespace rodshape

@@ -47,6 +47,14 @@ struct FeasibilityResult {
   std::string brief() const;
 };
 
+/// The chord-length cubic B-spline check_feasibility() judges, from `clamp` through the target's
+/// points (a point repeating the one before it skipped), at `samples` ≥ 2 parameters evenly
+/// spaced from the clamp to the last point: a picture of the target curve (plan.html). Just the
+/// clamp when every point is at it.
+std::vector<Eigen::Vector3d> sample_target_curve(const ShapeTarget& target,
+                                                 const Eigen::Vector3d& clamp,
+                                                 int samples);
+
 /// The spline is one plausible curve through the points, not the rod: its length differs from that
 /// of the rod's curve through the same points by the interpolation error (a few 1e-3 relative for a
 /// handful of points on a bent rod). Lengths up to reach · (1 + kSplineLengthSlack) are accepted.

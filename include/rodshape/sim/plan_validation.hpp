@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/enum_names.hpp"
 #include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
@@ -65,6 +66,13 @@ enum class ValidationStatus {
   Lost,         // no equilibrium at some sample: the run stops there
   Contact,      // it did, but its rod would touch an obstacle of the plan's scene (runs' events)
 };
+/// The names of ValidationStatus, in its order (to_string; validation.json's "status").
+inline constexpr EnumNames<ValidationStatus, 4> kValidationStatusNames = {{
+    {ValidationStatus::Complete, "complete"},
+    {ValidationStatus::SnapThrough, "snap_through"},
+    {ValidationStatus::Lost, "lost"},
+    {ValidationStatus::Contact, "contact"},
+}};
 std::string to_string(ValidationStatus status);  // "complete", "snap_through", "lost", "contact"
 
 struct ValidationResult {

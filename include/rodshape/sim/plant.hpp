@@ -15,6 +15,7 @@
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/wrench.hpp"
+#include "rodshape/enum_names.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
@@ -34,6 +35,12 @@ struct PlantEvent {
   int obstacle = -1;   // Contact: index into the scene's obstacles
   double depth = 0.0;  // Contact: the deepest overlap of that contact, m
 };
+/// The names of PlantEvent::Kind, in its order (to_string; the events' "kind").
+inline constexpr EnumNames<PlantEvent::Kind, 3> kPlantEventKindNames = {{
+    {PlantEvent::Kind::SnapThrough, "snap_through"},
+    {PlantEvent::Kind::Lost, "lost"},
+    {PlantEvent::Kind::Contact, "contact"},
+}};
 std::string to_string(PlantEvent::Kind kind);  // "snap_through", "lost", "contact"
 
 /// The plant as a camera frame sees it.

@@ -14,6 +14,7 @@
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
+#include "rodshape/enum_names.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
@@ -88,6 +89,14 @@ enum class FollowEvent {
                 // `expected`): it went over to another branch on the way (snap-through)
   Stopped,      // FollowOptions::observer returned false at a substep
 };
+/// The names of FollowEvent, in its order (to_string).
+inline constexpr EnumNames<FollowEvent, 5> kFollowEventNames = {{
+    {FollowEvent::None, "none"},
+    {FollowEvent::Lost, "lost"},
+    {FollowEvent::Unstable, "unstable"},
+    {FollowEvent::OtherBranch, "other_branch"},
+    {FollowEvent::Stopped, "stopped"},
+}};
 /// "none", "lost", "unstable", "other_branch", "stopped"
 std::string to_string(FollowEvent event);
 

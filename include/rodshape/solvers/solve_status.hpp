@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "rodshape/enum_names.hpp"
+
 namespace rodshape {
 
 enum class SolveStatus {
@@ -22,6 +24,19 @@ enum class SolveStatus {
   DiscretisationTooCoarse,  // the residual met the tolerance but the integration error estimate
                             // exceeds its tolerance, even with the most sub-steps allowed
 };
+/// The names of SolveStatus, in its order (to_string; the results' "status").
+inline constexpr EnumNames<SolveStatus, 10> kSolveStatusNames = {{
+    {SolveStatus::NotRun, "not_run"},
+    {SolveStatus::Converged, "converged"},
+    {SolveStatus::IterationLimit, "iteration_limit"},
+    {SolveStatus::Diverged, "diverged"},
+    {SolveStatus::Singular, "singular"},
+    {SolveStatus::Infeasible, "infeasible"},
+    {SolveStatus::ConstraintViolated, "constraint_violated"},
+    {SolveStatus::OutOfReach, "out_of_reach"},
+    {SolveStatus::NonFinite, "non_finite"},
+    {SolveStatus::DiscretisationTooCoarse, "discretisation_too_coarse"},
+}};
 
 std::string to_string(SolveStatus status);
 

@@ -1,7 +1,7 @@
-// plan_svg.cpp: plan.svg, a picture of the plan that any browser shows: three orthographic
-// projections (x–z, y–z, x–y) side by side at one common scale (a metre is as long in every panel
-// and along both axes), so that lengths and angles can be compared between views. Plain SVG 1.1,
-// written by hand: no dependency, no script, no external font or style sheet.
+// plan_svg.cpp (figures): plan.svg, a picture of the plan that any browser shows: three
+// orthographic projections (x–z, y–z, x–y) side by side at one common scale (a metre is as long in
+// every panel and along both axes), so that lengths and angles can be compared between views. Plain
+// SVG 1.1, written by hand: no dependency, no script, no external font or style sheet.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,91 +10,33 @@
 #include <string>
 #include <vector>
 
+#include "figures/svg_drawing.hpp"
 #include "overloaded.hpp"
-#include "rodshape/io/output_files.hpp"
-#include "rodshape/io/plan_output.hpp"
+#include "rodshape/figures/figures.hpp"
 
 namespace rodshape {
 
 namespace {
 
+using figures::escaped;
+using figures::step_colour;
+using figures::tick_label;
+using figures::tick_spacing;
+
+/// A number as SVG wants it: fixed, two decimals (0.01 px).
+std::string px(double value) { return figures::fixed(value, 2); }
+
 // Layout, px.
-constexpr double kPanel = 330.0;  // side of a panel's square plot area
-constexpr double kLeft = 70.0;    // left margin (tick labels of the first panel)
-constexpr double kGap = 85.0;     // between panels (the next panel's tick labels)
-constexpr double kTop = 78.0;     // title and panel captions
+constexpr double kPanel = 330.0;      // side of a panel's square plot area
+constexpr double kLeft = 70.0;        // left margin (tick labels of the first panel)
+constexpr double kGap = 85.0;         // between panels (the next panel's tick labels)
+constexpr double kCaptionGap = 26.0;  // from the title's last line to a panel's top (caption)
 constexpr double kLegendHeight = 96.0;
 constexpr double kWidth = kLeft + 3 * kPanel + 2 * kGap + 45.0;
-constexpr double kHeight = kTop + kPanel + 45.0 + kLegendHeight;
+constexpr double kBelowPanels = 45.0 + kLegendHeight;
 
 const char* const kInitialColour = "#9a9a9a";
 const char* const kTargetColour = "#d62728";
-
-/// A number as SVG wants it: fixed, two decimals (0.01 px).
-std::string px(double value) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(2) << value;
-  return out.str();
-}
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-/// The colour of step k of n on a ramp from dark blue through purple and pink to orange (the
-/// first four fifths of matplotlib's "plasma": every colour stays readable on white).
-std::string step_colour(int k, int n) {
-  static constexpr std::array<std::array<double, 3>, 4> kRamp = {
-      {{13, 8, 135}, {126, 3, 168}, {204, 71, 120}, {240, 130, 50}}};
-  const double t = n > 1 ? static_cast<double>(k) / (n - 1) : 1.0;
-  const double x = t * (kRamp.size() - 1);
-  const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(x), kRamp.size() - 2);
-  const double f = x - static_cast<double>(i);
-  std::ostringstream out;
-  out << '#' << std::hex << std::setfill('0');
-  for (int c = 0; c < 3; ++c) {
-    const double value = (1.0 - f) * kRamp[i][c] + f * kRamp[i + 1][c];
-    out << std::setw(2) << static_cast<int>(std::lround(value));
-  }
-  return out.str();
-}
-
-/// A round tick spacing, 1, 2 or 5 × 10^k, giving about `count` intervals over `range`.
-double tick_spacing(double range, int count) {
-  const double raw = range / count;
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double factor : {1.0, 2.0, 5.0}) {
-    if (factor * decade >= raw) return factor * decade;
-  }
-  return 10.0 * decade;
-}
-
-std::string tick_label(double value, double spacing) {
-  const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(spacing) + 1e-9)));
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(decimals)
-      << (std::abs(value) < 0.5 * spacing ? 0.0 : value);
-  return out.str();
-}
 
 /// One projection: world axes (h, v) onto a panel's plot area.
 struct Panel {
@@ -329,12 +271,12 @@ std::vector<Eigen::Vector3d> drawn_points(const PlanResult& plan, const PlanProb
   return all;
 }
 
-/// Title: what, and how it went.
-void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask& task) {
+/// Title: what, and how it went, wrapped to the figure's width. Returns the y of its last line.
+double draw_title(std::ostringstream& out, const PlanResult& plan, const FigureCaption& caption) {
   const int n = static_cast<int>(plan.steps.size());
   std::ostringstream title, details;
-  title << "rodshape plan: " << task.source << " \u2014 " << to_string(plan.status) << ", " << n
-        << " steps (" << task.options.steps << " requested";
+  title << "rodshape plan: " << caption.source << " \u2014 " << to_string(plan.status) << ", " << n
+        << " steps (" << caption.steps_requested << " requested";
   if (plan.tracking.refinements > 0) title << ", " << plan.tracking.refinements << " inserted";
   const auto detours = std::count_if(plan.steps.begin(), plan.steps.end(),
                                      [](const PlanStep& step) { return step.detour; });
@@ -352,27 +294,31 @@ void draw_title(std::ostringstream& out, const PlanResult& plan, const PlanTask&
     details << "; least gap to the scene " << millimetres(plan.scene->min_gap) << " (obstacle "
             << plan.scene->obstacle_label << ", clearance " << millimetres(plan.scene->clearance)
             << ")";
-  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"22\" font-family=\"sans-serif\" "
-      << "font-size=\"15\" font-weight=\"bold\" fill=\"#111\">" << escaped(title.str())
-      << "</text>\n";
-  out << "<text x=\"" << px(kLeft - 40) << "\" y=\"39\" font-family=\"sans-serif\" "
-      << "font-size=\"12\" fill=\"#333\">" << escaped(details.str()) << "</text>\n";
-  if (plan.status != PlanStatus::Complete) {
-    out << "<text x=\"" << px(kLeft - 40) << "\" y=\"54\" font-family=\"sans-serif\" "
-        << "font-size=\"12\" fill=\"" << kTargetColour << "\">" << escaped(plan.message)
-        << "</text>\n";
-  }
+  const double left = kLeft - 40, width = kWidth - left - 20;
+  double y = 22;
+  const auto lines = [&](const std::string& text, double size, const char* style) {
+    for (const std::string& line : figures::wrapped(text, figures::characters_in(width, size))) {
+      out << "<text x=\"" << px(left) << "\" y=\"" << px(y) << "\" font-family=\"sans-serif\" "
+          << "font-size=\"" << size << "\" " << style << ">" << escaped(line) << "</text>\n";
+      y += size + 4;
+    }
+  };
+  lines(title.str(), 15, "font-weight=\"bold\" fill=\"#111\"");
+  lines(details.str(), 12, "fill=\"#333\"");
+  if (plan.status != PlanStatus::Complete)
+    lines(plan.message, 12, (std::string("fill=\"") + kTargetColour + "\"").c_str());
+  return y;
 }
 
 /// Three orthographic projections: the initial rod, every step's rod and objective points, the
 /// target points and the clamp.
-void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& request) {
+void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& request, double top) {
   std::ostringstream& out = canvas.out();
   const int n = static_cast<int>(plan.steps.size());
   const std::array<Panel, 3> panels = {{
-      {0, 2, kLeft, kTop, "front: x\u2013z"},
-      {1, 2, kLeft + kPanel + kGap, kTop, "side: y\u2013z"},
-      {0, 1, kLeft + 2 * (kPanel + kGap), kTop, "top: x\u2013y"},
+      {0, 2, kLeft, top, "front: x\u2013z"},
+      {1, 2, kLeft + kPanel + kGap, top, "side: y\u2013z"},
+      {0, 1, kLeft + 2 * (kPanel + kGap), top, "top: x\u2013y"},
   }};
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const Panel& panel = panels[k];
@@ -394,9 +340,9 @@ void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& requ
   }
 }
 
-void draw_legend(Canvas& canvas, int n, bool scene) {
+void draw_legend(Canvas& canvas, int n, bool scene, double panels_top) {
   std::ostringstream& out = canvas.out();
-  const double top = kTop + kPanel + 52;
+  const double top = panels_top + kPanel + 52;
   const double left = kLeft;
   out << "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#222\">\n";
   out << "<line x1=\"" << px(left) << "\" y1=\"" << px(top) << "\" x2=\"" << px(left + 30)
@@ -441,17 +387,22 @@ void draw_legend(Canvas& canvas, int n, bool scene) {
 
 }  // namespace
 
-std::string plan_svg(const PlanResult& plan, const PlanTask& task) {
-  Canvas canvas(fit_view(drawn_points(plan, task.problem)));
+std::string plan_svg(const PlanResult& plan,
+                     const PlanProblem& problem,
+                     const FigureCaption& caption) {
+  Canvas canvas(fit_view(drawn_points(plan, problem)));
+  std::ostringstream title;
+  const double top = draw_title(title, plan, caption) + kCaptionGap;
+  const double height = top + kPanel + kBelowPanels;
   std::ostringstream& out = canvas.out();
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" << svg_signature_comment() << '\n';
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << px(kWidth)
-      << "\" height=\"" << px(kHeight) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(kHeight)
+      << "\" height=\"" << px(height) << "\" viewBox=\"0 0 " << px(kWidth) << ' ' << px(height)
       << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  draw_title(out, plan, task);
-  draw_panels(canvas, plan, task.problem);
-  draw_legend(canvas, static_cast<int>(plan.steps.size()), !task.problem.scene.empty());
+  out << title.str();
+  draw_panels(canvas, plan, problem, top);
+  draw_legend(canvas, static_cast<int>(plan.steps.size()), !problem.scene.empty(), top);
   out << "</svg>\n";
   return out.str();
 }
