@@ -136,6 +136,22 @@ void bind_problem(py::module_& m) {
       .def_readwrite("scene_detour", &PlanOptions::scene_detour,
                      "search a detour where the straight motion drags the rod through one")
       .def_property(
+          "interpolation", [](const PlanOptions& o) { return to_string(o.interpolation); },
+          [](PlanOptions& o, const std::string& name) {
+            for (ObjectiveInterpolation scheme :
+                 {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
+                  ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
+                  ObjectiveInterpolation::Pose})
+              if (to_string(scheme) == name) {
+                o.interpolation = scheme;
+                return;
+              }
+            throw InputError("PlanOptions.interpolation", " = '" + name +
+                                                              "' must be auto, shape, arc_length, "
+                                                              "projection or pose");
+          },
+          "auto (default), shape, arc_length, projection or pose")
+      .def_property(
           "max_linear_speed", [](const PlanOptions& o) { return o.end_effector.max_linear_speed; },
           [](PlanOptions& o, double v) { o.end_effector.max_linear_speed = v; }, "m/s")
       .def_property(
@@ -181,6 +197,24 @@ void bind_trajectory(py::module_& m) {
       .def_readonly("initial_wrench", &PlanResult::initial_wrench)
       .def_readonly("tracking", &PlanResult::tracking)
       .def_readonly("scene", &PlanResult::scene, "with a scene, its SceneResult, else None")
+      .def_property_readonly(
+          "interpolation",
+          [](const PlanResult& r) {
+            py::list tried;
+            for (const InterpolationTrial& t : r.interpolation.tried) {
+              py::dict trial;
+              trial["scheme"] = to_string(t.scheme);
+              trial["status"] = to_string(t.status);
+              trial["peak_ratio"] = t.peak_ratio;
+              trial["note"] = t.note;
+              tried.append(trial);
+            }
+            py::dict result;
+            result["used"] = to_string(r.interpolation.used);
+            result["tried"] = tried;
+            return result;
+          },
+          "{'used': scheme, 'tried': [{'scheme', 'status', 'peak_ratio', 'note'}, ...]}")
       .def_property_readonly(
           "joints",
           [](const PlanResult& r) -> std::optional<JointTrajectoryResult> {

@@ -214,6 +214,23 @@ Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
           {"waypoint_joint_positions", std::move(waypoints)}};
 }
 
+/// `interpolation`: the scheme that made the plan and each one tried (trajectory.interpolation).
+Json interpolation_object(const InterpolationResult& interpolation) {
+  Json tried = Json::array();
+  for (const InterpolationTrial& trial : interpolation.tried) {
+    Json entry;
+    entry["scheme"] = to_string(trial.scheme);
+    entry["status"] = to_string(trial.status);
+    entry["peak_ratio"] = std::isfinite(trial.peak_ratio) ? Json(trial.peak_ratio) : Json(nullptr);
+    entry["note"] = trial.note.empty() ? Json(nullptr) : Json(fields_in_task_names(trial.note));
+    tried.push_back(std::move(entry));
+  }
+  Json result;
+  result["used"] = to_string(interpolation.used);
+  result["tried"] = std::move(tried);
+  return result;
+}
+
 }  // namespace
 
 std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
@@ -247,6 +264,7 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["steps"] = std::move(steps);
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
+  result["interpolation"] = interpolation_object(plan.interpolation);
   result["scene"] = io_detail::scene_json(request.scene, plan.scene);
   result["robot"] = plan.arm ? robot_object(plan, task.options.arm) : Json(nullptr);
   result["joint_trajectory"] = plan.arm ? joint_trajectory_object(plan.arm->joints) : Json(nullptr);

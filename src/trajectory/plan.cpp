@@ -112,6 +112,17 @@ std::string PlanResult::brief(int steps_requested) const {
     }
     if (tracking.jump) out << "; tracking: " << tracking.note;
   }
+  if (interpolation.tried.size() > 1) {
+    out << "; interpolation " << to_string(interpolation.used) << " (";
+    for (std::size_t k = 0; k < interpolation.tried.size(); ++k) {
+      const InterpolationTrial& trial = interpolation.tried[k];
+      out << (k > 0 ? ", " : "") << to_string(trial.scheme) << " " << to_string(trial.status);
+      if (std::isfinite(trial.peak_ratio))
+        out << " at " << std::fixed << std::setprecision(2) << trial.peak_ratio << std::defaultfloat
+            << "×";
+    }
+    out << ")";
+  }
   if (scene && std::isfinite(scene->min_gap)) {
     out << "; least gap to the scene " << std::setprecision(3) << scene->min_gap * 1e3
         << " mm (obstacle " << scene->obstacle_label << ", clearance " << scene->clearance * 1e3
@@ -492,10 +503,21 @@ namespace {
 
 /// The tracked peak energy over the larger end energy (NaN without steps or tracking).
 double peak_ratio(const PlanResult& plan) {
-  if (plan.steps.empty() || !plan.tracking.performed) return std::nan("");
+  const bool reached = plan.status != PlanStatus::Partial && plan.status != PlanStatus::Infeasible;
+  if (!reached || plan.steps.empty() || !plan.tracking.performed) return std::nan("");
   const double larger =
       std::max(plan.initial_configuration.energy, plan.steps.back().solution.configuration.energy);
   return larger > 0.0 ? plan.tracking.peak_energy / larger : std::nan("");
+}
+
+/// How near another scheme's last step must come to the target to replace the Shape plan: the
+/// largest distance of an objective point from the rod of the Shape plan's last step, with 5 % +
+/// 0.1 mm of slack (another optimiser's end on the same target); when the Shape plan did not
+/// reach the target, 1 % of the rod's length (an optimum 10 cm off a point is no plan for it).
+double reached_within(const PlanResult& plan, const PlanProblem& problem) {
+  const bool reached = plan.status != PlanStatus::Partial && plan.status != PlanStatus::Infeasible;
+  if (!reached || plan.steps.empty()) return 0.01 * problem.rod.properties.length;
+  return 1.05 * plan.steps.back().solution.cost.max_distance + 1e-4;
 }
 
 /// Gentle enough that Auto tries nothing else.
@@ -560,8 +582,13 @@ PlanResult gentlest_plan(const PlanProblem& problem,
                      initial)};
     const ObjectiveInterpolation schemes[] = {ObjectiveInterpolation::Pose,
                                               ObjectiveInterpolation::Projection};
+    const double reach = reached_within(best, problem);
     for (int k = 0; k < 2; ++k) {
       tried.push_back(trial(others[k], schemes[k]));
+      if (others[k].complete() && !(others[k].steps.back().solution.cost.max_distance <= reach)) {
+        tried.back().note = "its last step is farther from the target than allowed";
+        continue;
+      }
       const bool better =
           others[k].complete() && (!best.complete() || peak_ratio(others[k]) < peak_ratio(best));
       if (better) best = std::move(others[k]);

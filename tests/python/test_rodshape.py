@@ -148,6 +148,22 @@ def test_plan_result_arrays():
     assert np.all(np.diff(path["t"]) > 0)
 
 
+def test_the_helix_is_planned_by_the_gentlest_scheme_and_says_so():
+    task = rodshape.load_task(str(EXAMPLES / "plan_cable_helix.yaml"))
+    assert task.options.interpolation == "auto"
+    plan = rodshape.plan(task)
+    assert plan.status == "complete"
+    used = plan.result.interpolation
+    assert used["used"] == "pose"
+    assert [t["scheme"] for t in used["tried"]][:2] == ["shape", "pose"]
+    assert used["tried"][0]["peak_ratio"] > 1.1 >= used["tried"][1]["peak_ratio"]
+    options = task.options
+    options.interpolation = "shape"
+    assert options.interpolation == "shape"
+    with pytest.raises(rodshape.InputError, match="PlanOptions.interpolation"):
+        options.interpolation = "spline"
+
+
 def test_validate_repeats_bit_for_bit_and_writes_the_clis_files(tmp_path):
     task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
     a = rodshape.validate(task, runs=2, seed=5)

@@ -8,11 +8,13 @@
 #include <numbers>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/error.hpp"
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/trajectory/intermediate_targets.hpp"
 #include "rodshape/trajectory/plan.hpp"
+#include "support/scene_replay.hpp"
 
 namespace rodshape {
 namespace {
@@ -129,6 +131,71 @@ TEST(GentlePlan, APartialHookIsGentle) {
   task.options.interpolation = ObjectiveInterpolation::Projection;
   const PlanResult paper = plan(task.problem, task.options);
   EXPECT_GT(paper.tracking.peak_energy, 1.1 * larger_end_energy(paper));
+}
+
+// Issue 25: the cable wound into a helix. By objective sets (shape) the steps' optima coil it on
+// the way (the tracked peak about 1.8 × its final energy, with steps inserted); the default (auto)
+// also tries the end effector's straight path to the same optimum (pose) and keeps it: complete,
+// its final step the shape plan's optimum itself, and an independent replay of its timed path (one
+// solve per sample, not the planner's substeps) arrives on that optimum within 1.1 × the larger
+// end energy at every sample.
+TEST(GentlePlan, TheHelixTakesTheEndEffectorsPathWhenTheSetsWouldCoilIt) {
+  const PlanTask task = example("plan_cable_helix.yaml");
+  ASSERT_EQ(task.options.interpolation, ObjectiveInterpolation::Auto);
+  const PlanResult gentle = plan(task.problem, task.options);
+  ASSERT_EQ(gentle.status, PlanStatus::Complete) << gentle.message;
+  EXPECT_EQ(gentle.interpolation.used, ObjectiveInterpolation::Pose);
+  ASSERT_GE(gentle.interpolation.tried.size(), 2u);
+  EXPECT_EQ(gentle.interpolation.tried[0].scheme, ObjectiveInterpolation::Shape);
+  EXPECT_GT(gentle.interpolation.tried[0].peak_ratio, PlanOptions::kGentleRatio);
+  EXPECT_EQ(static_cast<int>(gentle.steps.size()), task.options.steps);
+  EXPECT_LE(gentle.tracking.peak_energy, PlanOptions::kGentleRatio * larger_end_energy(gentle));
+
+  PlanTask by_sets = task;
+  by_sets.options.interpolation = ObjectiveInterpolation::Shape;
+  const PlanResult shape = plan(by_sets.problem, by_sets.options);
+  ASSERT_EQ(shape.steps.size(), 14u);  // 4 inserted where the rod would jump
+  EXPECT_EQ(node_deviation(shape.steps.back().solution.configuration,
+                           gentle.steps.back().solution.configuration),
+            0.0);
+  for (const PlanStep& step : gentle.steps) {
+    ASSERT_TRUE(step.solution.stability.has_value());
+    EXPECT_TRUE(step.solution.stability->stable) << step.fraction;
+  }
+
+  const testing::SceneReplay replay = testing::replay_scene(task.problem, gentle);
+  ASSERT_TRUE(replay.followed.followed()) << replay.followed.brief();
+  double peak = 0.0;
+  for (const FollowedState& state : replay.followed.states) peak = std::max(peak, state.energy);
+  EXPECT_LE(peak, PlanOptions::kGentleRatio * larger_end_energy(gentle));
+}
+
+// Auto is Shape where Shape is gentle: the same plan, bit for bit, and nothing else tried.
+TEST(GentlePlan, AutoIsTheShapePlanWhereThatIsGentle) {
+  PlanTask task = example("plan_c_arc.yaml");
+  task.options.interpolation = ObjectiveInterpolation::Auto;
+  const PlanResult automatic = plan(task.problem, task.options);
+  task.options.interpolation = ObjectiveInterpolation::Shape;
+  const PlanResult shape = plan(task.problem, task.options);
+  ASSERT_EQ(automatic.status, PlanStatus::Complete);
+  EXPECT_EQ(automatic.interpolation.used, ObjectiveInterpolation::Shape);
+  EXPECT_EQ(automatic.interpolation.tried.size(), 1u);
+  ASSERT_EQ(automatic.steps.size(), shape.steps.size());
+  for (std::size_t k = 0; k < shape.steps.size(); ++k)
+    EXPECT_EQ(automatic.steps[k].solution.base_wrench.to_vector(),
+              shape.steps[k].solution.base_wrench.to_vector())
+        << k;
+}
+
+TEST(GentlePlan, PoseIsUsedAloneWhenAskedAndNeedsTheWholeWay) {
+  PlanTask task = example("plan_cable_helix.yaml");
+  task.options.interpolation = ObjectiveInterpolation::Pose;
+  const PlanResult pose = plan(task.problem, task.options);
+  EXPECT_EQ(pose.status, PlanStatus::Complete) << pose.message;
+  EXPECT_EQ(pose.interpolation.used, ObjectiveInterpolation::Pose);
+  ASSERT_EQ(pose.interpolation.tried.size(), 1u);
+  task.options.horizon = 2;
+  EXPECT_THROW(plan(task.problem, task.options), InputError);
 }
 
 }  // namespace

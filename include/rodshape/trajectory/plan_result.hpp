@@ -123,7 +123,7 @@ struct InterpolationTrial {
   ObjectiveInterpolation scheme = ObjectiveInterpolation::Shape;
   PlanStatus status = PlanStatus::Infeasible;
   /// The tracked peak energy over the larger of the initial and final energies (NaN when the plan
-  /// has no step or was not tracked).
+  /// did not reach the target, partial or infeasible, or was not tracked).
   double peak_ratio = std::numeric_limits<double>::quiet_NaN();
   std::string note;  // why it was not taken (empty for the one used)
 };
