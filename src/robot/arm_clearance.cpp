@@ -34,6 +34,7 @@ ArmClearance::ArmClearance(const ArmModel& arm,
   const std::vector<LinkCapsule>& capsules = arm_.link_capsules();
   const std::size_t m = scene_.obstacles.size();
   required_.assign(capsules.size() * m, scene_.clearance);
+  mount_.assign(capsules.size() * m, false);
   checks_rod_.assign(capsules.size(), true);
   for (std::size_t c = 0; c < capsules.size(); ++c)
     checks_rod_[c] = arm_.joints_moving_frame(capsules[c].frame) < arm_.joints();
@@ -45,9 +46,18 @@ ArmClearance::ArmClearance(const ArmModel& arm,
     if (x.gap.obstacle >= 0 && arm_.joints_moving_frame(f) <= kMountJoints) {
       double& required = required_[static_cast<std::size_t>(x.gap.capsule) * m +
                                    static_cast<std::size_t>(x.gap.obstacle)];
-      required = std::min(required, x.gap.gap);
+      if (x.gap.gap < required) {
+        required = x.gap.gap;
+        mount_[static_cast<std::size_t>(x.gap.capsule) * m + static_cast<std::size_t>(x.gap.obstacle)] =
+            true;
+      }
     }
   });
+}
+
+bool ArmClearance::is_mount(const LinkGap& gap) const {
+  return gap.obstacle >= 0 && mount_[static_cast<std::size_t>(gap.capsule) * scene_.obstacles.size() +
+                                     static_cast<std::size_t>(gap.obstacle)];
 }
 
 double ArmClearance::required_gap(int c, int j) const {
@@ -128,6 +138,8 @@ LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
   thread_local LinkFrames frames;  // reused: no allocation once sized
   for_each_pair(q, rods, std::numeric_limits<double>::infinity(), frames,
                 [&](const Measured& x) {
+    // The mount's own gap is not news: it counts only when it sinks deeper.
+    if (is_mount(x.gap) && x.gap.clear()) return;
     if (x.gap.margin < least.margin) least = x.gap;
   });
   return least;
@@ -141,7 +153,7 @@ void ArmClearance::near_pairs(const Eigen::VectorXd& q,
   thread_local LinkFrames frames;  // reused: no allocation once sized
   thread_local Eigen::Matrix<double, 3, Eigen::Dynamic> J;
   for_each_pair(q, rods, scene_.clearance + influence, frames, [&](const Measured& x) {
-    if (x.gap.margin >= influence) return;
+    if (x.gap.margin >= influence || is_mount(x.gap)) return;
     const int f = arm_.link_capsules()[static_cast<std::size_t>(x.gap.capsule)].frame;
     arm_.point_jacobian(frames, f, x.point, J);
     rows.push_back({influence - x.gap.margin, J.transpose() * x.gradient});

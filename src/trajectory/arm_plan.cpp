@@ -196,7 +196,6 @@ void set_rods(const PlanResult& plan, JointTrajectoryOptions& options) {
 std::optional<Unreachable> check_reach(const PlanProblem& problem,
                                        const PlanResult& plan,
                                        const ArmStart& start,
-                                       const ArmPlanOptions& options,
                                        ArmPlanResult& arm) {
   const ArmModel& model = problem.arm->model;
   const ArmPlacement& placement = problem.arm->placement;
@@ -339,16 +338,35 @@ PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options)
   ArmPlanResult arm;
   const ArmStart start = prepare_arm(problem, arm_options, initial_tip, arm);
   PlanProblem planned = problem;
+  // A complete rod plan whose links came too near, kept in case the re-plan with a tighter shell
+  // does not complete (the shell can squeeze the rod's optimisation): then it is the answer.
+  std::optional<PlanResult> collided;
   for (;;) {
     if (arm.shell) planned.workspace.reach = arm.shell;
     PlanResult result = plan_rod(planned, options, initial);
+    if (collided && result.status != PlanStatus::Complete) {
+      collided->message += " (a re-plan with the reach shell " + describe_shell(*arm.shell) +
+                           " did not complete: " + to_string(result.status) + ")";
+      collided->arm->message = collided->message.substr(std::string("the arm: ").size());
+      return std::move(*collided);
+    }
     arm.joints = {};
     arm.joints.joint_names = model.joint_names();
     if (!nothing_to_check(result, start, arm)) {
-      const std::optional<Unreachable> unreachable =
-          check_reach(problem, result, start, arm_options, arm);
-      if (unreachable && tighten_for_replan(problem, arm_options, start, *unreachable, arm))
-        continue;
+      const std::optional<Unreachable> unreachable = check_reach(problem, result, start, arm);
+      if (unreachable) {
+        ArmPlanResult before = arm;  // as it would be reported without a re-plan
+        if (tighten_for_replan(problem, arm_options, start, *unreachable, arm)) {
+          if (unreachable->collision && result.status == PlanStatus::Complete) {
+            before.status = ArmPlanStatus::Collision;
+            before.message = unreachable->failure;
+            report_link_gap(start, before, result);
+            result.arm = std::move(before);
+            collided = std::move(result);
+          }
+          continue;
+        }
+      }
     }
     report_link_gap(start, arm, result);
     result.arm = std::move(arm);

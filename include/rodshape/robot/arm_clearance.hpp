@@ -64,11 +64,13 @@ class ArmClearance {
   /// The gap capsule c must keep from obstacle j.
   double required_gap(int c, int j) const;
 
+  /// Whether the pair of `gap` is a mount pair (a capsule of the mount on what it stands on).
+  bool is_mount(const LinkGap& gap) const;
   /// The pair with the least margin at `q`, over the obstacles and every rod in `rods` (each may
-  /// be null).
+  /// be null); mount pairs count only where they sink deeper than at the mount positions.
   LinkGap least_gap(const Eigen::VectorXd& q, const std::vector<const RodNodes*>& rods = {}) const;
   /// Every pair (capsule, obstacle) and (capsule, rod: its nearest segment) whose gap is below its
-  /// required gap plus `influence`, with its gradient in q, into `rows`.
+  /// required gap plus `influence`, with its gradient in q, into `rows` (mount pairs left out).
   void near_pairs(const Eigen::VectorXd& q,
                   const std::vector<const RodNodes*>& rods,
                   double influence,
@@ -93,6 +95,7 @@ class ArmClearance {
   Pose world_T_base_;
   Scene scene_;
   std::vector<double> required_;  // per capsule × obstacle
+  std::vector<bool> mount_;  // per capsule × obstacle
   std::vector<bool> checks_rod_;
 };
 
