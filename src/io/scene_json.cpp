@@ -62,7 +62,7 @@ Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
         {"t", json_number(robot.t)},
         {"step", robot.step},
         {"link", robot.link},
-        {"obstacle", robot.obstacle < 0              ? Json("rod")
+        {"obstacle", robot.obstacle < 0            ? Json("rod")
                      : robot.obstacle_name.empty() ? Json(robot.obstacle)
                                                    : Json(robot.obstacle_name)}};
   }

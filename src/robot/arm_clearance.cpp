@@ -42,22 +42,23 @@ ArmClearance::ArmClearance(const ArmModel& arm,
   LinkFrames frames;
   for_each_pair(q_mount, {}, std::numeric_limits<double>::infinity(), frames,
                 [&](const Measured& x) {
-    const int f = capsules[static_cast<std::size_t>(x.gap.capsule)].frame;
-    if (x.gap.obstacle >= 0 && arm_.joints_moving_frame(f) <= kMountJoints) {
-      double& required = required_[static_cast<std::size_t>(x.gap.capsule) * m +
-                                   static_cast<std::size_t>(x.gap.obstacle)];
-      if (x.gap.gap < required) {
-        required = x.gap.gap;
-        mount_[static_cast<std::size_t>(x.gap.capsule) * m + static_cast<std::size_t>(x.gap.obstacle)] =
-            true;
-      }
-    }
-  });
+                  const int f = capsules[static_cast<std::size_t>(x.gap.capsule)].frame;
+                  if (x.gap.obstacle >= 0 && arm_.joints_moving_frame(f) <= kMountJoints) {
+                    double& required = required_[static_cast<std::size_t>(x.gap.capsule) * m +
+                                                 static_cast<std::size_t>(x.gap.obstacle)];
+                    if (x.gap.gap < required) {
+                      required = x.gap.gap;
+                      mount_[static_cast<std::size_t>(x.gap.capsule) * m +
+                             static_cast<std::size_t>(x.gap.obstacle)] = true;
+                    }
+                  }
+                });
 }
 
 bool ArmClearance::is_mount(const LinkGap& gap) const {
-  return gap.obstacle >= 0 && mount_[static_cast<std::size_t>(gap.capsule) * scene_.obstacles.size() +
-                                     static_cast<std::size_t>(gap.obstacle)];
+  return gap.obstacle >= 0 &&
+         mount_[static_cast<std::size_t>(gap.capsule) * scene_.obstacles.size() +
+                static_cast<std::size_t>(gap.obstacle)];
 }
 
 double ArmClearance::required_gap(int c, int j) const {
@@ -136,8 +137,7 @@ LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
                                 const std::vector<const RodNodes*>& rods) const {
   LinkGap least;
   thread_local LinkFrames frames;  // reused: no allocation once sized
-  for_each_pair(q, rods, std::numeric_limits<double>::infinity(), frames,
-                [&](const Measured& x) {
+  for_each_pair(q, rods, std::numeric_limits<double>::infinity(), frames, [&](const Measured& x) {
     // The mount's own gap is not news: it counts only when it sinks deeper.
     if (is_mount(x.gap) && x.gap.clear()) return;
     if (x.gap.margin < least.margin) least = x.gap;
@@ -165,9 +165,10 @@ std::string ArmClearance::describe(const LinkGap& gap) const {
   const std::string link =
       "link " + arm_.link_capsules()[static_cast<std::size_t>(gap.capsule)].label();
   const std::string what =
-      gap.obstacle >= 0 ? "obstacle " + scene_.obstacles[static_cast<std::size_t>(gap.obstacle)]
-                                            .label(gap.obstacle)
-                        : std::string("the rod");
+      gap.obstacle >= 0
+          ? "obstacle " +
+                scene_.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle)
+          : std::string("the rod");
   return link + ", " + what + ", gap " + millimetres(gap.gap) + " (required " +
          millimetres(gap.gap - gap.margin) + ")";
 }

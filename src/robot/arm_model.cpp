@@ -359,7 +359,8 @@ void read_link_capsules(const urdf::Link& link,
     for (std::size_t j = 0; j < own.size() && ball && !covered; ++j) {
       const bool other_ball = own[j].from == own[j].to;
       // a ball inside another ball: drop the smaller (the first of two equal ones survives)
-      if (j != i && (!other_ball || own[j].radius > own[i].radius || (own[j].radius == own[i].radius && j < i)))
+      if (j != i && (!other_ball || own[j].radius > own[i].radius ||
+                     (own[j].radius == own[i].radius && j < i)))
         covered = ball_within(own[i].from, own[i].radius, own[j]);
     }
     if (!covered) capsules.push_back(own[i]);
@@ -445,9 +446,7 @@ int ArmModel::joints() const { return static_cast<int>(impl_->joints.size()); }
 const std::vector<JointInfo>& ArmModel::joint_info() const { return impl_->joints; }
 double ArmModel::reach() const { return impl_->reach; }
 const std::vector<LinkCapsule>& ArmModel::link_capsules() const { return impl_->capsules; }
-const std::vector<std::string>& ArmModel::collision_notes() const {
-  return impl_->collision_notes;
-}
+const std::vector<std::string>& ArmModel::collision_notes() const { return impl_->collision_notes; }
 const std::vector<std::string>& ArmModel::frame_links() const { return impl_->frame_links; }
 int ArmModel::joints_moving_frame(int f) const {
   return impl_->frame_joints.at(static_cast<std::size_t>(f));

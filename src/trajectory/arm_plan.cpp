@@ -16,8 +16,8 @@ void ArmPlanOptions::validate() const {
   detail::require_non_negative("ArmPlanOptions.link_influence", link_influence);
   if (link_influence > Scene::kMaxClearance)
     throw InputError("ArmPlanOptions.link_influence",
-                     " = " + detail::format_value(link_influence) + " must be <= " +
-                         detail::format_value(Scene::kMaxClearance) + " m");
+                     " = " + detail::format_value(link_influence) +
+                         " must be <= " + detail::format_value(Scene::kMaxClearance) + " m");
   reach.validate();
   joints.ik.validate();
 }
@@ -312,7 +312,8 @@ void report_link_gap(const ArmStart& start, const ArmPlanResult& arm, PlanResult
     robot.link = clearance->arm().link_capsules()[static_cast<std::size_t>(gap.capsule)].label();
     robot.obstacle = gap.obstacle;
     if (gap.obstacle >= 0)
-      robot.obstacle_name = clearance->scene().obstacles[static_cast<std::size_t>(gap.obstacle)].name;
+      robot.obstacle_name =
+          clearance->scene().obstacles[static_cast<std::size_t>(gap.obstacle)].name;
     robot.note = clearance->describe(gap);
     result.scene->robot = std::move(robot);
   }

@@ -120,11 +120,11 @@ std::string PlanResult::brief(int steps_requested) const {
   if (scene && scene->robot) {
     out << "; least gap of the arm's links " << std::setprecision(3) << scene->robot->min_gap * 1e3
         << " mm (" << scene->robot->link << ", "
-        << (scene->robot->obstacle < 0 ? std::string("the rod")
-                                       : "obstacle " + (scene->robot->obstacle_name.empty()
-                                                            ? std::to_string(scene->robot->obstacle)
-                                                            : "'" + scene->robot->obstacle_name +
-                                                                  "'"))
+        << (scene->robot->obstacle < 0
+                ? std::string("the rod")
+                : "obstacle " + (scene->robot->obstacle_name.empty()
+                                     ? std::to_string(scene->robot->obstacle)
+                                     : "'" + scene->robot->obstacle_name + "'"))
         << ")";
   }
   if (arm && arm->shell) {

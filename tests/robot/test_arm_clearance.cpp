@@ -72,7 +72,8 @@ double brute_force_least_margin(const ArmClearance& clearance,
       const Eigen::Vector3d p = a + (k / 1000.0) * (b - a);
       for (std::size_t j = 0; j < clearance.scene().obstacles.size(); ++j) {
         const double gap = clearance.scene().obstacles[j].distance(p).distance - capsule.radius;
-        least = std::min(least, gap - clearance.required_gap(static_cast<int>(c), static_cast<int>(j)));
+        least =
+            std::min(least, gap - clearance.required_gap(static_cast<int>(c), static_cast<int>(j)));
       }
       if (rod != nullptr && clearance.checks_rod(static_cast<int>(c))) {
         for (std::size_t i = 0; i + 1 < rod->size(); ++i) {
@@ -139,7 +140,8 @@ TEST(ArmClearance, GapGradientsMatchCentralDifferences) {
       same = same && plus.size() == rows.size() && minus.size() == rows.size();
       if (!same) break;
       for (std::size_t k = 0; k < rows.size(); ++k)  // gap = required + influence - shortfall
-        numeric(static_cast<Eigen::Index>(k), j) = -(plus[k].shortfall - minus[k].shortfall) / (2 * h);
+        numeric(static_cast<Eigen::Index>(k), j) =
+            -(plus[k].shortfall - minus[k].shortfall) / (2 * h);
     }
     ASSERT_TRUE(same);
     for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -171,8 +173,8 @@ TEST(ArmClearance, TheMountMayStandOnTheTableAndTheHandMayHoldTheRod) {
   // The rod through the hand is not a collision; through the forearm it is.
   LinkFrames frames;
   arm.link_frames(samples::panda_ready_pose(), frames);
-  const Eigen::Vector3d fingertip = frames.frames[8].rotation * Eigen::Vector3d(0, 0, 0.1034) +
-                                    frames.frames[8].position;
+  const Eigen::Vector3d fingertip =
+      frames.frames[8].rotation * Eigen::Vector3d(0, 0, 0.1034) + frames.frames[8].position;
   const RodNodes held{fingertip, fingertip + Eigen::Vector3d(0, 0, -0.2)};
   for (int c = 0; c < static_cast<int>(arm.link_capsules().size()); ++c)
     EXPECT_EQ(clearance.checks_rod(c), arm.link_capsules()[c].frame < 7) << c;

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numbers>
 #include <random>
@@ -134,9 +134,9 @@ TEST(LinkCapsules, PandaHasFrankasCapsulesAndAHand) {
   // z = 0.0857 + 0.02725 + their radius in the flange frame (beyond the fingertip centre, 0.1034).
   std::vector<std::string> names;
   for (const LinkCapsule& c : by_link["panda_link8"]) names.push_back(c.label());
-  EXPECT_EQ(names, (std::vector<std::string>{"panda_link8 (hand)", "panda_link8 (hand)",
-                                             "panda_link8 (left_finger)",
-                                             "panda_link8 (right_finger)"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"panda_link8 (hand)", "panda_link8 (hand)",
+                                      "panda_link8 (left_finger)", "panda_link8 (right_finger)"}));
   const LinkCapsule& hand = by_link["panda_link8"][0];
   EXPECT_NEAR((hand.to - hand.from).norm() + 2 * hand.radius, 0.18, 1e-12);
   const LinkCapsule& finger = by_link["panda_link8"][2];
@@ -179,7 +179,8 @@ TEST(LinkCapsules, LinkFramesMatchTheDhTable) {
   EXPECT_LE(bottom.norm(), 1e-12);
   const double s = std::sqrt(0.5);
   const Eigen::Vector3d elbow(-0.316 * s + 0.0825 * s, 0.0, 0.333 + 0.316 * s + 0.0825 * s);
-  EXPECT_LE((frames.frames[4].position - elbow).norm(), 1e-12) << frames.frames[4].position.transpose();
+  EXPECT_LE((frames.frames[4].position - elbow).norm(), 1e-12)
+      << frames.frames[4].position.transpose();
 }
 
 TEST(LinkCapsules, PointJacobianMatchesCentralDifferences) {

@@ -1,8 +1,8 @@
 // test_arm_link_clearance.cpp: plans whose arm keeps its links off the scene. The bundled shelf
 // example completes with every link clear, checked sample by sample independently of the planner;
-// without the links' null-space term the same plan's forearm runs 4 cm into the board; an obstacle on the hand's own path, which no redundancy can avoid, gives the status
-// collision naming the step, the link, the obstacle and the gap; a scene plan without link
-// geometry has no robot gap.
+// without the links' null-space term the same plan's forearm runs 4 cm into the board; an obstacle
+// on the hand's own path, which no redundancy can avoid, gives the status collision naming the
+// step, the link, the obstacle and the gap; a scene plan without link geometry has no robot gap.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -19,7 +19,8 @@ const std::string kShelf = std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_pa
 /// The least link gap over the joint trajectory's samples against the scene alone, measured anew.
 LinkGap replay_link_gap(const PlanTask& task, const PlanResult& plan, int& sample) {
   const ArmClearance clearance(task.problem.arm->model, task.problem.arm->placement.world_T_base,
-                               task.problem.scene, task.options.arm.joints.first_seed(task.problem.arm->model));
+                               task.problem.scene,
+                               task.options.arm.joints.first_seed(task.problem.arm->model));
   LinkGap least;
   for (std::size_t i = 0; i < plan.arm->joints.q.size(); ++i) {
     const LinkGap gap = clearance.least_gap(plan.arm->joints.q[i]);
@@ -69,7 +70,7 @@ TEST(ArmLinkClearance, WithoutTheNullSpaceTermTheForearmRunsIntoTheBoard) {
   const std::string link =
       task.problem.arm->model.link_capsules()[static_cast<std::size_t>(replay.capsule)].link;
   EXPECT_EQ(link, "panda_link5");  // the forearm, from the elbow to the wrist
-  EXPECT_LT(replay.gap, -0.04);     // 4.35 cm deep into the board
+  EXPECT_LT(replay.gap, -0.04);    // 4.35 cm deep into the board
 }
 
 // A ball just above the flange on its way: the flange's link moves with the hand, so no motion

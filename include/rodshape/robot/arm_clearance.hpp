@@ -41,7 +41,7 @@ struct LinkGap {
 
 /// One pair within the influence distance: its shortfall and the gradient of its gap.
 struct LinkGapRow {
-  double shortfall = 0.0;  // required + influence - gap, > 0
+  double shortfall = 0.0;    // required + influence - gap, > 0
   Eigen::VectorXd gradient;  // ∂gap/∂q (n)
 };
 
@@ -95,7 +95,7 @@ class ArmClearance {
   Pose world_T_base_;
   Scene scene_;
   std::vector<double> required_;  // per capsule × obstacle
-  std::vector<bool> mount_;  // per capsule × obstacle
+  std::vector<bool> mount_;       // per capsule × obstacle
   std::vector<bool> checks_rod_;
 };
 

@@ -73,13 +73,13 @@ struct TrackingResult {
 struct RobotGapResult {
   double min_gap = std::numeric_limits<double>::infinity();  // m
   double margin = std::numeric_limits<double>::infinity();   // min_gap - its required gap
-  int sample = -1;     // the joint trajectory's sample
-  double t = 0.0;      // its time, s
-  int step = -1;       // the waypoint it moves towards (0: the initial pose)
-  std::string link;    // the capsule's label ("panda_link4", "panda_link8 (hand)")
-  int obstacle = -1;     // index into Scene::obstacles; -1: the rod
+  int sample = -1;                                           // the joint trajectory's sample
+  double t = 0.0;                                            // its time, s
+  int step = -1;              // the waypoint it moves towards (0: the initial pose)
+  std::string link;           // the capsule's label ("panda_link4", "panda_link8 (hand)")
+  int obstacle = -1;          // index into Scene::obstacles; -1: the rod
   std::string obstacle_name;  // its name (empty: unnamed, or the rod)
-  std::string note;      // "link panda_link4, obstacle 'shelf', gap 3.2 mm (required 5 mm)"
+  std::string note;           // "link panda_link4, obstacle 'shelf', gap 3.2 mm (required 5 mm)"
   bool clear() const { return margin >= -SceneGap::kTolerance; }
 };
 
