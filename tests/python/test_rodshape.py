@@ -405,7 +405,7 @@ def test_the_shelf_plan_keeps_the_arms_links_clear():
     assert robot is not None and robot.clear()
     assert plan.scene.robot_min_gap == robot.min_gap >= 0.01
     assert robot.link == "panda_link5" and robot.obstacle_name == "board"
-    assert plan.joint_trajectory.clearance_steps > 0
+    assert plan.result.joints.clearance_steps > 0
     arm = rodshape.panda()
     assert len(arm.link_capsules) == 14 and arm.collision_notes == []
     assert arm.link_capsules[-1].label() == "panda_link8 (right_finger)"
