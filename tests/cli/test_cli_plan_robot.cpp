@@ -249,6 +249,20 @@ TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
   EXPECT_NE(outcome.err.find("robot.urdf"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find((directory_ / "nowhere.urdf").string()), std::string::npos)
       << outcome.err;
+
+  // robot.links: checked like the rest, the field and its line named.
+  const std::string links = example_text() + "  links: {clearance: true, influence: -0.5}\n";
+  outcome = plan(write_task("links.yaml", links), directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("robot.links.influence = -0.5 must be >= 0"), std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find(":" + std::to_string(line_of(links, "  links:")) + ":"),
+            std::string::npos)
+      << outcome.err;
+  outcome = plan(write_task("links2.yaml", example_text() + "  links: {clearence: false}\n"),
+                 directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("did you mean 'clearance'"), std::string::npos) << outcome.err;
 }
 
 TEST_F(CliPlanRobot, AnArmTooFarFromTheClampIsBadInputGivingTheWristsDistance) {
