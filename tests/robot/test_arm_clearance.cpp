@@ -72,8 +72,12 @@ double brute_force_least_margin(const ArmClearance& clearance,
       const Eigen::Vector3d p = a + (k / 1000.0) * (b - a);
       for (std::size_t j = 0; j < clearance.scene().obstacles.size(); ++j) {
         const double gap = clearance.scene().obstacles[j].distance(p).distance - capsule.radius;
-        least =
-            std::min(least, gap - clearance.required_gap(static_cast<int>(c), static_cast<int>(j)));
+        LinkGap pair;
+        pair.capsule = static_cast<int>(c);
+        pair.obstacle = static_cast<int>(j);
+        pair.margin = gap - clearance.required_gap(pair.capsule, pair.obstacle);
+        if (clearance.is_mount(pair) && pair.clear()) continue;  // as least_gap(): not news
+        least = std::min(least, pair.margin);
       }
       if (rod != nullptr && clearance.checks_rod(static_cast<int>(c))) {
         for (std::size_t i = 0; i + 1 < rod->size(); ++i) {
