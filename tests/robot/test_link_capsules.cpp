@@ -99,8 +99,10 @@ TEST(LinkCapsules, ACylinderOfNegativeLengthIsBadInput) {
   try {
     (void)ArmModel::from_urdf_string(urdf);
     FAIL() << "no InputError";
-  } catch (const rodshape::InputError& error) {  // ours, or urdfdom's refusal
-    EXPECT_NE(std::string(error.what()).find("URDF"), std::string::npos) << error.what();
+  } catch (const rodshape::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("link 'arm': <collision> cylinder length = -0.3"),
+              std::string::npos)
+        << error.what();
   }
 }
 

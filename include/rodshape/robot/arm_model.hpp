@@ -2,6 +2,9 @@
 // tip link, its joint limits (position and velocity), forward kinematics and the tip's Jacobian.
 // The chain is held by Orocos KDL and the URDF is read by urdfdom; neither appears here (pimpl).
 //
+// The links' collision geometry (<collision> boxes, spheres, cylinders) is read as capsules
+// (link_capsule.hpp), with every link frame and point Jacobians for the clearance terms.
+//
 // Frames: world_T_tip is the tip link's pose in the base link's frame. The Jacobian maps joint
 // velocities to the tip's twist [v; ω], both in the base frame, v being the tip origin's velocity.
 #pragma once
