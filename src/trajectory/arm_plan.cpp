@@ -221,7 +221,7 @@ std::optional<Unreachable> check_reach(const PlanProblem& problem,
     std::ostringstream failure;
     failure.precision(4);
     failure << "the arm's links come too near at step " << step << " (sample " << i
-            << ", t = " << plan.end_effector_path[static_cast<std::size_t>(i)].t
+            << ", t = " << arm.joints.t[static_cast<std::size_t>(i)]
             << " s): " << joint_options.clearance->describe(arm.joints.link_gap);
     return Unreachable{failure.str(), plan.end_effector_path[static_cast<std::size_t>(i)].pose,
                        true};
