@@ -12,6 +12,16 @@ namespace rodshape::python {
 namespace {
 
 void bind_arm(py::module_& m) {
+  py::class_<LinkCapsule>(m, "LinkCapsule",
+                          "A link's collision capsule: the points within `radius` of [from, to] "
+                          "in the link's frame.")
+      .def_readonly("link", &LinkCapsule::link)
+      .def_readonly("name", &LinkCapsule::name)
+      .def_readonly("frame", &LinkCapsule::frame)
+      .def_readonly("from_", &LinkCapsule::from, "m, in the link's frame")
+      .def_readonly("to", &LinkCapsule::to, "m, in the link's frame")
+      .def_readonly("radius", &LinkCapsule::radius, "m")
+      .def("label", &LinkCapsule::label);
   py::class_<ArmModel>(m, "ArmModel",
                        "A serial arm: the chain from a base link to a tip link of a URDF, its "
                        "joint limits, forward kinematics and Jacobian (base frame).")
@@ -41,6 +51,10 @@ void bind_arm(py::module_& m) {
             return Eigen::MatrixXd(J);
           },
           py::arg("q"), "(6, n) Jacobian of the tip's twist (v then ω, base frame).")
+      .def_property_readonly("link_capsules", &ArmModel::link_capsules,
+                             "the links' collision capsules read from the URDF's <collision>")
+      .def_property_readonly("collision_notes", &ArmModel::collision_notes,
+                             "what of the collision geometry was not read (meshes)")
       .def("reach", &ArmModel::reach, "An upper bound of the tip's distance from the base, m.")
       .def("check_joint_positions", &ArmModel::check_joint_positions, py::arg("q"),
            py::arg("what") = "q", py::arg("tolerance") = 1e-12,

@@ -62,6 +62,19 @@ void bind_scene(py::module_& m) {
       .def_readwrite("clearance", &Scene::clearance, "m, least gap of the rod's surface")
       .def_readwrite("rod_radius", &Scene::rod_radius, "m, the section's circumscribed radius")
       .def("validate", &Scene::validate);
+  py::class_<RobotGapResult>(m, "RobotGapResult",
+                             "The least gap of an arm's links to the scene or the rod over the "
+                             "joint trajectory's samples.")
+      .def_readonly("min_gap", &RobotGapResult::min_gap, "m")
+      .def_readonly("margin", &RobotGapResult::margin, "min_gap minus its required gap, m")
+      .def_readonly("sample", &RobotGapResult::sample, "the joint trajectory's sample")
+      .def_readonly("t", &RobotGapResult::t, "its time, s")
+      .def_readonly("step", &RobotGapResult::step, "the waypoint it moves towards")
+      .def_readonly("link", &RobotGapResult::link, "the capsule's label, e.g. 'panda_link5'")
+      .def_readonly("obstacle", &RobotGapResult::obstacle, "index into the obstacles; -1: the rod")
+      .def_readonly("obstacle_name", &RobotGapResult::obstacle_name)
+      .def_readonly("note", &RobotGapResult::note)
+      .def("clear", &RobotGapResult::clear);
   py::class_<SceneResult>(m, "SceneResult", "A plan's least gap to its scene.")
       .def_readonly("clearance", &SceneResult::clearance)
       .def_readonly("min_gap", &SceneResult::min_gap, "m")
@@ -71,6 +84,15 @@ void bind_scene(py::module_& m) {
       .def_readonly("obstacle", &SceneResult::obstacle)
       .def_readonly("obstacle_label", &SceneResult::obstacle_label)
       .def_readonly("detours", &SceneResult::detours)
+      .def_readonly("robot", &SceneResult::robot,
+                    "with an arm that has collision geometry, its RobotGapResult, else None")
+      .def_property_readonly(
+          "robot_min_gap",
+          [](const SceneResult& r) -> std::optional<double> {
+            if (!r.robot) return std::nullopt;
+            return r.robot->min_gap;
+          },
+          "the least gap of the arm's links (m), or None")
       .def("clear", &SceneResult::clear);
 }
 

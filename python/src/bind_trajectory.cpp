@@ -59,6 +59,8 @@ void bind_joint_trajectory(py::module_& m) {
           "(samples, joints) rad/s or m/s")
       .def_readonly("slowdown", &JointTrajectoryResult::slowdown)
       .def_readonly("max_position_error", &JointTrajectoryResult::max_position_error, "m")
+      .def_readonly("clearance_steps", &JointTrajectoryResult::clearance_steps,
+                    "null-space steps that kept the links clear")
       .def("complete", &JointTrajectoryResult::complete)
       .def("brief", &JointTrajectoryResult::brief);
 }

@@ -34,6 +34,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"ArmPlanOptions.reach_margin", "robot.reach.margin"},
       {"ArmPlanOptions.replan_tightening", "robot.reach.tightening"},
       {"ArmPlanOptions.max_replans", "robot.reach.max_replans"},
+      {"ArmPlanOptions.link_influence", "robot.links.influence"},
       {"ArmPlanOptions.joints.seed", "robot.seed"},
       {"ArmReachOptions.samples", "robot.reach.samples"},
       {"ArmReachOptions.refinement_steps", "robot.reach.refinement_steps"},

@@ -205,7 +205,7 @@ void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& o
 
 void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {
   robot.expect_mapping(
-      {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach"},
+      {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach", "links"},
       {{"flange_T_ee", "the end effector on the flange is robot.flange_to_end_effector"},
        {"tool", "the end effector on the flange is robot.flange_to_end_effector"},
        {"world_T_base", "the arm's base in the world is robot.base"}});
@@ -256,6 +256,13 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
     read_integer(reach, "max_replans", options.max_replans, 0, ArmPlanOptions::kMaxReplans);
     read_integer(reach, "samples", options.reach.samples, 1, ArmReachOptions::kMaxSamples);
     reach.located([&] { options.validate(); });
+  }
+  if (const YamlField links = robot.get("links"); links.present()) {
+    links.expect_mapping({"clearance", "influence"});
+    if (const YamlField clearance = links.get("clearance"); clearance.present())
+      options.link_clearance = clearance.boolean();
+    read_number(links, "influence", options.link_influence);
+    links.located([&] { options.validate(); });
   }
 }
 

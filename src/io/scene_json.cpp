@@ -52,6 +52,20 @@ Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
   }
   json["obstacles_per_step"] = result->obstacles_per_step;
   json["detours"] = result->detours;
+  if (result->robot) {  // with an arm that has collision geometry
+    const RobotGapResult& robot = *result->robot;
+    json["robot_min_gap"] = json_number(robot.min_gap);
+    json["robot_margin"] = json_number(robot.margin);
+    json["robot_clear"] = robot.clear();
+    json["robot_min_gap_at"] = {
+        {"sample", robot.sample},
+        {"t", json_number(robot.t)},
+        {"step", robot.step},
+        {"link", robot.link},
+        {"obstacle", robot.obstacle < 0            ? Json("rod")
+                     : robot.obstacle_name.empty() ? Json(robot.obstacle)
+                                                   : Json(robot.obstacle_name)}};
+  }
   return json;
 }
 

@@ -15,12 +15,15 @@
 #include <kdl/jacobian.hpp>
 #include <kdl/jntarray.hpp>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -43,6 +46,10 @@ struct ArmModel::Impl {
   KDL::Chain chain;
   std::vector<JointInfo> joints;
   double reach = 0.0;
+  std::vector<LinkCapsule> capsules;
+  std::vector<std::string> collision_notes;
+  std::vector<std::string> frame_links;  // the base link, then each segment's child link
+  std::vector<int> frame_joints;         // moving joints that move each frame
 };
 
 namespace {
@@ -260,6 +267,109 @@ KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
   return array;
 }
 
+Eigen::Vector3d to_eigen(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
+
+Eigen::Matrix3d to_eigen(const urdf::Rotation& r) {
+  double x = 0.0, y = 0.0, z = 0.0, w = 1.0;
+  r.getQuaternion(x, y, z, w);
+  return Eigen::Quaterniond(w, x, y, z).normalized().toRotationMatrix();
+}
+
+/// The capsule that covers one <collision> primitive (link_capsule.hpp), in the link's frame;
+/// nullopt for a mesh (a note says so).
+std::optional<LinkCapsule> capsule_of(const urdf::Collision& collision,
+                                      const std::string& link,
+                                      int frame,
+                                      const std::string& source,
+                                      std::vector<std::string>& notes) {
+  const std::string where = source + ": link " + quoted(link) + ": <collision>";
+  if (!collision.geometry) return std::nullopt;
+  const Eigen::Vector3d origin = to_eigen(collision.origin.position);
+  const Eigen::Matrix3d rotation = to_eigen(collision.origin.rotation);
+  LinkCapsule capsule;
+  capsule.link = link;
+  capsule.name = collision.name;
+  capsule.frame = frame;
+  Eigen::Vector3d half_axis = Eigen::Vector3d::Zero();  // in the collision's own frame
+  const urdf::Geometry& geometry = *collision.geometry;
+  switch (geometry.type) {
+    case urdf::Geometry::SPHERE:
+      capsule.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      break;
+    case urdf::Geometry::CYLINDER: {
+      const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
+      capsule.radius = cylinder.radius;
+      half_axis = Eigen::Vector3d(0.0, 0.0, 0.5 * cylinder.length);
+      if (!std::isfinite(cylinder.length) || cylinder.length < 0.0)
+        throw InputError(where + " cylinder length = " + detail::format_value(cylinder.length) +
+                         " must be finite and >= 0");
+      break;
+    }
+    case urdf::Geometry::BOX: {
+      const Eigen::Vector3d size = to_eigen(static_cast<const urdf::Box&>(geometry).dim);
+      if (!size.allFinite() || (size.array() < 0.0).any())
+        throw InputError(where + " box size must be finite and >= 0");
+      Eigen::Index longest = 0;
+      size.maxCoeff(&longest);
+      half_axis(longest) = 0.5 * size(longest);
+      capsule.radius = 0.5 * std::sqrt(size.squaredNorm() - size(longest) * size(longest));
+      break;
+    }
+    case urdf::Geometry::MESH:
+      notes.push_back("link " + quoted(link) + ": a <mesh> collision" +
+                      (collision.name.empty() ? "" : " " + quoted(collision.name)) +
+                      " is ignored (meshes are not read; give spheres, cylinders or boxes)");
+      return std::nullopt;
+    default:
+      return std::nullopt;
+  }
+  if (!std::isfinite(capsule.radius) || capsule.radius < 0.0)
+    throw InputError(where + " radius = " + detail::format_value(capsule.radius) +
+                     " must be finite and >= 0");
+  capsule.from = origin - rotation * half_axis;
+  capsule.to = origin + rotation * half_axis;
+  if (!capsule.from.allFinite() || !capsule.to.allFinite())
+    throw InputError(where + " <origin> is not finite");
+  return capsule;
+}
+
+/// Whether the ball (c, r) lies within the capsule.
+bool ball_within(const Eigen::Vector3d& c, double r, const LinkCapsule& capsule) {
+  const Eigen::Vector3d ab = capsule.to - capsule.from;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((c - capsule.from).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (c - capsule.from - t * ab).norm() + r <= capsule.radius + 1e-9;
+}
+
+/// The capsules of one link (frame `frame`), spheres inside another of its capsules dropped.
+void read_link_capsules(const urdf::Link& link,
+                        int frame,
+                        const std::string& source,
+                        std::vector<LinkCapsule>& capsules,
+                        std::vector<std::string>& notes) {
+  std::vector<LinkCapsule> own;
+  for (const urdf::CollisionSharedPtr& collision : link.collision_array) {
+    if (!collision) continue;
+    std::optional<LinkCapsule> capsule = capsule_of(*collision, link.name, frame, source, notes);
+    if (capsule) own.push_back(std::move(*capsule));
+  }
+  for (std::size_t i = 0; i < own.size(); ++i) {
+    const bool ball = own[i].from == own[i].to;
+    bool covered = false;
+    for (std::size_t j = 0; j < own.size() && ball && !covered; ++j) {
+      const bool other_ball = own[j].from == own[j].to;
+      // a ball inside another ball: drop the smaller (the first of two equal ones survives)
+      if (j != i && (!other_ball || own[j].radius > own[i].radius ||
+                     (own[j].radius == own[i].radius && j < i)))
+        covered = ball_within(own[i].from, own[i].radius, own[j]);
+    }
+    if (!covered) capsules.push_back(own[i]);
+  }
+  if (capsules.size() > static_cast<std::size_t>(ArmModel::kMaxLinkCapsules))
+    throw InputError(source + ": more than " + std::to_string(ArmModel::kMaxLinkCapsules) +
+                     " collision primitives on the chain's links");
+}
+
 }  // namespace
 
 ArmModel ArmModel::from_urdf_file(const std::string& path,
@@ -297,6 +407,9 @@ ArmModel ArmModel::from_urdf_string(const std::string& urdf,
   impl->robot_name = model->getName();
   impl->base_link = base->name;
   impl->tip_link = tip->name;
+  impl->frame_links.push_back(base->name);
+  impl->frame_joints.push_back(0);
+  read_link_capsules(*base, 0, source, impl->capsules, impl->collision_notes);
   for (const urdf::JointConstSharedPtr& joint : path) {
     const KDL::Segment segment = segment_of(*joint, source);
     impl->reach += segment.getFrameToTip().p.Norm();
@@ -306,6 +419,11 @@ ArmModel ArmModel::from_urdf_string(const std::string& urdf,
       if (info.prismatic) impl->reach += std::max(std::abs(info.lower), std::abs(info.upper));
     }
     impl->chain.addSegment(segment);
+    impl->frame_links.push_back(joint->child_link_name);
+    impl->frame_joints.push_back(static_cast<int>(impl->joints.size()));
+    read_link_capsules(*model->getLink(joint->child_link_name),
+                       static_cast<int>(impl->frame_links.size()) - 1, source, impl->capsules,
+                       impl->collision_notes);
   }
   if (impl->joints.empty()) {
     throw InputError(source + ": the chain from " + quoted(base->name) + " to " +
@@ -327,6 +445,12 @@ const std::string& ArmModel::tip_link() const { return impl_->tip_link; }
 int ArmModel::joints() const { return static_cast<int>(impl_->joints.size()); }
 const std::vector<JointInfo>& ArmModel::joint_info() const { return impl_->joints; }
 double ArmModel::reach() const { return impl_->reach; }
+const std::vector<LinkCapsule>& ArmModel::link_capsules() const { return impl_->capsules; }
+const std::vector<std::string>& ArmModel::collision_notes() const { return impl_->collision_notes; }
+const std::vector<std::string>& ArmModel::frame_links() const { return impl_->frame_links; }
+int ArmModel::joints_moving_frame(int f) const {
+  return impl_->frame_joints.at(static_cast<std::size_t>(f));
+}
 
 std::vector<std::string> ArmModel::joint_names() const {
   std::vector<std::string> names;
@@ -425,6 +549,49 @@ std::vector<JointAxis> ArmModel::joint_axes(const Eigen::VectorXd& q) const {
     base_T_parent = base_T_parent * segment.pose(q_segment);
   }
   return axes;
+}
+
+void ArmModel::link_frames(const Eigen::VectorXd& q, LinkFrames& out) const {
+  check_size(q, "q");
+  const KDL::Chain chain = evaluable_chain(impl_->chain);
+  const unsigned segments = chain.getNrOfSegments();
+  out.frames.resize(segments + 1);
+  out.axes.resize(impl_->joints.size());
+  out.frames[0] = Pose{};
+  KDL::Frame base_T_parent = KDL::Frame::Identity();
+  int j = 0;
+  for (unsigned i = 0; i < segments; ++i) {
+    const KDL::Segment& segment = chain.getSegment(i);
+    const KDL::Joint& joint = segment.getJoint();
+    double q_segment = 0.0;
+    if (joint.getType() != KDL::Joint::Fixed) {
+      const KDL::Vector origin = base_T_parent * joint.JointOrigin();
+      const KDL::Vector direction = base_T_parent.M * joint.JointAxis();
+      JointAxis& axis = out.axes[static_cast<std::size_t>(j)];
+      axis.origin = Eigen::Vector3d(origin.x(), origin.y(), origin.z());
+      axis.direction = Eigen::Vector3d(direction.x(), direction.y(), direction.z()).normalized();
+      q_segment = q(j++);
+    }
+    base_T_parent = base_T_parent * segment.pose(q_segment);
+    out.frames[i + 1] = to_pose(base_T_parent);
+  }
+}
+
+void ArmModel::point_jacobian(const LinkFrames& frames,
+                              int f,
+                              const Eigen::Vector3d& p,
+                              Eigen::Matrix<double, 3, Eigen::Dynamic>& J) const {
+  const int n = joints();
+  J.resize(3, n);
+  J.setZero();
+  const int moving = joints_moving_frame(f);
+  for (int j = 0; j < moving; ++j) {
+    const JointAxis& axis = frames.axes[static_cast<std::size_t>(j)];
+    if (impl_->joints[static_cast<std::size_t>(j)].prismatic)
+      J.col(j) = axis.direction;
+    else
+      J.col(j) = axis.direction.cross(p - axis.origin);
+  }
 }
 
 }  // namespace rodshape

@@ -80,6 +80,62 @@ class Solver {
     }
   }
 
+  /// The null-space clearance steps (inverse_kinematics.hpp) from the converged `attempt`, which
+  /// stays converged; returns the number of steps taken.
+  int improve_clearance(Attempt& attempt, const IkClearance& clearance) const {
+    std::vector<LinkGapRow> rows;
+    const auto shortfall = [&](const Eigen::VectorXd& q) {
+      clearance.clearance->near_pairs(q, clearance.rods, clearance.influence, rows);
+      double sum = 0.0;
+      for (const LinkGapRow& row : rows) sum += row.shortfall * row.shortfall;
+      return sum;
+    };
+    int steps = 0;
+    double current = shortfall(attempt.q);
+    for (int iteration = 0; iteration < clearance.max_iterations && current > 0.0; ++iteration) {
+      // rows hold the pairs at attempt.q
+      Pose pose;
+      Jacobian J(6, n_);
+      arm_.forward_kinematics(attempt.q, pose, J);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+      const Eigen::VectorXd& sigma = svd.singularValues();
+      const double threshold = 1e-9 * std::max(1.0, sigma(0));
+      Eigen::Index rank = 0;
+      while (rank < sigma.size() && sigma(rank) > threshold) ++rank;
+      const Eigen::MatrixXd N = svd.matrixV().rightCols(n_ - rank);
+      if (N.cols() == 0) break;
+      Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), n_);
+      Eigen::VectorXd s(static_cast<Eigen::Index>(rows.size()));
+      for (std::size_t k = 0; k < rows.size(); ++k) {
+        A.row(static_cast<Eigen::Index>(k)) = rows[k].gradient.transpose();
+        s(static_cast<Eigen::Index>(k)) = rows[k].shortfall;
+      }
+      const Eigen::MatrixXd AN = A * N;
+      const Eigen::MatrixXd H =
+          AN.transpose() * AN + 1e-6 * Eigen::MatrixXd::Identity(N.cols(), N.cols());
+      Eigen::VectorXd dq = N * H.ldlt().solve(AN.transpose() * s);
+      const double largest = dq.cwiseAbs().maxCoeff();
+      if (!(largest > 1e-12)) break;
+      if (largest > kMaxStep) dq *= kMaxStep / largest;
+      bool accepted = false;
+      for (int halving = 0; halving < 7 && !accepted; ++halving, dq *= 0.5) {
+        Attempt trial = run(clamp(attempt.q + dq));
+        if (!trial.converged) continue;
+        const double value = shortfall(trial.q);
+        if (value < current) {
+          trial.iterations += attempt.iterations;
+          attempt = std::move(trial);
+          current = value;
+          accepted = true;
+        }
+      }
+      if (!accepted) break;
+      ++steps;
+      shortfall(attempt.q);  // the rows at the new q
+    }
+    return steps;
+  }
+
   bool within_tolerance(const Vector6& e) const {
     return e.head<3>().norm() <= options_.position_tolerance &&
            e.tail<3>().norm() <= options_.rotation_tolerance;
@@ -204,6 +260,14 @@ IkResult solve_ik(const ArmModel& arm,
                   const Pose& target,
                   const Eigen::VectorXd& seed,
                   const IkOptions& options) {
+  return solve_ik(arm, target, seed, options, IkClearance{});
+}
+
+IkResult solve_ik(const ArmModel& arm,
+                  const Pose& target,
+                  const Eigen::VectorXd& seed,
+                  const IkOptions& options,
+                  const IkClearance& clearance) {
   options.validate();
   arm.check_joint_positions(seed, "seed");
   detail::require_finite("target.position", target.position);
@@ -243,6 +307,8 @@ IkResult solve_ik(const ArmModel& arm,
     if (best.converged) break;
   }
 
+  if (best.converged && clearance.clearance != nullptr && arm.joints() > 6)
+    result.clearance_steps = solver.improve_clearance(best, clearance);
   result.q = best.q;
   result.position_error = best.error.head<3>().norm();
   result.rotation_error = best.error.tail<3>().norm();

@@ -74,7 +74,20 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
     const TimedPose& sample = path[i];
     if (!std::isfinite(sample.t) || (i > 0 && !(sample.t > path[i - 1].t)))
       throw InputError("joint_trajectory: the path's sample times must be finite and increasing");
-    const IkResult ik = solve_ik(arm, flange_target(placement, sample.pose), seed, options.ik);
+    IkClearance clearance;
+    if (options.clearance) {
+      clearance.clearance = options.clearance.get();
+      clearance.influence = options.clearance_influence;
+      if (!options.rods.empty()) {
+        const int last = static_cast<int>(options.rods.size()) - 1;
+        const int to = std::clamp(
+            i < options.sample_waypoint.size() ? options.sample_waypoint[i] : last, 0, last);
+        clearance.rods = {&options.rods[static_cast<std::size_t>(std::max(to - 1, 0))],
+                          &options.rods[static_cast<std::size_t>(to)]};
+      }
+    }
+    const IkResult ik =
+        solve_ik(arm, flange_target(placement, sample.pose), seed, options.ik, clearance);
     if (!ik.converged()) {
       std::ostringstream message;
       message.precision(6);
@@ -86,6 +99,14 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
       return result;
     }
     if (ik.restarts > 0) ++result.ik_restarts;
+    if (options.clearance) {
+      result.clearance_steps += ik.clearance_steps;
+      const LinkGap gap = options.clearance->least_gap(ik.q, clearance.rods);
+      if (gap.capsule >= 0 && gap.margin < result.link_gap.margin) {
+        result.link_gap = gap;
+        result.link_gap_sample = static_cast<int>(i);
+      }
+    }
     result.max_position_error = std::max(result.max_position_error, ik.position_error);
     result.max_rotation_error = std::max(result.max_rotation_error, ik.rotation_error);
     result.t.push_back(sample.t);

@@ -128,6 +128,16 @@ std::string PlanResult::brief(int steps_requested) const {
         << " mm (obstacle " << scene->obstacle_label << ", clearance " << scene->clearance * 1e3
         << " mm)";
   }
+  if (scene && scene->robot) {
+    out << "; least gap of the arm's links " << std::setprecision(3) << scene->robot->min_gap * 1e3
+        << " mm (" << scene->robot->link << ", "
+        << (scene->robot->obstacle < 0
+                ? std::string("the rod")
+                : "obstacle " + (scene->robot->obstacle_name.empty()
+                                     ? std::to_string(scene->robot->obstacle)
+                                     : "'" + scene->robot->obstacle_name + "'"))
+        << ")";
+  }
   if (arm && arm->shell) {
     out << "; reach shell " << std::setprecision(3) << arm->shell->inner_radius << "–"
         << arm->shell->outer_radius << " m";

@@ -66,6 +66,7 @@ Eigen::Vector3d vector3(const Json& value) {
 struct PandaExample {
   const char* file;
   double base_x;
+  const char* name;
 };
 
 void PrintTo(const PandaExample& example, std::ostream* out) { *out << example.file; }
@@ -180,12 +181,46 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
 
 INSTANTIATE_TEST_SUITE_P(BundledPandaExamples,
                          CliPandaExamples,
-                         ::testing::Values(PandaExample{"plan_panda_s_curve.yaml", -0.45},
-                                           PandaExample{"plan_panda_reach_limit.yaml", -0.58}),
-                         [](const auto& info) {
-                           return info.param.base_x == -0.45 ? std::string("SCurve")
-                                                             : std::string("ReachLimit");
-                         });
+                         ::testing::Values(PandaExample{"plan_panda_s_curve.yaml", -0.45, "SCurve"},
+                                           PandaExample{"plan_panda_reach_limit.yaml", -0.58,
+                                                        "ReachLimit"},
+                                           PandaExample{"plan_panda_shelf.yaml", -0.45, "Shelf"}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// plan.json's scene with an arm: the least gap of the links over the joint trajectory and where;
+// the summary line says it. An obstacle on the hand's own way: exit 3, status collision, the step,
+// link, obstacle and gap named.
+TEST_F(CliPlanRobot, TheShelfPlanReportsTheLinksLeastGapAndAnUnavoidableObstacleExitsThree) {
+  const fs::path shelf = kSource / "examples" / "plan_panda_shelf.yaml";
+  const Outcome outcome = plan(shelf, directory_ / "out");
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  EXPECT_NE(outcome.out.find("least gap of the arm's links 40 mm (panda_link5, obstacle 'board')"),
+            std::string::npos)
+      << outcome.out;
+  const Json scene = Json::parse(read_file(directory_ / "out" / "plan.json")).at("scene");
+  EXPECT_GE(scene.at("robot_min_gap").get<double>(), 0.01);
+  EXPECT_EQ(scene.at("robot_clear"), true);
+  const Json& at = scene.at("robot_min_gap_at");
+  EXPECT_EQ(at.at("link"), "panda_link5");
+  EXPECT_EQ(at.at("obstacle"), "board");
+  EXPECT_GT(at.at("sample").get<int>(), 0);
+  EXPECT_GT(at.at("t").get<double>(), 0.0);
+
+  std::string text =
+      replaced_first(read_file(shelf), "urdf: ../data/robots/panda.urdf",
+                     "urdf: " + (kSource / "data" / "robots" / "panda.urdf").string());
+  text += "    - {name: lamp, shape: sphere, center: [0.09, 0, 0.62], radius: 0.03}\n";
+  const fs::path task = directory_ / "lamp.yaml";
+  std::ofstream(task) << text;
+  const Outcome collision = plan(task, directory_ / "lamp");
+  EXPECT_EQ(collision.exit_code, 3) << collision.err;
+  for (const char* word : {"collision", "step ", "link panda_link7", "obstacle 'lamp'", "gap "})
+    EXPECT_NE(collision.err.find(word), std::string::npos) << word << " in " << collision.err;
+  const Json lamp = Json::parse(read_file(directory_ / "lamp" / "plan.json"));
+  EXPECT_EQ(lamp.at("status"), "collision");
+  EXPECT_EQ(lamp.at("scene").at("robot_clear"), false);
+  EXPECT_EQ(lamp.at("scene").at("robot_min_gap_at").at("obstacle"), "lamp");
+}
 
 TEST_F(CliPlanRobot, AnUnknownTipLinkIsBadInputNamedWithItsLine) {
   const std::string text =
@@ -214,6 +249,20 @@ TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
   EXPECT_NE(outcome.err.find("robot.urdf"), std::string::npos) << outcome.err;
   EXPECT_NE(outcome.err.find((directory_ / "nowhere.urdf").string()), std::string::npos)
       << outcome.err;
+
+  // robot.links: checked like the rest, the field and its line named.
+  const std::string links = example_text() + "  links: {clearance: true, influence: -0.5}\n";
+  outcome = plan(write_task("links.yaml", links), directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("robot.links.influence = -0.5 must be >= 0"), std::string::npos)
+      << outcome.err;
+  EXPECT_NE(outcome.err.find(":" + std::to_string(line_of(links, "  links:")) + ":"),
+            std::string::npos)
+      << outcome.err;
+  outcome = plan(write_task("links2.yaml", example_text() + "  links: {clearence: false}\n"),
+                 directory_ / "out");
+  EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+  EXPECT_NE(outcome.err.find("did you mean 'clearance'"), std::string::npos) << outcome.err;
 }
 
 TEST_F(CliPlanRobot, AnArmTooFarFromTheClampIsBadInputGivingTheWristsDistance) {

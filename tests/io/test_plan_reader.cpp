@@ -400,6 +400,13 @@ TEST(PlanReader, BundledPlanExamplesRead) {
       EXPECT_TRUE(task.sensor.wrist.has_value());
       EXPECT_TRUE(task.closed_loop.estimation.gravity.has_value());
     }
+    if (name == "plan_panda_shelf.yaml") {  // the arm in a scene, its links kept clear
+      ASSERT_EQ(task.problem.scene.obstacles.size(), 4u);
+      EXPECT_EQ(task.problem.scene.obstacles[1].name, "board");
+      EXPECT_TRUE(task.options.arm.link_clearance);
+      EXPECT_DOUBLE_EQ(task.options.arm.link_influence, 0.03);
+      EXPECT_EQ(task.problem.arm->model.link_capsules().size(), 14u);
+    }
     if (name == "plan_around_post.yaml") {  // the one with a scene
       ASSERT_EQ(task.problem.scene.obstacles.size(), 2u);
       EXPECT_EQ(task.problem.scene.obstacles[1].name, "post");

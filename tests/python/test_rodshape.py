@@ -412,3 +412,16 @@ def test_the_bundled_post_is_passed_by_a_detour():
     assert plan.status == "complete", plan.message
     assert any(step.detour for step in plan.steps)
     assert plan.scene.clear()
+
+
+def test_the_shelf_plan_keeps_the_arms_links_clear():
+    plan = rodshape.plan(rodshape.load_task(str(EXAMPLES / "plan_panda_shelf.yaml")))
+    assert plan.status == "complete", plan.message
+    robot = plan.scene.robot
+    assert robot is not None and robot.clear()
+    assert plan.scene.robot_min_gap == robot.min_gap >= 0.01
+    assert robot.link == "panda_link5" and robot.obstacle_name == "board"
+    assert plan.result.joints.clearance_steps > 0
+    arm = rodshape.panda()
+    assert len(arm.link_capsules) == 14 and arm.collision_notes == []
+    assert arm.link_capsules[-1].label() == "panda_link8 (right_finger)"

@@ -1,5 +1,6 @@
 // test_plan_threads.cpp: plan() from several threads equals plan() in series, bit for bit, for a
-// task with an arm (whose model the threads share: the copies of one PlanTask) and without one.
+// task with an arm (whose model the threads share: the copies of one PlanTask), with an arm in a
+// scene (its links kept clear) and without an arm.
 // Named "Threads" so that the ThreadSanitizer job of CI runs it (ctest -R Threads).
 #include <gtest/gtest.h>
 
@@ -51,6 +52,11 @@ void expect_threads_equal_series(const PlanTask& task, int threads) {
 
 TEST(PlanThreads, ThePandaTaskFromThreeThreadsEqualsTheSerialPlan) {
   expect_threads_equal_series(rodshape::read_plan_task(kExamples + "plan_panda_s_curve.yaml"), 3);
+}
+
+// The arm in a scene: the links' null-space IK and gaps (ArmClearance, thread-local frames) too.
+TEST(PlanThreads, ThePandaShelfTaskFromTwoThreadsEqualsTheSerialPlan) {
+  expect_threads_equal_series(rodshape::read_plan_task(kExamples + "plan_panda_shelf.yaml"), 2);
 }
 
 TEST(PlanThreads, ATaskWithoutArmFromTwoThreadsEqualsTheSerialPlan) {

@@ -2,6 +2,9 @@
 // tip link, its joint limits (position and velocity), forward kinematics and the tip's Jacobian.
 // The chain is held by Orocos KDL and the URDF is read by urdfdom; neither appears here (pimpl).
 //
+// The links' collision geometry (<collision> boxes, spheres, cylinders) is read as capsules
+// (link_capsule.hpp), with every link frame and point Jacobians for the clearance terms.
+//
 // Frames: world_T_tip is the tip link's pose in the base link's frame. The Jacobian maps joint
 // velocities to the tip's twist [v; ω], both in the base frame, v being the tip origin's velocity.
 #pragma once
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "rodshape/core/pose.hpp"
+#include "rodshape/robot/link_capsule.hpp"
 
 namespace rodshape {
 
@@ -32,8 +36,19 @@ struct JointAxis {
   Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
 };
 
+/// Every link frame of the chain at some joint positions, in the base frame: frames[0] is the base
+/// link, frames[i + 1] the child link of the chain's segment i; and every moving joint's axis.
+struct LinkFrames {
+  std::vector<Pose> frames;
+  std::vector<JointAxis> axes;
+};
+
 class ArmModel {
  public:
+  /// Upper bound (docs/limits.md, "Sizes"): every capsule is measured against every obstacle at
+  /// every IK iteration of a joint trajectory's samples.
+  static constexpr int kMaxLinkCapsules = 1000;
+
   /// Reads the URDF file at `path` and takes the chain from `base_link` to `tip_link`. An empty
   /// `base_link` is the URDF's root link; an empty `tip_link` is the last link below the base (the
   /// deepest leaf; when two leaves are equally deep the tip must be named). Throws InputError when
@@ -85,6 +100,28 @@ class ArmModel {
   /// Every moving joint's axis at joint positions `q` (n finite entries, else InputError), in the
   /// chain's order.
   std::vector<JointAxis> joint_axes(const Eigen::VectorXd& q) const;
+
+  /// The collision geometry of the chain's links (base link included), read from the URDF's
+  /// <collision> elements (link_capsule.hpp says how each primitive becomes a capsule).
+  const std::vector<LinkCapsule>& link_capsules() const;
+  /// What was not read of the collision geometry, one line each ("link 'x': a <mesh> collision
+  /// is ignored (meshes are not read)"); empty when everything was.
+  const std::vector<std::string>& collision_notes() const;
+  /// The link of each frame of link_frames(): the base link, then each segment's child link.
+  const std::vector<std::string>& frame_links() const;
+  /// The number of moving joints that move frame `f` (joints 0 … k-1 of the chain move it): 0 for
+  /// the base link and the links fixed to it.
+  int joints_moving_frame(int f) const;
+  /// Every link frame and joint axis at `q` (n finite entries, else InputError), into `out`
+  /// (reused: no allocation once it has the chain's size, besides the chain's own copy).
+  void link_frames(const Eigen::VectorXd& q, LinkFrames& out) const;
+  /// The 3×n Jacobian of the base-frame point `p` fixed in frame `f`, from `frames` (the
+  /// link_frames() at the q of interest): column j is axis_j × (p − origin_j) for a revolute
+  /// joint that moves the frame, axis_j for a prismatic one, zero for the others.
+  void point_jacobian(const LinkFrames& frames,
+                      int f,
+                      const Eigen::Vector3d& p,
+                      Eigen::Matrix<double, 3, Eigen::Dynamic>& J) const;
 
   /// An upper bound of the distance from the base frame's origin to the tip's origin over all
   /// joint positions (the sum of the chain's offsets and prismatic strokes).

@@ -12,12 +12,23 @@
 //   H(q) = ½ Σ ((q_i - mid_i) / range_i)²,  mid and range from each joint's limits.
 // When the seed's solve stalls, the solve restarts from seeds drawn (deterministically) within the
 // limits; IkResult::restarts says so, since such a solution may lie on another branch.
+//
+// Clearance (IkClearance, a redundant arm): once the pose has converged, the links are pushed away
+// from the scene and the rod through the null space. The pairs (link capsule, obstacle or rod)
+// whose gap g_k is below its required gap plus the influence distance δ have shortfalls
+// s_k = required_k + δ - g_k > 0 and gradients a_k = ∂g_k/∂q (arm_clearance.hpp); with N an
+// orthonormal basis of the null space of J (from its SVD), the step is
+//   Δq = N z,   z = argmin |A N z - s|² + λ |z|²   (A the rows a_kᵀ),
+// which raises every short gap at first order without moving the tip; the pose is then converged
+// again (the damped least squares above, from q + Δq) and the step is kept only if the sum of the
+// squared shortfalls fell (halved up to 6 times, else the search stops).
 #pragma once
 
 #include <Eigen/Core>
 #include <string>
 
 #include "rodshape/core/pose.hpp"
+#include "rodshape/robot/arm_clearance.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/solvers/solve_status.hpp"
 
@@ -39,6 +50,14 @@ struct IkOptions {
   void validate() const;
 };
 
+/// The links kept clear through the redundancy (n > 6; ignored otherwise).
+struct IkClearance {
+  const ArmClearance* clearance = nullptr;  // null: off
+  std::vector<const RodNodes*> rods;        // the rod's centreline(s) to keep the links off
+  double influence = 0.03;                  // δ, m: gaps below required + δ are pushed out
+  int max_iterations = 20;                  // null-space steps
+};
+
 struct IkResult {
   SolveStatus status = SolveStatus::NotRun;  // Converged, or OutOfReach ("out of reach: ..."), or
                                              // IterationLimit
@@ -48,6 +67,7 @@ struct IkResult {
   int restarts = 0;                          // attempts after the first one
   double position_error = 0.0;               // |p* - p(q)|, m
   double rotation_error = 0.0;               // angle of R* R(q)ᵀ, rad
+  int clearance_steps = 0;                   // null-space clearance steps taken (IkClearance)
   bool converged() const { return status == SolveStatus::Converged; }
   /// "converged in 5 iterations (0 restarts), |Δp| = 1.8e-15 m, angle 6.2e-16 rad" or
   /// "<status>: <message>".
@@ -62,6 +82,13 @@ IkResult solve_ik(const ArmModel& arm,
                   const Pose& target,
                   const Eigen::VectorXd& seed,
                   const IkOptions& options = {});
+/// The same, then the links pushed clear through the null space (see above); the pose stays
+/// converged to the tolerances. `clearance.clearance` must be made for this arm.
+IkResult solve_ik(const ArmModel& arm,
+                  const Pose& target,
+                  const Eigen::VectorXd& seed,
+                  const IkOptions& options,
+                  const IkClearance& clearance);
 
 /// The default seed: the Panda "ready" pose (0, -π/4, 0, -3π/4, 0, π/2, π/4) for a 7-joint arm,
 /// else zeros; clamped into the joint limits.

@@ -12,9 +12,16 @@
 // segment that is faster is stretched to exactly that duration (the samples after it are shifted
 // later; the poses are not changed, nothing is clipped). Since a central difference is a weighted
 // mean of its two segments' rates, every sample's velocity then respects the limits too.
+//
+// Clearance (`clearance` set): every sample's IK keeps the links clear through the redundancy
+// (IkClearance), and every sample's least link gap is measured, against the scene and against the
+// rod: the rod at a sample between waypoints k and k+1 is taken as both planned shapes, `rods[k]`
+// and `rods[k + 1]` (the tracked rod between them is not stored). The least gap over the samples
+// is reported; the caller decides what a violation means (the planner: re-plan, then collision).
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,6 +39,15 @@ struct JointTrajectoryOptions {
   /// `seed`, or default_seed(arm) when it is empty.
   Eigen::VectorXd first_seed(const ArmModel& arm) const;
   IkOptions ik;
+  /// With a scene: the links kept clear and measured at every sample; null: neither.
+  std::shared_ptr<const ArmClearance> clearance;
+  /// The rod's planned centreline at each waypoint (world frame); empty: the links are not
+  /// checked against the rod.
+  std::vector<RodNodes> rods;
+  /// Per sample, the waypoint k + 1 it moves towards (rods[k] and rods[k + 1] are checked;
+  /// clamped to the rods given). Empty with `rods` empty.
+  std::vector<int> sample_waypoint;
+  double clearance_influence = 0.03;  // m, IkClearance::influence
 };
 
 enum class JointTrajectoryStatus {
@@ -57,6 +73,11 @@ struct JointTrajectoryResult {
   int ik_restarts = 0;                // samples whose IK needed a restart (a possible branch jump)
   double max_position_error = 0.0;    // over the samples, |p* - p(q)| of the flange, m
   double max_rotation_error = 0.0;    // over the samples, rad
+  /// With a clearance: the least link gap over the samples (capsule -1 when none was measured) and
+  /// the sample where it is.
+  LinkGap link_gap;
+  int link_gap_sample = -1;
+  int clearance_steps = 0;  // null-space clearance steps over the samples' IK
   bool complete() const { return status == JointTrajectoryStatus::Complete; }
   double duration() const { return t.empty() ? 0.0 : t.back() - t.front(); }
   /// "complete: 812 samples over 8.1 s (slowed ×1.3)" or "<status>: <message>".

@@ -21,6 +21,12 @@ struct ArmPlanOptions {
   /// Each re-plan is the whole plan again.
   static constexpr int kMaxReplans = 10;
   int max_replans = 3;  // 0 … kMaxReplans
+  /// With a scene: keep the arm's link capsules (ArmModel::link_capsules()) the scene's clearance
+  /// away from the obstacles and the rod: IK's null space first, then re-plans with a tighter
+  /// shell; a plan still too near has the status collision.
+  bool link_clearance = true;
+  /// m: IK pushes the links whose gap is below the clearance plus this (IkClearance::influence).
+  double link_influence = 0.03;
   ArmReachOptions reach;
   JointTrajectoryOptions joints;  // the first seed and the IK options, for the checks too
   /// Throws InputError naming the field ("ArmPlanOptions.reach_margin" etc.).

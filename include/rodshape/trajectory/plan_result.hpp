@@ -67,6 +67,22 @@ struct TrackingResult {
   std::string brief() const { return note; }
 };
 
+/// With a scene and an arm with collision geometry: the least gap between the arm's link capsules
+/// and the scene's obstacles or the rod (the hand holding it excepted) over the joint trajectory's
+/// samples, and where.
+struct RobotGapResult {
+  double min_gap = std::numeric_limits<double>::infinity();  // m
+  double margin = std::numeric_limits<double>::infinity();   // min_gap - its required gap
+  int sample = -1;                                           // the joint trajectory's sample
+  double t = 0.0;                                            // its time, s
+  int step = -1;              // the waypoint it moves towards (0: the initial pose)
+  std::string link;           // the capsule's label ("panda_link4", "panda_link8 (hand)")
+  int obstacle = -1;          // index into Scene::obstacles; -1: the rod
+  std::string obstacle_name;  // its name (empty: unnamed, or the rod)
+  std::string note;           // "link panda_link4, obstacle 'shelf', gap 3.2 mm (required 5 mm)"
+  bool clear() const { return margin >= -SceneGap::kTolerance; }
+};
+
 /// With a scene: the least gap between the rod's surface and an obstacle over every tracked
 /// substep of every segment (and the initial shape), and where it was.
 struct SceneResult {
@@ -84,6 +100,8 @@ struct SceneResult {
   std::string note;  // where the rod first came too near, when it did
   /// Each detour search: what it found ("detour of 2 waypoints (…)") or why not.
   std::vector<std::string> detours;
+  /// With an arm that has collision geometry (ArmPlanOptions::link_clearance).
+  std::optional<RobotGapResult> robot;
   /// Clear within the tracked rod's accuracy (SceneGap's).
   static constexpr double kTolerance = SceneGap::kTolerance;
   bool clear() const { return margin >= -kTolerance; }
@@ -92,9 +110,12 @@ struct SceneResult {
 enum class ArmPlanStatus {
   Reachable,    // every planned pose and every path sample has an IK solution
   Unreachable,  // a pose or a sample has none, after the re-plans allowed (message: which)
+  Collision,    // every sample has one, but a link comes nearer to the scene or the rod than the
+                // clearance, after the re-plans allowed (message: the step, link, obstacle, gap)
   NotChecked,   // the plan has no end-effector path (infeasible target)
 };
-std::string to_string(ArmPlanStatus status);  // "reachable", "unreachable", "not_checked"
+/// "reachable", "unreachable", "collision", "not_checked"
+std::string to_string(ArmPlanStatus status);
 
 /// One re-plan: which pose had no IK solution and the shell it led to.
 struct Replan {

@@ -1,0 +1,176 @@
+// arm_clearance.cpp: link capsules against obstacles and a rod (the formulas are in
+// arm_clearance.hpp).
+#include "rodshape/robot/arm_clearance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "rodshape/error.hpp"
+
+namespace rodshape {
+
+namespace {
+
+std::string millimetres(double metres) {
+  std::ostringstream out;
+  out.precision(3);
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+/// The mount's links: those that no joint but the first moves.
+constexpr int kMountJoints = 1;
+
+}  // namespace
+
+ArmClearance::ArmClearance(const ArmModel& arm,
+                           const Pose& world_T_base,
+                           const Scene& scene,
+                           const Eigen::VectorXd& q_mount)
+    : arm_(arm), world_T_base_(world_T_base), scene_(scene) {
+  scene_.validate();
+  arm_.check_joint_positions(q_mount, "q_mount");
+  const std::vector<LinkCapsule>& capsules = arm_.link_capsules();
+  const std::size_t m = scene_.obstacles.size();
+  required_.assign(capsules.size() * m, scene_.clearance);
+  mount_.assign(capsules.size() * m, false);
+  checks_rod_.assign(capsules.size(), true);
+  for (std::size_t c = 0; c < capsules.size(); ++c)
+    checks_rod_[c] = arm_.joints_moving_frame(capsules[c].frame) < arm_.joints();
+  // The mount: the gaps of the links that (almost) do not move, where the arm stands.
+  LinkFrames frames;
+  for_each_pair(q_mount, {}, std::numeric_limits<double>::infinity(), frames,
+                [&](const Measured& x) {
+                  const int f = capsules[static_cast<std::size_t>(x.gap.capsule)].frame;
+                  if (x.gap.obstacle >= 0 && arm_.joints_moving_frame(f) <= kMountJoints) {
+                    double& required = required_[static_cast<std::size_t>(x.gap.capsule) * m +
+                                                 static_cast<std::size_t>(x.gap.obstacle)];
+                    if (x.gap.gap < required) {
+                      required = x.gap.gap;
+                      mount_[static_cast<std::size_t>(x.gap.capsule) * m +
+                             static_cast<std::size_t>(x.gap.obstacle)] = true;
+                    }
+                  }
+                });
+}
+
+bool ArmClearance::is_mount(const LinkGap& gap) const {
+  return gap.obstacle >= 0 &&
+         mount_[static_cast<std::size_t>(gap.capsule) * scene_.obstacles.size() +
+                static_cast<std::size_t>(gap.obstacle)];
+}
+
+double ArmClearance::required_gap(int c, int j) const {
+  return required_[static_cast<std::size_t>(c) * scene_.obstacles.size() +
+                   static_cast<std::size_t>(j)];
+}
+
+template <typename Visit>
+void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
+                                 const std::vector<const RodNodes*>& rods,
+                                 double prefilter,
+                                 LinkFrames& frames,
+                                 Visit&& visit) const {
+  const std::vector<LinkCapsule>& capsules = arm_.link_capsules();
+  if (capsules.empty()) return;
+  arm_.link_frames(q, frames);
+  const Eigen::Matrix3d& R_wb = world_T_base_.rotation;
+  const Eigen::Vector3d& p_wb = world_T_base_.position;
+  for (std::size_t c = 0; c < capsules.size(); ++c) {
+    const LinkCapsule& capsule = capsules[c];
+    const Pose& base_T_link = frames.frames[static_cast<std::size_t>(capsule.frame)];
+    const Eigen::Vector3d a_base = base_T_link.rotation * capsule.from + base_T_link.position;
+    const Eigen::Vector3d b_base = base_T_link.rotation * capsule.to + base_T_link.position;
+    const Eigen::Vector3d a = R_wb * a_base + p_wb, b = R_wb * b_base + p_wb;
+    const auto report = [&](const SegmentDistance& d, int obstacle, int segment, double required) {
+      Measured x;
+      x.gap.gap = d.distance - capsule.radius;
+      x.gap.margin = x.gap.gap - required;
+      x.gap.capsule = static_cast<int>(c);
+      x.gap.obstacle = obstacle;
+      x.gap.rod_segment = segment;
+      x.point = a_base + d.t * (b_base - a_base);
+      x.gradient = R_wb.transpose() * d.gradient;
+      visit(x);
+    };
+    for (std::size_t j = 0; j < scene_.obstacles.size(); ++j) {
+      const SegmentDistance d = scene_.obstacles[j].distance(a, b);
+      report(d, static_cast<int>(j), -1, required_gap(static_cast<int>(c), static_cast<int>(j)));
+    }
+    if (!checks_rod_[c]) continue;
+    for (const RodNodes* rod : rods) {
+      if (rod == nullptr || rod->size() < 2) continue;
+      // The nearest segment of the rod; segments whose bounding ball is farther than the best so
+      // far (or than the prefilter) are skipped.
+      double best = prefilter + capsule.radius;  // d is the distance to the rod's surface
+      SegmentDistance nearest;
+      int nearest_segment = -1;
+      Obstacle segment_obstacle{"", CapsuleObstacle{}};
+      auto& shape = std::get<CapsuleObstacle>(segment_obstacle.shape);
+      shape.radius = scene_.rod_radius;
+      for (std::size_t i = 0; i + 1 < rod->size(); ++i) {
+        const Eigen::Vector3d& p0 = (*rod)[i];
+        const Eigen::Vector3d& p1 = (*rod)[i + 1];
+        const Eigen::Vector3d mid = 0.5 * (p0 + p1);
+        const double ball = 0.5 * (p1 - p0).norm() + scene_.rod_radius;
+        // distance from the ball's centre to [a, b]
+        const Eigen::Vector3d ab = b - a;
+        const double length2 = ab.squaredNorm();
+        const double t = length2 > 0.0 ? std::clamp((mid - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+        if ((a + t * ab - mid).norm() - ball > best) continue;
+        shape.from = p0;
+        shape.to = p1;
+        const SegmentDistance d = segment_obstacle.distance(a, b);
+        if (d.distance <= best) {
+          best = d.distance;
+          nearest = d;
+          nearest_segment = static_cast<int>(i);
+        }
+      }
+      if (nearest_segment >= 0) report(nearest, -1, nearest_segment, scene_.clearance);
+    }
+  }
+}
+
+LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
+                                const std::vector<const RodNodes*>& rods) const {
+  LinkGap least;
+  thread_local LinkFrames frames;  // reused: no allocation once sized
+  for_each_pair(q, rods, std::numeric_limits<double>::infinity(), frames, [&](const Measured& x) {
+    // The mount's own gap is not news: it counts only when it sinks deeper.
+    if (is_mount(x.gap) && x.gap.clear()) return;
+    if (x.gap.margin < least.margin) least = x.gap;
+  });
+  return least;
+}
+
+void ArmClearance::near_pairs(const Eigen::VectorXd& q,
+                              const std::vector<const RodNodes*>& rods,
+                              double influence,
+                              std::vector<LinkGapRow>& rows) const {
+  rows.clear();
+  thread_local LinkFrames frames;  // reused: no allocation once sized
+  thread_local Eigen::Matrix<double, 3, Eigen::Dynamic> J;
+  for_each_pair(q, rods, scene_.clearance + influence, frames, [&](const Measured& x) {
+    if (x.gap.margin >= influence || is_mount(x.gap)) return;
+    const int f = arm_.link_capsules()[static_cast<std::size_t>(x.gap.capsule)].frame;
+    arm_.point_jacobian(frames, f, x.point, J);
+    rows.push_back({influence - x.gap.margin, J.transpose() * x.gradient});
+  });
+}
+
+std::string ArmClearance::describe(const LinkGap& gap) const {
+  if (gap.capsule < 0) return "no link measured";
+  const std::string link =
+      "link " + arm_.link_capsules()[static_cast<std::size_t>(gap.capsule)].label();
+  const std::string what =
+      gap.obstacle >= 0
+          ? "obstacle " +
+                scene_.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle)
+          : std::string("the rod");
+  return link + ", " + what + ", gap " + millimetres(gap.gap) + " (required " +
+         millimetres(gap.gap - gap.margin) + ")";
+}
+
+}  // namespace rodshape
