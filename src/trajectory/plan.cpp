@@ -564,6 +564,7 @@ PlanResult plan_by_pose(const PlanProblem& problem,
     if (reached) {
       failed.status = refusal.status;
       failed.message = refusal.why;
+      failed.tracking = TrackingResult{};  // the reference's tracking is not the path's
     }
     failed.interpolation.used = ObjectiveInterpolation::Pose;
     return failed;

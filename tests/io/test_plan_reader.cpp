@@ -415,7 +415,7 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     }
     ++count;
   }
-  EXPECT_EQ(count, 12);
+  EXPECT_EQ(count, 13);
 }
 
 // ---- the plant's weight (issue 24, item 2)
