@@ -587,14 +587,17 @@ PlanResult gentlest_plan(const PlanProblem& problem,
   std::vector<InterpolationTrial> tried = {trial(best, ObjectiveInterpolation::Shape)};
   if (options.planned_steps() == options.steps && options.track_between_waypoints &&
       !gentle(best)) {
-    PlanResult others[] = {
-        plan_by_pose(problem, options, initial, &best),
-        plan_by_sets(problem, with_interpolation(options, ObjectiveInterpolation::Projection),
-                     initial)};
+    // With a scene, Pose only: the paper's sets lead through the same obstacles, and each
+    // segment they block is another detour search (seconds), for plans that rarely win.
+    const int schemes_tried = problem.scene.empty() ? 2 : 1;
+    PlanResult others[2] = {plan_by_pose(problem, options, initial, &best), {}};
+    if (schemes_tried == 2)
+      others[1] = plan_by_sets(
+          problem, with_interpolation(options, ObjectiveInterpolation::Projection), initial);
     const ObjectiveInterpolation schemes[] = {ObjectiveInterpolation::Pose,
                                               ObjectiveInterpolation::Projection};
     const double reach = reached_within(best, problem);
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < schemes_tried; ++k) {
       tried.push_back(trial(others[k], schemes[k]));
       if (others[k].complete() && !(others[k].steps.back().solution.cost.max_distance <= reach)) {
         tried.back().note = "its last step is farther from the target than allowed";

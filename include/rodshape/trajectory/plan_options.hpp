@@ -54,7 +54,8 @@ enum class ObjectiveInterpolation {
   /// the target's optimum. Plans the whole way (no horizon).
   Pose,
   /// Shape, and where its tracked peak energy exceeds kGentleRatio × the larger end energy, or it
-  /// inserted steps, or it did not complete, also Pose and Projection: the gentlest complete plan
+  /// inserted steps, or it did not complete, also Pose and (without a scene: with one, the sets
+  /// lead through the same obstacles, each a detour search) Projection: the gentlest complete plan
   /// that reaches the target (PlanResult::interpolation says which and what was tried). With a
   /// horizon, Shape alone.
   Auto,
