@@ -19,8 +19,8 @@ namespace {
 PlanProblem gentle_problem() {
   PlanProblem problem;
   problem.rod = samples::rubber_band(ConstitutiveModel::Cosserat, 50);
-  const RodConfiguration bent =
-      integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200), {Eigen::Vector3d::Zero(), {0.0, 0.02, 0.0}});
+  const RodConfiguration bent = integrate(samples::rubber_band(ConstitutiveModel::Cosserat, 200),
+                                          {Eigen::Vector3d::Zero(), {0.0, 0.02, 0.0}});
   for (int i = 0; i < 5; ++i) problem.target.points.push_back(bent.p[40 * i + 40]);
   problem.target.energy_weight = 1e-3;
   return problem;
