@@ -529,26 +529,9 @@ void ArmModel::forward_kinematics(const Eigen::VectorXd& q,
 }
 
 std::vector<JointAxis> ArmModel::joint_axes(const Eigen::VectorXd& q) const {
-  check_size(q, "q");
-  std::vector<JointAxis> axes;
-  axes.reserve(impl_->joints.size());
-  KDL::Frame base_T_parent = KDL::Frame::Identity();  // the frame the next segment hangs from
-  int j = 0;
-  const KDL::Chain chain = evaluable_chain(impl_->chain);
-  for (unsigned i = 0; i < chain.getNrOfSegments(); ++i) {
-    const KDL::Segment& segment = chain.getSegment(i);
-    const KDL::Joint& joint = segment.getJoint();
-    double q_segment = 0.0;
-    if (joint.getType() != KDL::Joint::Fixed) {
-      const KDL::Vector origin = base_T_parent * joint.JointOrigin();
-      const KDL::Vector direction = base_T_parent.M * joint.JointAxis();
-      axes.push_back({Eigen::Vector3d(origin.x(), origin.y(), origin.z()),
-                      Eigen::Vector3d(direction.x(), direction.y(), direction.z()).normalized()});
-      q_segment = q(j++);
-    }
-    base_T_parent = base_T_parent * segment.pose(q_segment);
-  }
-  return axes;
+  LinkFrames frames;
+  link_frames(q, frames);
+  return std::move(frames.axes);
 }
 
 void ArmModel::link_frames(const Eigen::VectorXd& q, LinkFrames& out) const {

@@ -170,14 +170,16 @@ struct StepLoop {
 
 /// One step's optimum. With a scene, its optimisation keeps the rod clear of the obstacles near
 /// its start and its points; an obstacle the optimum then comes too near to joins them and the
-/// step is solved again (a few rounds at most: each adds at least one obstacle).
+/// step is solved again (a few rounds at most: each adds at least one obstacle). `obstacles` is
+/// set to the obstacles its last round kept the rod clear of (the rows of its clearance block).
 ShapeResult solve_step(const PlanProblem& problem,
                        const PlanOptions& options,
                        const ShapeTarget& target,
                        ShapeProblem& unconstrained,
                        const BaseWrench& start,
                        const StepLoop& loop,
-                       PlanResult& result) {
+                       int& obstacles) {
+  obstacles = 0;
   if (problem.scene.empty())
     return optimise_step(problem, target, unconstrained, start, options.optimiser);
   constexpr int kMaxRounds = 4;
@@ -195,8 +197,7 @@ ShapeResult solve_step(const PlanProblem& problem,
                                                                 solution.configuration, clearance)
                              : std::vector<int>{};
     if (violated.empty() || round == kMaxRounds) {
-      result.scene->obstacles_per_step.push_back(
-          static_cast<int>(clearance.scene.obstacles.size()));
+      obstacles = static_cast<int>(clearance.scene.obstacles.size());
       return solution;
     }
     forced.insert(forced.end(), violated.begin(), violated.end());
@@ -257,8 +258,8 @@ std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
   ShapeTarget target = problem.target;
   target.points = step.objective_points;
   const detour::Reoptimise reoptimise = [&](const BaseWrench& w) -> std::optional<PlanStep> {
-    ShapeResult solution = solve_step(problem, options, target, step_problem, w, loop, result);
-    result.scene->obstacles_per_step.pop_back();  // the step is counted once
+    int obstacles = 0;  // the step is counted once, by its first solve
+    ShapeResult solution = solve_step(problem, options, target, step_problem, w, loop, obstacles);
     if (!solution.converged()) return std::nullopt;
     const Pose end_effector =
         compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
@@ -307,24 +308,21 @@ bool skip_to_last_set(const PlanProblem& problem,
                                loop.history.last, loop.tracked, result.initial_wrench};
   std::vector<RodConfiguration> tried;
   for (const BaseWrench& start : starts) {
-    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
+    int obstacles = 0;
+    ShapeResult solution =
+        solve_step(problem, options, target, unconstrained, start, loop, obstacles);
     const bool known = std::any_of(tried.begin(), tried.end(), [&](const RodConfiguration& c) {
       return solution.converged() && node_deviation(c, solution.configuration) < 1e-3;
     });
-    if (!solution.converged() || known) {
-      result.scene->obstacles_per_step.pop_back();  // only the step taken is counted
-      continue;
-    }
+    if (!solution.converged() || known) continue;
     tried.push_back(solution.configuration);
     const Pose end_effector =
         compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
     PlanStep step{last.fraction, last.inserted,       false,
                   target.points, std::move(solution), end_effector};
     auto around = take_detour(problem, options, loop, last, step, unconstrained, result);
-    if (!around) {
-      result.scene->obstacles_per_step.pop_back();
-      continue;
-    }
+    if (!around) continue;
+    result.scene->obstacles_per_step.push_back(obstacles);  // only the step taken is counted
     record(result.tracking, *around, static_cast<int>(result.steps.size()));
     if (around->gap)
       record_gap(result, problem, *around->gap, static_cast<int>(result.steps.size()) + 1);
@@ -362,7 +360,10 @@ bool plan_steps(const PlanProblem& problem,
     ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                                problem.wrench_bounds);
     const BaseWrench start = warm_start(unconstrained, loop.history, set.fraction);
-    ShapeResult solution = solve_step(problem, options, target, unconstrained, start, loop, result);
+    int obstacles = 0;
+    ShapeResult solution =
+        solve_step(problem, options, target, unconstrained, start, loop, obstacles);
+    if (scene) result.scene->obstacles_per_step.push_back(obstacles);
     const int number = static_cast<int>(result.steps.size()) + 1;
     if (!solution.converged()) {
       if (skip_to_last_set(problem, options, loop, next, result)) return true;
