@@ -241,6 +241,25 @@ TEST(PlanReader, SizesBeyondTheirBoundsAreNamedAsWritten) {
   }
 }
 
+// trajectory.interpolation: every scheme's name reads as that scheme, auto by default; anything
+// else is named with the choices.
+TEST(PlanReader, InterpolationNamesReadAndAMisspellingIsNamed) {
+  EXPECT_EQ(parse_plan_task(kPlan, "plan.yaml").options.interpolation,
+            ObjectiveInterpolation::Auto);
+  for (ObjectiveInterpolation scheme :
+       {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
+        ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
+        ObjectiveInterpolation::Pose}) {
+    const std::string text =
+        plan_with("steps: 3", "steps: 3\n  interpolation: " + to_string(scheme));
+    EXPECT_EQ(parse_plan_task(text, "plan.yaml").options.interpolation, scheme)
+        << to_string(scheme);
+  }
+  const std::string message = error_of(plan_with("steps: 3", "steps: 3\n  interpolation: posture"));
+  EXPECT_NE(message.find("plan.yaml:21: trajectory.interpolation"), std::string::npos) << message;
+  EXPECT_NE(message.find("pose"), std::string::npos) << message;
+}
+
 TEST(PlanReader, SizesAtTheirBoundsRead) {
   const PlanTask big_rod = parse_plan_task(plan_with("nodes: 51", "nodes: 5001"), "plan.yaml");
   EXPECT_EQ(big_rod.problem.rod.intervals, PlanProblem::kMaxIntervals);
