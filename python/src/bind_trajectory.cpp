@@ -143,7 +143,7 @@ void bind_problem(py::module_& m) {
             for (ObjectiveInterpolation scheme :
                  {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
                   ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
-                  ObjectiveInterpolation::Pose})
+                  ObjectiveInterpolation::Pose, ObjectiveInterpolation::Search})
               if (to_string(scheme) == name) {
                 o.interpolation = scheme;
                 return;

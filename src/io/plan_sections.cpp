@@ -153,11 +153,12 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
 namespace {
 
 ObjectiveInterpolation read_interpolation(const YamlField& field) {
-  const std::string name = field.choice({"auto", "shape", "arc_length", "projection", "pose"});
+  const std::string name =
+      field.choice({"auto", "shape", "arc_length", "projection", "pose", "search"});
   for (ObjectiveInterpolation scheme :
        {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
         ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
-        ObjectiveInterpolation::Pose})
+        ObjectiveInterpolation::Pose, ObjectiveInterpolation::Search})
     if (to_string(scheme) == name) return scheme;
   return ObjectiveInterpolation::Auto;  // choice() accepted only the names above
 }

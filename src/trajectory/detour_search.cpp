@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <sstream>
 
 #include "rodshape/solvers/stability.hpp"
 
@@ -20,13 +21,10 @@ namespace rodshape::detour {
 namespace {
 
 constexpr double kGoalBias = 0.2;
-/// Gentleness: an edge's peak energy at most this times the larger of the start's and the goal's
-/// (the closed loop's guard against coiled re-plans uses the same ratio) for the first
-/// kGentleEdges edges; when they find no way, the rest allow kWiderEnergyRatio (the plan's tracked
-/// peak energy reports what was used: the path taken, shortened, is often below the first cap).
-constexpr double kMaxEnergyRatio = 1.5;
-constexpr double kWiderEnergyRatio = 3.0;
-constexpr int kGentleEdges = 100;
+// Gentleness: an edge's peak energy at most EnergyCaps::first times the larger of the start's
+// and the goal's (the closed loop's guard against coiled re-plans uses 1.5) for the first
+// kGentleEdges edges; when they find no way, the rest allow EnergyCaps::wider (the plan's tracked
+// peak energy reports what was used: the path taken, shortened, is often below the first cap).
 constexpr double kMaxTurn = 0.25 * 3.141592653589793;  // rad: a sample's turn off the slerp
 constexpr double kBranchTolerance = 1e-3;  // m, arrival on the planned shape (as the tracking)
 constexpr int kMaxReoptimisations = 3;     // goals optimised again from another branch, per search
@@ -34,6 +32,13 @@ constexpr int kFoldCheckResolution = 16;   // substeps per search substep, verif
 constexpr double kSpike = 4.0;             // a substep's motion over the largest before it: a snap
 /// The longest edge towards a sample, in pose_distance.
 constexpr double kSteerLength(double rod_length) { return rod_length / 6.0; }
+
+/// 1.5 → "1.5", 3 → "3".
+std::string format_ratio(double ratio) {
+  std::ostringstream out;
+  out << ratio;
+  return out.str();
+}
 
 struct Node {
   Waypoint state;
@@ -52,12 +57,14 @@ class Tree {
        const PlanOptions& options,
        const std::vector<double>& required,
        const PlanStep& goal,
-       const Reoptimise& reoptimise)
+       const Reoptimise& reoptimise,
+       const EnergyCaps& caps)
       : problem_(problem),
         options_(options),
         required_(required),
         goal_(goal),
         reoptimise_(reoptimise),
+        caps_(caps),
         rng_(20261125) {}
 
   /// The rod followed along the straight interpolation from `start` to `to`; nullopt when it is
@@ -173,11 +180,11 @@ class Tree {
 
   Search grow(const Waypoint& root) {
     const double larger = std::max(root.configuration.energy, goal_.solution.configuration.energy);
-    energy_cap_ = kMaxEnergyRatio * larger;
+    energy_cap_ = caps_.first * larger;
     nodes_.push_back({root, -1});
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     while (edges_ < kMaxEdges && static_cast<int>(nodes_.size()) < kMaxNodes) {
-      if (edges_ >= kGentleEdges) energy_cap_ = kWiderEnergyRatio * larger;
+      if (edges_ >= kGentleEdges) energy_cap_ = caps_.wider * larger;
       const Pose target = unit(rng_) < kGoalBias ? goal_.end_effector
                                                  : sample(root.end_effector, goal_.end_effector);
       const int from = nearest(target);
@@ -207,10 +214,11 @@ class Tree {
  private:
   /// Why edges stopped, for the search's message.
   std::string stops_text() const {
-    return "edges stopped by the scene " + std::to_string(stops_.scene) +
-           ", by the energy cap (1.5, then 3 x the larger end energy) " +
-           std::to_string(stops_.energy) + ", by a snap " + std::to_string(stops_.snap) +
-           ", rod lost or unstable " + std::to_string(stops_.lost) +
+    return "edges stopped by the scene " + std::to_string(stops_.scene) + ", by the energy cap (" +
+           format_ratio(caps_.first) +
+           (caps_.wider != caps_.first ? ", then " + format_ratio(caps_.wider) : std::string()) +
+           " x the larger end energy) " + std::to_string(stops_.energy) + ", by a snap " +
+           std::to_string(stops_.snap) + ", rod lost or unstable " + std::to_string(stops_.lost) +
            ", arrived off the planned shape " + std::to_string(stops_.elsewhere);
   }
 
@@ -297,6 +305,7 @@ class Tree {
   struct Stops {  // why edges stopped
     int scene = 0, energy = 0, snap = 0, lost = 0, elsewhere = 0;
   } stops_;
+  EnergyCaps caps_;
   double energy_cap_ = 0.0;  // J
 };
 
@@ -308,12 +317,13 @@ Search search(const PlanProblem& problem,
               const Pose& from,
               const BaseWrench& w,
               const PlanStep& goal,
-              const Reoptimise& reoptimise) {
+              const Reoptimise& reoptimise,
+              const EnergyCaps& caps) {
   Waypoint root;
   root.end_effector = from;
   root.wrench = w;
   root.configuration = integrate(problem.rod, w, Derivatives::AllNodes);
-  Tree tree(problem, options, required, goal, reoptimise);
+  Tree tree(problem, options, required, goal, reoptimise, caps);
   return tree.grow(root);
 }
 

@@ -52,6 +52,15 @@ struct Search {
 inline constexpr int kMaxEdges = 600;
 inline constexpr int kMaxNodes = 300;
 
+/// The energy an edge may reach, over the larger of the start's and the goal's: `first` for the
+/// first kGentleEdges edges, `wider` after them (the scene's detours: 1.5, then 3; a gentle path
+/// with no obstacles in the way: PlanOptions::kGentleRatio throughout).
+struct EnergyCaps {
+  double first = 1.5;
+  double wider = 3.0;
+};
+inline constexpr int kGentleEdges = 100;
+
 /// The goal's step optimised from the base wrench of another equilibrium at its pose; nullopt
 /// when that optimisation fails.
 using Reoptimise = std::function<std::optional<PlanStep>(const BaseWrench&)>;
@@ -65,6 +74,7 @@ Search search(const PlanProblem& problem,
               const Pose& from,
               const BaseWrench& w,
               const PlanStep& goal,
-              const Reoptimise& reoptimise = {});
+              const Reoptimise& reoptimise = {},
+              const EnergyCaps& caps = {});
 
 }  // namespace rodshape::detour

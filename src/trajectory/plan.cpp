@@ -64,6 +64,8 @@ std::string to_string(ObjectiveInterpolation interpolation) {
       return "projection";
     case ObjectiveInterpolation::Pose:
       return "pose";
+    case ObjectiveInterpolation::Search:
+      return "search";
     case ObjectiveInterpolation::Auto:
       return "auto";
   }
@@ -531,6 +533,11 @@ double reached_within(const PlanResult& plan, const PlanProblem& problem) {
   return 1.05 * plan.steps.back().solution.cost.max_distance + 1e-4;
 }
 
+/// Complete with a tracked peak within kGentleRatio × the larger end energy.
+bool gentle_peak(const PlanResult& plan) {
+  return plan.complete() && !(peak_ratio(plan) > PlanOptions::kGentleRatio);
+}
+
 /// Gentle enough that Auto tries nothing else.
 bool gentle(const PlanResult& plan) {
   return plan.complete() && plan.tracking.refinements == 0 &&
@@ -542,23 +549,57 @@ PlanOptions with_interpolation(PlanOptions options, ObjectiveInterpolation schem
   return options;
 }
 
+/// The step `goal` optimised again from the base wrench of another equilibrium at its pose (a
+/// local optimum of the same points on the branch the rod reaches); nullopt when that fails.
+detour::Reoptimise reoptimised_goal(const PlanProblem& problem,
+                                    const PlanOptions& options,
+                                    const PlanStep& goal) {
+  return [&problem, &options, goal](const BaseWrench& w) -> std::optional<PlanStep> {
+    ShapeTarget target = problem.target;
+    target.points = goal.objective_points;
+    ShapeProblem unconstrained(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
+                               problem.wrench_bounds);
+    StepLoop loop;
+    if (!problem.scene.empty())
+      loop.required = problem.scene.required_gaps(problem.rod.clamp.position);
+    int obstacles = 0;
+    ShapeResult solution = solve_step(problem, options, target, unconstrained, w, loop, obstacles);
+    if (!solution.converged()) return std::nullopt;
+    const Pose end_effector =
+        compose(solution.configuration.tip(), problem.grasp.tip_to_end_effector);
+    return PlanStep{goal.fraction, false, false, target.points, std::move(solution), end_effector};
+  };
+}
+
+/// The target's optimum: the given Shape plan's last step, or the Shape sets' (untracked) when it
+/// has none; `reference` holds the latter.
+const PlanResult& optimum_plan(const PlanProblem& problem,
+                               const PlanOptions& options,
+                               const plan_stages::InitialEquilibrium& initial,
+                               const PlanResult* shape_plan,
+                               PlanResult& reference) {
+  if (shape_plan && !shape_plan->steps.empty() && shape_plan->status != PlanStatus::Partial)
+    return *shape_plan;
+  PlanOptions untracked = with_interpolation(options, ObjectiveInterpolation::Shape);
+  untracked.track_between_waypoints = false;
+  reference = plan_by_sets(problem, untracked, initial);
+  return reference;
+}
+
 /// Pose: the target's optimum by the Shape sets (untracked), then the end effector's path to it.
 PlanResult plan_by_pose(const PlanProblem& problem,
                         const PlanOptions& options,
                         const plan_stages::InitialEquilibrium& initial,
                         const PlanResult* shape_plan) {
-  PlanOptions untracked = with_interpolation(options, ObjectiveInterpolation::Shape);
-  untracked.track_between_waypoints = false;
   PlanResult reference;
-  if (!shape_plan || shape_plan->steps.empty() || shape_plan->status == PlanStatus::Partial) {
-    reference = plan_by_sets(problem, untracked, initial);
-    shape_plan = &reference;
-  }
+  shape_plan = &optimum_plan(problem, options, initial, shape_plan, reference);
   const bool reached = shape_plan->status != PlanStatus::Partial &&
                        shape_plan->status != PlanStatus::Infeasible && !shape_plan->steps.empty();
   pose_continuation::Refusal refusal;
   std::optional<PlanResult> result =
-      reached ? pose_continuation::plan(problem, options, initial, *shape_plan, refusal)
+      reached ? pose_continuation::plan(
+                    problem, options, initial, *shape_plan,
+                    reoptimised_goal(problem, options, shape_plan->steps.back()), refusal)
               : std::nullopt;
   if (!result) {  // the reference's status and message, or why the path was not taken
     PlanResult failed = *shape_plan;
@@ -574,12 +615,84 @@ PlanResult plan_by_pose(const PlanProblem& problem,
   return std::move(*result);
 }
 
+/// Search: the target's optimum (as for Pose), then a path to it from the initial pose found by
+/// the detour search with every edge's energy within kGentleRatio × the larger end energy; its
+/// equilibria are the steps (detour: true), the last the optimum (or the optimum of the same
+/// points on the branch the rod reached, detour::Search::goal_step).
+PlanResult plan_by_search(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          const plan_stages::InitialEquilibrium& initial,
+                          const PlanResult* shape_plan) {
+  PlanResult reference;
+  const PlanResult& optimum = optimum_plan(problem, options, initial, shape_plan, reference);
+  PlanResult result = optimum;
+  result.interpolation.used = ObjectiveInterpolation::Search;
+  result.tracking = TrackingResult{};
+  result.end_effector_path.clear();
+  if (optimum.status == PlanStatus::Partial || optimum.status == PlanStatus::Infeasible ||
+      optimum.steps.empty())
+    return result;  // the reference's status and message: no optimum to go to
+  result.steps.clear();
+  PlanStep goal = optimum.steps.back();
+  const Pose from = compose(initial.configuration.tip(), problem.grasp.tip_to_end_effector);
+  const std::vector<double> required =
+      problem.scene.empty() ? std::vector<double>{}
+                            : problem.scene.required_gaps(problem.rod.clamp.position);
+  const double cap = PlanOptions::kGentleRatio;
+  const detour::Search found =
+      detour::search(problem, options, required, from, initial.wrench, goal,
+                     reoptimised_goal(problem, options, goal), {cap, cap});
+  if (!found.found) {
+    result.status = PlanStatus::Partial;
+    result.message = "no path found on which the rod stays within " + detail::format_value(cap) +
+                     " x the larger end energy: " + found.message;
+    return result;
+  }
+  if (found.goal_step) goal = *found.goal_step;
+  ShapeTarget target = problem.target;
+  target.points = goal.objective_points;
+  ShapeProblem costs(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
+                     problem.wrench_bounds);
+  if (!problem.scene.empty()) {
+    result.scene = SceneResult{};
+    result.scene->clearance = problem.scene.clearance;
+  }
+  const ObjectiveSet set{goal.fraction, goal.objective_points};
+  for (const detour::Waypoint& via : found.via) {
+    const int number = static_cast<int>(result.steps.size()) + 1;
+    record(result.tracking, detour_tracking(via, 0.0), number - 1);
+    if (result.scene) record_gap(result, problem, via.gap, number);
+    result.steps.push_back(detour_step(via, set, goal.objective_points, costs));
+  }
+  record(result.tracking,
+         detour_tracking(found.goal,
+                         node_deviation(found.goal.configuration, goal.solution.configuration)),
+         static_cast<int>(result.steps.size()));
+  if (result.scene)
+    record_gap(result, problem, found.goal.gap, static_cast<int>(result.steps.size()) + 1);
+  result.steps.push_back(std::move(goal));
+  result.status = PlanStatus::Complete;
+  result.message = "complete: " + std::to_string(result.steps.size()) +
+                   " steps on a searched path within " + detail::format_value(cap) +
+                   " x the larger end energy to the target's optimum";
+  result.tracking.note = "the rod follows the plan (a searched path)";
+  result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
+  if (!plan_stages::follows_timed_path(problem, result)) {
+    result.status = PlanStatus::SnapThrough;
+    result.message =
+        "the rod cannot follow the searched path: along the timed path's samples it "
+        "snaps on the way or arrives elsewhere (the path passes where the "
+        "equilibrium's branch divides)";
+  }
+  return result;
+}
+
 InterpolationTrial trial(const PlanResult& plan, ObjectiveInterpolation scheme) {
   return {scheme, plan.status, peak_ratio(plan), plan.complete() ? "" : plan.message};
 }
 
-/// Auto: Shape, and when it is not gentle, Pose and Projection; the complete plan with the least
-/// peak ratio (the earlier on a tie).
+/// Auto: Shape, and when it is not gentle, Pose and Projection, and when none of them is within
+/// kGentleRatio, Search; the complete plan with the least peak ratio (the earlier on a tie).
 PlanResult gentlest_plan(const PlanProblem& problem,
                          const PlanOptions& options,
                          const plan_stages::InitialEquilibrium& initial) {
@@ -591,7 +704,8 @@ PlanResult gentlest_plan(const PlanProblem& problem,
     // With a scene, Pose only: the paper's sets lead through the same obstacles, and each
     // segment they block is another detour search (seconds), for plans that rarely win.
     const int schemes_tried = problem.scene.empty() ? 2 : 1;
-    PlanResult others[2] = {plan_by_pose(problem, options, initial, &best), {}};
+    const PlanResult plan_for_optimum = best;  // the Shape plan: its last step is the optimum
+    PlanResult others[2] = {plan_by_pose(problem, options, initial, &plan_for_optimum), {}};
     if (schemes_tried == 2)
       others[1] = plan_by_sets(
           problem, with_interpolation(options, ObjectiveInterpolation::Projection), initial);
@@ -607,6 +721,16 @@ PlanResult gentlest_plan(const PlanProblem& problem,
       const bool better =
           others[k].complete() && (!best.complete() || peak_ratio(others[k]) < peak_ratio(best));
       if (better) best = std::move(others[k]);
+    }
+    if (!gentle_peak(best)) {  // none gentle: a path searched for within the ratio, to the
+      // optimum of the best plan so far (the Shape plan's when none completed)
+      PlanResult searched =
+          plan_by_search(problem, options, initial, best.complete() ? &best : &plan_for_optimum);
+      tried.push_back(trial(searched, ObjectiveInterpolation::Search));
+      if (searched.complete() && !(searched.steps.back().solution.cost.max_distance <= reach))
+        tried.back().note = "its last step is farther from the target than allowed";
+      else if (searched.complete() && (!best.complete() || peak_ratio(searched) < peak_ratio(best)))
+        best = std::move(searched);
     }
     for (InterpolationTrial& t : tried)
       if (t.scheme != best.interpolation.used && t.note.empty())
@@ -627,6 +751,11 @@ PlanResult plan_rod(const PlanProblem& problem,
     case ObjectiveInterpolation::Pose: {
       PlanResult result = plan_by_pose(problem, options, initial, nullptr);
       result.interpolation.tried = {trial(result, ObjectiveInterpolation::Pose)};
+      return result;
+    }
+    case ObjectiveInterpolation::Search: {
+      PlanResult result = plan_by_search(problem, options, initial, nullptr);
+      result.interpolation.tried = {trial(result, ObjectiveInterpolation::Search)};
       return result;
     }
     default: {
@@ -671,10 +800,12 @@ PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
     throw InputError("PlanOptions.track_between_waypoints",
                      " must be true with a scene: the rod is checked clear of it between "
                      "waypoints by following it");
-  if (options.interpolation == ObjectiveInterpolation::Pose &&
+  if ((options.interpolation == ObjectiveInterpolation::Pose ||
+       options.interpolation == ObjectiveInterpolation::Search) &&
       options.planned_steps() < options.steps)
-    throw InputError("PlanOptions.interpolation",
-                     " = pose plans the whole way: it cannot be used with a horizon");
+    throw InputError("PlanOptions.interpolation", " = " + to_string(options.interpolation) +
+                                                      " plans the whole way: it cannot be used "
+                                                      "with a horizon");
   check_plan_cost(problem, options);
   if (problem.arm) return detail::plan_with_arm(problem, options);
   return detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));

@@ -279,4 +279,34 @@ std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
   return time_parameterize(waypoints, limits);
 }
 
+/// 8. The held rod followed along the timed path's samples, one solve each (what a robot moving at
+/// that rate does, and what an independent replay checks), in pieces of at most
+/// FollowOptions::kMaxSubsteps: it must arrive on the last step.
+/// The path's own substeps can pass a point where the branch divides (a fold, or a bifurcation the
+/// path passes near) one way and the samples another: such a path is no plan.
+bool follows_timed_path(const PlanProblem& problem, const PlanResult& result) {
+  std::vector<TipCondition> samples;
+  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
+  for (const TimedPose& sample : result.end_effector_path)
+    samples.push_back(plan_stages::held_tip(compose(sample.pose, ee_T_tip), problem.grasp));
+  FollowOptions fine;
+  fine.final_derivatives = Derivatives::None;
+  BaseWrench w = result.initial_wrench;
+  for (std::size_t first = 0; first + 1 < samples.size();) {
+    const std::size_t last =
+        std::min(samples.size() - 1, first + static_cast<std::size_t>(FollowOptions::kMaxSubsteps));
+    fine.substeps = static_cast<int>(last - first);
+    const bool arrival = last == samples.size() - 1;
+    const FollowResult piece = follow_equilibrium(
+        problem.rod,
+        sampled_tip_path(
+            std::vector<TipCondition>(samples.begin() + first, samples.begin() + last + 1)),
+        w, fine, arrival ? &result.steps.back().solution.configuration : nullptr, 1e-3);
+    if (!piece.followed()) return false;
+    w = piece.base_wrench;
+    first = last;
+  }
+  return true;
+}
+
 }  // namespace rodshape::plan_stages

@@ -7,6 +7,7 @@
 //   5. track_segment         the held rod followed from one waypoint to the next
 //   6. halfway_set           refinement: a set inserted where the tracked rod would jump
 //   7. time_waypoints        the end-effector waypoints timed for quasi-static motion
+//   8. follows_timed_path    the rod followed along the timed path's samples (Pose, Search)
 #pragma once
 
 #include <optional>
@@ -120,5 +121,12 @@ ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const Objecti
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,
                                       const EndEffectorLimits& limits);
+
+/// 8. The held rod followed along `result`'s timed end-effector path, one solve per sample (what a
+/// robot moving at that rate does, and what an independent replay checks): it arrives on the last
+/// step. A path's own
+/// substeps can pass a point where the equilibrium's branch divides (a fold, or a bifurcation the
+/// path passes near) one way and the samples another: such a path is no plan.
+bool follows_timed_path(const PlanProblem& problem, const PlanResult& result);
 
 }  // namespace rodshape::plan_stages

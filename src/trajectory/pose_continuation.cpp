@@ -69,6 +69,14 @@ FollowedPath follow_path(const PlanProblem& problem,
   return path;
 }
 
+/// The rod arrived at the goal's pose on `arrival`, another equilibrium than the goal's: stable?
+bool arrived_stable(const PlanProblem& problem,
+                    const RodConfiguration& arrival,
+                    const PlanStep& goal) {
+  const Pose tip = compose(goal.end_effector, inverse(problem.grasp.tip_to_end_effector));
+  return assess_stability(problem.rod, arrival, plan_stages::held_tip(tip, problem.grasp)).stable;
+}
+
 /// The equilibrium at waypoint σ as a step: its cost terms those of the objective set `set`
 /// (the reference's way), its stability assessed (an unstable waypoint is no place to stop).
 PlanStep path_step(const PlanProblem& problem,
@@ -98,8 +106,9 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
                                const PlanOptions& options,
                                const plan_stages::InitialEquilibrium& initial,
                                const PlanResult& reference,
+                               const detour::Reoptimise& reoptimise,
                                Refusal& refusal) {
-  const PlanStep& goal = reference.steps.back();
+  PlanStep goal = reference.steps.back();
   const int n = options.steps;
   const int substeps =
       std::max(1, std::min(options.tracking_substeps, FollowOptions::kMaxSubsteps / n));
@@ -107,9 +116,19 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
   const std::vector<double> required =
       problem.scene.empty() ? std::vector<double>{}
                             : problem.scene.required_gaps(problem.rod.clamp.position);
-  const FollowedPath path =
-      follow_path(problem, from, initial.wrench, goal, n, substeps,
-                  problem.scene.empty() ? nullptr : &required, initial.configuration);
+  const std::vector<double>* scene_gaps = problem.scene.empty() ? nullptr : &required;
+  FollowedPath path = follow_path(problem, from, initial.wrench, goal, n, substeps, scene_gaps,
+                                  initial.configuration);
+  for (int again = 0; again < kMaxReoptimisations && reoptimise &&
+                      path.followed.event == FollowEvent::OtherBranch &&
+                      arrived_stable(problem, path.followed.configuration, goal);
+       ++again) {
+    std::optional<PlanStep> there = reoptimise(path.followed.base_wrench);
+    if (!there) break;
+    goal = std::move(*there);
+    path = follow_path(problem, from, initial.wrench, goal, n, substeps, scene_gaps,
+                       initial.configuration);
+  }
   if (!path.followed.followed()) {
     const bool scene = path.followed.event == FollowEvent::Stopped;
     refusal.status = scene ? PlanStatus::Collision : PlanStatus::SnapThrough;
@@ -173,6 +192,13 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     }
   }
   result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
+  if (!plan_stages::follows_timed_path(problem, result)) {
+    refusal.why =
+        "the rod cannot follow the end effector's straight path to the target's optimum: "
+        "along the timed path's samples it snaps on the way or arrives elsewhere (the "
+        "path passes where the equilibrium's branch divides)";
+    return std::nullopt;
+  }
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "detour_search.hpp"
 #include "plan_stages.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -21,13 +22,20 @@ struct Refusal {
   std::string why;
 };
 
+/// Re-optimisations of the goal per plan: where the path arrives at the goal's pose on another
+/// stable equilibrium, the goal's step optimised from there (a local optimum of the same points on
+/// the branch the rod reaches) and the path followed again to it.
+inline constexpr int kMaxReoptimisations = 2;
+
 /// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
-/// last step (a plan by objective sets that reached the target, tracked or not); nullopt, with
-/// `refusal`, when the rod cannot be followed there.
+/// last step (a plan by objective sets that reached the target, tracked or not), or to that step
+/// optimised again by `reoptimise` (may be empty) from where the path arrives instead; nullopt,
+/// with `refusal`, when the rod cannot be followed there.
 std::optional<PlanResult> plan(const PlanProblem& problem,
                                const PlanOptions& options,
                                const plan_stages::InitialEquilibrium& initial,
                                const PlanResult& reference,
+                               const detour::Reoptimise& reoptimise,
                                Refusal& refusal);
 
 }  // namespace rodshape::pose_continuation

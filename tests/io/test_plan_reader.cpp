@@ -249,7 +249,7 @@ TEST(PlanReader, InterpolationNamesReadAndAMisspellingIsNamed) {
   for (ObjectiveInterpolation scheme :
        {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
         ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
-        ObjectiveInterpolation::Pose}) {
+        ObjectiveInterpolation::Pose, ObjectiveInterpolation::Search}) {
     const std::string text =
         plan_with("steps: 3", "steps: 3\n  interpolation: " + to_string(scheme));
     EXPECT_EQ(parse_plan_task(text, "plan.yaml").options.interpolation, scheme)

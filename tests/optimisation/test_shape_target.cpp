@@ -85,11 +85,16 @@ TEST(ShapeTarget, AZigZagLongerThanTheRodIsInfeasibleWithItsLength) {
   const FeasibilityResult feasibility = check_feasibility(target, rod);
   EXPECT_FALSE(feasibility.feasible);
   EXPECT_GT(feasibility.curve_length, 0.4);
+  // The chain: 0.113 + 0.165 + 0.165 + 0.165 = 0.607 m, beyond 0.29 m at the third point.
+  const double chain = std::hypot(0.08, 0.08) + 3 * std::hypot(0.16, 0.04);
   std::ostringstream length;
-  length << std::setprecision(3) << feasibility.curve_length;
-  EXPECT_TRUE(Mentions(feasibility.reason, "the curve through the points is " + length.str()));
+  length << std::setprecision(3) << chain;
+  EXPECT_TRUE(Mentions(feasibility.reason,
+                       "through the points in order (the shortest curve "
+                       "through them) is " +
+                           length.str()));
   EXPECT_TRUE(Mentions(feasibility.reason, "longer than the rod (0.29 m)"));
-  EXPECT_GE(feasibility.offending_point, 1);  // the first point is 0.11 m along the curve
+  EXPECT_EQ(feasibility.offending_point, 2);  // the chain reaches it at 0.44 m
 }
 
 TEST(ShapeTarget, ReachIsTheLengthForKirchhoffAndStretchesForCosserat) {
@@ -105,6 +110,28 @@ TEST(ShapeTarget, ReachIsTheLengthForKirchhoffAndStretchesForCosserat) {
   EXPECT_TRUE(CompareScalars(c.reach, 1.1 * cosserat.properties.length, 1e-15));
   EXPECT_TRUE(c.feasible) << c.reason;
   EXPECT_FALSE(check_feasibility(target, cosserat).feasible);  // no stretch allowed by default
+}
+
+// Four points at s = L/4 … L on 1.1 turns of a helix of the rod's length (pitch angle 25°): they
+// lie on a curve of exactly L, but the spline through them bulges (each gap spans 100°) and is
+// longer than L. Feasible (the chain is shorter than L); the arc lengths scaled to the reach, the
+// last point at the rod's end.
+TEST(ShapeTarget, SparsePointsOnAHelixOfTheRodsLengthAreFeasible) {
+  const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Kirchhoff, 20);
+  const double L = rod.properties.length, turns = 1.1, pitch = 25.0 * std::numbers::pi / 180.0;
+  const double ell = L / (2 * std::numbers::pi * turns), r = ell * std::cos(pitch);
+  const double h = ell * std::sin(pitch);
+  ShapeTarget target;
+  for (int k = 1; k <= 4; ++k) {  // the helix about +y through the clamp, starting along +z
+    const double phi = 2 * std::numbers::pi * turns * k / 4.0;
+    target.points.push_back({r * (1.0 - std::cos(phi)), h * phi, r * std::sin(phi)});
+  }
+  const FeasibilityResult feasibility = check_feasibility(target, rod);
+  EXPECT_TRUE(feasibility.feasible) << feasibility.reason;
+  EXPECT_GT(feasibility.curve_length, L);
+  ASSERT_EQ(feasibility.arc_lengths.size(), 4u);
+  EXPECT_TRUE(CompareScalars(feasibility.arc_lengths.back(), L, 1e-14));
+  for (int k = 1; k < 4; ++k) EXPECT_GT(feasibility.arc_lengths[k], feasibility.arc_lengths[k - 1]);
 }
 
 TEST(ShapeTarget, SplineLengthOfCollinearPointsIsTheStraightDistance) {

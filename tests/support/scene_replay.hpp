@@ -15,6 +15,7 @@ namespace rodshape::testing {
 struct SceneReplay {
   FollowResult followed;
   SceneGap least;
+  double peak_energy = 0.0;  // the largest elastic energy over the start and every sample, J
 };
 
 inline SceneReplay replay_scene(const PlanProblem& problem, const PlanResult& plan) {
@@ -24,10 +25,12 @@ inline SceneReplay replay_scene(const PlanProblem& problem, const PlanResult& pl
     samples.push_back(ClampedTip{compose(sample.pose, ee_T_tip)});
   const std::vector<double> required = problem.scene.required_gaps(problem.rod.clamp.position);
   SceneReplay result;
+  result.peak_energy = plan.initial_configuration.energy;
   FollowOptions options;
   options.observer = [&](double, const RodConfiguration& c) {
     const SceneGap gap = problem.scene.least_gap(c.p, required);
     if (gap.margin < result.least.margin) result.least = gap;
+    result.peak_energy = std::max(result.peak_energy, c.energy);
     return true;
   };
   // In pieces of at most FollowOptions::kMaxSubsteps samples, each from where the last ended;

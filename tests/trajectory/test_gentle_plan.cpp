@@ -187,6 +187,40 @@ TEST(GentlePlan, AutoIsTheShapePlanWhereThatIsGentle) {
         << k;
 }
 
+// Search alone: the tree's path from the initial pose to the Shape plan's optimum, every tracked
+// substep within kGentleRatio × the larger end energy (the search's cap), the tree's equilibria
+// its steps (detour) and the optimum its last; an independent replay of the timed path (one solve
+// per sample) arrives on that optimum within the same ratio. Seeded: the same plan twice.
+TEST(GentlePlan, SearchFindsAPathWithinTheGentleRatioToTheSameOptimum) {
+  PlanTask task = example("plan_c_arc.yaml");
+  task.options.interpolation = ObjectiveInterpolation::Shape;
+  const PlanResult shape = plan(task.problem, task.options);
+  ASSERT_EQ(shape.status, PlanStatus::Complete) << shape.message;
+  task.options.interpolation = ObjectiveInterpolation::Search;
+  const PlanResult searched = plan(task.problem, task.options);
+  ASSERT_EQ(searched.status, PlanStatus::Complete) << searched.message;
+  EXPECT_EQ(searched.interpolation.used, ObjectiveInterpolation::Search);
+  ASSERT_EQ(searched.interpolation.tried.size(), 1u);
+  EXPECT_EQ(node_deviation(searched.steps.back().solution.configuration,
+                           shape.steps.back().solution.configuration),
+            0.0);
+  for (std::size_t k = 0; k + 1 < searched.steps.size(); ++k) {
+    EXPECT_TRUE(searched.steps[k].detour) << k;
+    ASSERT_TRUE(searched.steps[k].solution.stability.has_value()) << k;
+    EXPECT_TRUE(searched.steps[k].solution.stability->stable) << k;
+  }
+  EXPECT_LE(searched.tracking.peak_energy, PlanOptions::kGentleRatio * larger_end_energy(searched));
+  const testing::SceneReplay replay = testing::replay_scene(task.problem, searched);
+  ASSERT_TRUE(replay.followed.followed()) << replay.followed.brief();
+  EXPECT_LE(replay.peak_energy, PlanOptions::kGentleRatio * larger_end_energy(searched));
+  const PlanResult again = plan(task.problem, task.options);
+  ASSERT_EQ(again.steps.size(), searched.steps.size());
+  for (std::size_t k = 0; k < again.steps.size(); ++k)
+    EXPECT_EQ(again.steps[k].end_effector.position, searched.steps[k].end_effector.position) << k;
+  task.options.horizon = 2;
+  EXPECT_THROW(plan(task.problem, task.options), InputError);
+}
+
 TEST(GentlePlan, PoseIsUsedAloneWhenAskedAndNeedsTheWholeWay) {
   PlanTask task = example("plan_cable_helix.yaml");
   task.options.interpolation = ObjectiveInterpolation::Pose;

@@ -55,12 +55,18 @@ enum class ObjectiveInterpolation {
   Pose,
   /// Shape, and where its tracked peak energy exceeds kGentleRatio × the larger end energy, or it
   /// inserted steps, or it did not complete, also Pose and (without a scene: with one, the sets
-  /// lead through the same obstacles, each a detour search) Projection: the gentlest complete plan
-  /// that reaches the target (PlanResult::interpolation says which and what was tried). With a
-  /// horizon, Shape alone.
+  /// lead through the same obstacles, each a detour search) Projection, and where none of these
+  /// is within kGentleRatio, Search: the gentlest complete plan that reaches the target
+  /// (PlanResult::interpolation says which and what was tried). With a horizon, Shape alone.
   Auto,
+  /// A searched path: the target's optimum (as for Pose), then a path of end-effector poses to it
+  /// from the initial pose found by the scene's detour search (a random tree over poses, seeded)
+  /// with every edge's tracked energy within kGentleRatio × the larger end energy; the steps are
+  /// the tree's equilibria (PlanStep::detour), the last the optimum. Plans the whole way (no
+  /// horizon); up to a few seconds where no such path exists (detour::kMaxEdges edges).
+  Search,
 };
-/// "shape", "arc_length", "projection", "pose", "auto"
+/// "shape", "arc_length", "projection", "pose", "auto", "search"
 std::string to_string(ObjectiveInterpolation interpolation);
 
 struct PlanOptions {
