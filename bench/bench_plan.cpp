@@ -61,6 +61,10 @@ void BM_PlanPaperExperiment(benchmark::State& state) { plan_experiment(state, tr
 void BM_PlanPaperExperimentWithoutTracking(benchmark::State& state) {
   plan_experiment(state, false);
 }
+/// BM_PlanPaperExperiment planned by 1 and by 2 threads at once, each its own plans. Google
+/// Benchmark divides the threads' wall time by the plans of both: 2 × threads:2 / threads:1 is what
+/// two plans at once cost against one (1 when they overlap perfectly, 2 one after the other).
+void BM_PlanPaperExperimentInThreads(benchmark::State& state) { plan_experiment(state, true); }
 
 /// The paper's experiment in a cell: a table 3 cm under the clamp and five obstacles (balls, a box,
 /// a pole) near the way the rod goes without them, each placed 8 mm or more clear of every shape
@@ -136,5 +140,10 @@ BENCHMARK(BM_PlanPaperExperiment)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanWithScene)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanAroundPost)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_PlanPaperExperimentWithoutTracking)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanPaperExperimentInThreads)
+    ->Threads(1)
+    ->Threads(2)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -3,15 +3,18 @@
 //   task file -> PlanTask (io) -> plan (trajectory) -> validate_plan (sim) -> validation.* (io)
 #include "validate_command.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "exit_code.hpp"
+#include "progress_line.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
@@ -34,6 +37,12 @@ std::uint64_t parse_seed(const std::string& text) {
     throw InputError("--seed = " + text + " must be a whole number in [0, " +
                      std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
   return seed;
+}
+
+/// The cores, within [1, ValidationOptions::kMaxJobs].
+int default_jobs() {
+  const auto cores = static_cast<int>(std::thread::hardware_concurrency());
+  return std::clamp(cores, 1, ValidationOptions::kMaxJobs);
 }
 
 class ValidateCommand final : public Command {
@@ -63,10 +72,20 @@ class ValidateCommand final : public Command {
                      "Seed of the first run (run k: seed + k - 1), a whole number in [0, 2^64 - "
                      "runs]")
         ->type_name("S");
+    options_.jobs = default_jobs();
+    command
+        ->add_option("--jobs", options_.jobs,
+                     "Closed loop: runs carried out at once, 1 to 256 (default: the cores, here " +
+                         std::to_string(default_jobs()) +
+                         "); the results are the same for every value")
+        ->check(CLI::Range(1, ValidationOptions::kMaxJobs))
+        ->type_name("N");
     command->add_flag("--closed-loop", options_.closed_loop,
                       "Close the loop: at each waypoint, estimate the rod from the sensors and "
                       "re-plan the rest (the task's closed_loop section)");
-    command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
+    command->add_flag("-q,--quiet", quiet_,
+                      "Do not print the one-line summary on standard output, nor the progress on "
+                      "standard error (drawn only when it is a terminal)");
     command->add_flag("--no-html", no_html_,
                       "Do not write plan.html and validation.html (the 3D pages)");
     command->footer(
@@ -111,10 +130,15 @@ class ValidateCommand final : public Command {
     }
     options.loop = task.closed_loop;
     options.planning = task.options;
-    try {
-      result = validate_plan(task.problem, plan, task.plant, task.sensor, options);
-    } catch (const InputError& error) {
-      throw InputError(task.locate(error));
+    {
+      ProgressLine progress("validate", options.closed_loop ? "runs" : "frames", !quiet_);
+      if (progress.active())
+        options.progress = [&progress](int done, int total) { progress.update(done, total); };
+      try {
+        result = validate_plan(task.problem, plan, task.plant, task.sensor, options);
+      } catch (const InputError& error) {
+        throw InputError(task.locate(error));
+      }
     }
     warn_without_html(no_html_);
     std::vector<std::string> written =

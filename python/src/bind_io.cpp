@@ -57,13 +57,31 @@ Plan plan_task(const PlanTask& task) {
   }
 }
 
-Validation validate_task(const PlanTask& task, int runs, std::uint64_t seed, bool closed_loop) {
+/// As `rodshape validate`; `progress(done, total)`, when given, is called with the GIL taken back
+/// (ValidationOptions::progress), and the rest runs with the GIL released.
+Validation validate_task(const PlanTask& task,
+                         int runs,
+                         std::uint64_t seed,
+                         bool closed_loop,
+                         int jobs,
+                         const std::optional<py::function>& progress) {
   ValidationOptions options;
   options.runs = runs;
   options.seed = seed;
   options.closed_loop = closed_loop;
+  options.jobs = jobs;
   options.loop = task.closed_loop;
   options.planning = task.options;
+  if (progress) {
+    // A pointer to the caller's function: copies of the callback never touch its reference count
+    // without the GIL.
+    const py::function* callback = &*progress;
+    options.progress = [callback](int done, int total) {
+      const py::gil_scoped_acquire gil;
+      (*callback)(done, total);
+    };
+  }
+  const py::gil_scoped_release release;
   try {
     PlanResult planned = plan(task.problem, task.options);
     ValidationResult result =
@@ -190,8 +208,12 @@ void bind_io(py::module_& m) {
   m.def("plan", &plan_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),
         "Plans a plan task as `rodshape plan` does.");
   m.def("validate", &validate_task, py::arg("task"), py::arg("runs") = 1, py::arg("seed") = 1,
-        py::arg("closed_loop") = false, py::call_guard<py::gil_scoped_release>(),
-        "Plans a plan task and carries the plan out in simulation, as `rodshape validate` does.");
+        py::arg("closed_loop") = false, py::arg("jobs") = 1, py::arg("progress") = py::none(),
+        "Plans a plan task and carries the plan out in simulation, as `rodshape validate` does. "
+        "jobs: closed-loop runs carried out at once (1 to 256; the result is the same for every "
+        "value). progress: None or a callable progress(done, total), called as the runs (closed "
+        "loop) or the plant's frames (open loop) are done, never two calls at once, the last with "
+        "done == total; the GIL is released in between.");
 }
 
 }  // namespace rodshape::python

@@ -43,6 +43,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"PlantModel.planner_gravity", "gravity"},
       {"ValidationOptions.seed", "--seed"},
       {"ValidationOptions.runs", "--runs"},
+      {"ValidationOptions.jobs", "--jobs"},
       {"PlantModel", "plant"},
       {"MarkerSensorModel.in_plane_noise", "sensor.noise.in_plane"},
       {"MarkerSensorModel.depth_noise", "sensor.noise.depth"},

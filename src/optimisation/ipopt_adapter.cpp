@@ -5,7 +5,9 @@
 #include <IpSolveStatistics.hpp>
 
 #include "optimisation/ipopt_nlp.hpp"
+#include "optimisation/mumps_lock.hpp"
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -121,12 +123,22 @@ IpoptRun IpoptSession::run(ShapeProblem& problem,
   Ipopt::IpoptApplication& app = *application_->app;
   auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_, admissible);
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
-  // IPOPT solves are serialised process-wide: the sequential MUMPS that Debian's IPOPT 3.11 uses
-  // keeps state in Fortran module variables and is not thread-safe. Everything else of a plan
-  // (integrations, stability, tracking) runs in parallel in other threads.
-  static std::mutex mumps;
-  const std::lock_guard<std::mutex> lock(mumps);
-  IpoptRun run = with_status(app.OptimizeTNLP(owner));
+  // MUMPS, IPOPT's linear solver here, is not thread-safe: its calls go one at a time through the
+  // lock of mumps_lock.cpp, and the rest of the solve runs in parallel. Until a run has shown that
+  // IPOPT's calls are bound to that lock (they are unless another image defining dmumps_c came
+  // first), whole solves are serialised instead.
+  static std::mutex whole_solves;
+  static std::atomic<bool> mumps_behind_lock{false};
+  IpoptRun run;
+  if (mumps_behind_lock.load(std::memory_order_acquire)) {
+    run = with_status(app.OptimizeTNLP(owner));
+  } else {
+    const std::lock_guard<std::mutex> lock(whole_solves);
+    const long calls_before = mumps_calls_in_this_thread();
+    run = with_status(app.OptimizeTNLP(owner));
+    if (mumps_calls_in_this_thread() > calls_before)
+      mumps_behind_lock.store(true, std::memory_order_release);
+  }
   const NlpOutcome& outcome = nlp->outcome();
   const Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app.Statistics();
   run.w = outcome.w;

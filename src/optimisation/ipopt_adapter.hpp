@@ -46,8 +46,8 @@ class IpoptSession {
   const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 
   /// Optimises `problem` from `start` (F not evaluated outside `admissible`, when given); the
-  /// problem is left evaluated at some iterate. Runs in different threads are serialised (MUMPS,
-  /// IPOPT's linear solver here, is not thread-safe).
+  /// problem is left evaluated at some iterate. Runs in different threads overlap; only their calls
+  /// of MUMPS (IPOPT's linear solver here, not thread-safe) are serialised (mumps_lock.hpp).
   IpoptRun run(ShapeProblem& problem,
                const Vector6d& start,
                const std::optional<WrenchBounds>& admissible = std::nullopt);

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <sstream>
 
+#include "parallel_runs.hpp"
 #include "plant_reach.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
@@ -50,7 +52,14 @@ void drive_and_observe(ValidationResult& result,
   const double length = result.real_rod.properties.length;
   const Eigen::Vector3d clamp = result.real_rod.clamp.position;
   sim_detail::SceneContact contact(problem.scene, clamp);
+  const int total = static_cast<int>(times.size());
+  int driven = 0, reported_percent = -1;
   const auto see = [&](const PlantFrame& frame) {
+    ++driven;
+    if (options.progress && (100 * driven / total > reported_percent || driven == total)) {
+      reported_percent = 100 * driven / total;
+      options.progress(driven, total);
+    }
     contact.see(frame);
     for (std::size_t k = 0; k < cameras.size(); ++k) {
       ValidationRun& run = result.runs[k];
@@ -62,6 +71,7 @@ void drive_and_observe(ValidationResult& result,
   };
   result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path,
                              plan.initial_wrench, times, see, options.plant);
+  if (options.progress && driven < total) options.progress(total, total);  // lost on the way
   for (ValidationRun& run : result.runs) {
     run.events = result.plant.events;
     run.events.insert(run.events.end(), contact.contacts().begin(), contact.contacts().end());
@@ -162,6 +172,9 @@ void ValidationOptions::validate() const {
   if (runs < 1 || runs > kMaxRuns)
     throw InputError("ValidationOptions.runs", " = " + std::to_string(runs) + " must be in [1, " +
                                                    std::to_string(kMaxRuns) + "]");
+  if (jobs < 1 || jobs > kMaxJobs)
+    throw InputError("ValidationOptions.jobs", " = " + std::to_string(jobs) + " must be in [1, " +
+                                                   std::to_string(kMaxJobs) + "]");
   plant.validate();
   // Run k is seeded with seed + k - 1: the last must not wrap past 2^64 - 1.
   if (seed > std::numeric_limits<std::uint64_t>::max() - static_cast<std::uint64_t>(runs - 1))
@@ -234,12 +247,22 @@ ValidationResult validate_plan(const PlanProblem& problem,
                       frame_times(path.front().t, path.back().t, sensor.frame_rate));
     for (ValidationRun& run : result.runs) run.driven_by_joints = drives_joints(problem, plan);
   }
-  for (int k = 0; options.closed_loop && k < options.runs; ++k) {
-    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
-    PlantRun plant_run;
-    result.runs.push_back(
-        closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run));
-    if (k == 0) result.plant = std::move(plant_run);
+  if (options.closed_loop) {
+    // Each run drives its own plant: the runs are independent, carried out by options.jobs threads.
+    result.runs.resize(static_cast<std::size_t>(options.runs));
+    std::mutex progress_mutex;
+    int done = 0;
+    sim_detail::parallel_runs(options.runs, options.jobs, [&](int k) {
+      const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
+      PlantRun plant_run;
+      result.runs[static_cast<std::size_t>(k)] =
+          closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run);
+      if (k == 0) result.plant = std::move(plant_run);
+      if (options.progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        options.progress(++done, options.runs);
+      }
+    });
   }
   judge(result);
   return result;

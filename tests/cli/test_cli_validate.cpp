@@ -99,6 +99,32 @@ TEST_F(CliValidate, TheBundledClosedLoopExampleEndsWithinAMillimetre) {
   EXPECT_LT(true_error[1], 0.5 * true_error[0]);
 }
 
+TEST_F(CliValidate, ClosedLoopRunsInParallelWriteWhatOneJobWritesAndNoProgressOffATerminal) {
+  // The runs' seeds are fixed whoever carries them out: validation.json is the same for any
+  // --jobs. Standard error is a file here, not a terminal: no progress line, nothing at all.
+  std::string written[2];
+  const char* jobs[2] = {" --jobs 1", " --jobs 3"};
+  for (int k = 0; k < 2; ++k) {
+    const Outcome result = validate(kTask, std::string(" --closed-loop --runs 3") + jobs[k]);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(result.err, "");
+    written[k] = read_file(outdir() / "validation.json");
+  }
+  EXPECT_EQ(Json::parse(written[0])["runs"].size(), 3u);
+  EXPECT_EQ(written[1], written[0]);
+}
+
+TEST_F(CliValidate, JobsOutsideItsRangeIsBadInput) {
+  for (const char* arguments : {" --jobs 0", " --jobs 257", " --jobs two"}) {
+    SCOPED_TRACE(arguments);
+    const Outcome result = validate(kTask, arguments);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find("--jobs"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(outdir()));
+  }
+}
+
 TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritten) {
   const std::pair<const char*, const char*> cases[] = {
       {"plant: {stiffnes_scale: 0.85}\n", "plant.stiffnes_scale: unknown key"},

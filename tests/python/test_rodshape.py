@@ -386,6 +386,29 @@ def test_closed_loop_options_and_checkpoints():
         rodshape.validate(task, closed_loop=True)
 
 
+def test_validate_jobs_and_progress_callback():
+    task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
+    serial = rodshape.validate(task, runs=2, seed=3, closed_loop=True)
+    calls = []
+    parallel = rodshape.validate(task, runs=2, seed=3, closed_loop=True, jobs=2,
+                                 progress=lambda done, total: calls.append((done, total)))
+    assert calls == [(1, 2), (2, 2)]
+    for a, b in zip(parallel.runs, serial.runs):  # the same runs, whichever thread did them
+        assert np.array_equal(a.error_3d, b.error_3d) and a.final.true_error == b.final.true_error
+    assert not np.array_equal(serial.runs[0].error_3d, serial.runs[1].error_3d)
+    frames = []
+    open_loop = rodshape.validate(task, progress=lambda done, total: frames.append((done, total)))
+    assert frames[-1] == (len(open_loop.runs[0].time),) * 2 and len(frames) <= 101
+
+    def fail(done, total):
+        raise RuntimeError("stop at %d of %d" % (done, total))
+
+    with pytest.raises(RuntimeError, match="stop at 1 of 2"):
+        rodshape.validate(task, runs=2, closed_loop=True, jobs=2, progress=fail)
+    with pytest.raises(rodshape.InputError, match="jobs"):
+        rodshape.validate(task, jobs=0)
+
+
 def test_a_scene_built_in_python_is_kept_clear():
     task = rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml"))
     problem = task.problem

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@ namespace rodshape {
 
 struct ValidationOptions {
   static constexpr int kMaxRuns = 1000;
+  static constexpr int kMaxJobs = 256;
   /// Frames of all runs together (runs × duration × frame rate; closed loop, with the rests at
   /// the checkpoints): each keeps about 40 bytes of series and writes about 200 bytes of
   /// validation.json and validation.csv (docs/limits.md).
@@ -36,6 +38,14 @@ struct ValidationOptions {
   bool closed_loop = false;
   ClosedLoopOptions loop;
   PlanOptions planning;  // the options of the closed loop's re-plans (the plan's own)
+  /// Threads that carry out the closed loop's runs at once, 1 ≤ jobs ≤ kMaxJobs (run k is seeded
+  /// as ever: the result is the same for every jobs). Open loop, the runs observe one plant driven
+  /// in one thread, and jobs is not used.
+  int jobs = 1;
+  /// Called as the work advances, with (done, total): closed loop the runs done, open loop the
+  /// plant's frames driven (at most about 100 calls). Never two calls at once, done increasing;
+  /// the last call has done = total. Empty: nothing called.
+  std::function<void(int done, int total)> progress;
   /// Throws InputError naming the field.
   void validate() const;
 };

@@ -1,0 +1,87 @@
+// test_ipopt_threads.cpp: many threads each solving small shape problems at once give, bit for bit,
+// the serial results; and this binary's IPOPT really calls MUMPS through rodshape's lock
+// (mumps_lock.hpp), so that solves overlap and only MUMPS's calls are serialised.
+// Named "Threads" so that the ThreadSanitizer job of CI runs it (ctest -R Threads).
+#include <gtest/gtest.h>
+
+#include <thread>
+#include <vector>
+
+#include "optimisation/mumps_lock.hpp"
+#include "optimisation_fixtures.hpp"
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
+
+namespace rodshape {
+namespace {
+
+constexpr int kIntervals = 16;  // small problems: many solves in little time
+
+/// Problem k: ten points on the band bent by a wrench that grows with k, fitted from a zero wrench;
+/// odd k with a curvature limit (more rows in the KKT system, an active inequality).
+struct SmallProblem {
+  ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, kIntervals);
+  ShapeTarget target;
+  StrainLimits limits;
+};
+
+SmallProblem small_problem(int k) {
+  SmallProblem problem;
+  Vector6d w;
+  w << 0.20, -0.12, 0.05, 0.09, -0.14, 0.01;
+  w *= 0.4 + 0.15 * k;
+  const RodConfiguration shape = integrate(problem.rod, BaseWrench::from_vector(w));
+  for (int i = 1; i <= 10; ++i) problem.target.points.push_back(shape.p[i + (kIntervals - 10)]);
+  problem.target.squared_distances = true;
+  problem.target.energy_weight = 1e-3;
+  problem.target.distance_weight = 100.0;
+  if (k % 2 == 1) problem.limits.max_curvature = 4.0;
+  return problem;
+}
+
+ShapeResult solve(int k) {
+  const SmallProblem p = small_problem(k);
+  ShapeProblem problem(p.rod, p.target, {}, {}, p.limits);
+  return optimise_shape(problem, BaseWrench{});
+}
+
+TEST(IpoptThreads, ASolveCallsMumpsThroughTheLock) {
+  const long before = detail::mumps_calls_in_this_thread();
+  const ShapeResult result = solve(0);
+  ASSERT_TRUE(result.converged()) << result.message;
+  // IPOPT's dmumps_c calls (initialise, analyse, factorise, solve, end) passed through the lock.
+  EXPECT_GE(detail::mumps_calls_in_this_thread() - before, 5);
+}
+
+TEST(IpoptThreads, ManyThreadsSolvingAtOnceGiveTheSerialResults) {
+  constexpr int kProblems = 6, kThreads = 4, kRounds = 1;
+  std::vector<ShapeResult> serial;
+  for (int k = 0; k < kProblems; ++k) {
+    serial.push_back(solve(k));
+    ASSERT_TRUE(serial.back().converged()) << k << ": " << serial.back().message;
+  }
+  ASSERT_GT(serial[1].ipopt.constraint_multipliers.size(), 0u);  // the limited problems have rows
+  // results[t][r * kProblems + j]: thread t solves the problems in its own rotated order.
+  std::vector<std::vector<ShapeResult>> results(kThreads);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t)
+    threads.emplace_back([t, &results] {
+      for (int r = 0; r < kRounds; ++r)
+        for (int j = 0; j < kProblems; ++j) results[t].push_back(solve((j + t) % kProblems));
+    });
+  for (std::thread& thread : threads) thread.join();
+  for (int t = 0; t < kThreads; ++t)
+    for (int r = 0; r < kRounds; ++r)
+      for (int j = 0; j < kProblems; ++j) {
+        const ShapeResult& got = results[t][r * kProblems + j];
+        const ShapeResult& want = serial[(j + t) % kProblems];
+        EXPECT_EQ(got.status, want.status);
+        EXPECT_EQ(got.ipopt.iterations, want.ipopt.iterations) << t << " " << j;
+        EXPECT_EQ(got.base_wrench.to_vector(), want.base_wrench.to_vector()) << t << " " << j;
+        EXPECT_EQ(got.cost.cost, want.cost.cost);
+        EXPECT_EQ(got.ipopt.constraint_multipliers, want.ipopt.constraint_multipliers);
+      }
+}
+
+}  // namespace
+}  // namespace rodshape
