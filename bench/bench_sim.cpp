@@ -5,8 +5,9 @@
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/feedback/state_estimator.hpp"
 #include "rodshape/samples/rubber_band.hpp"
-#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace {

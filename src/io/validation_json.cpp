@@ -75,7 +75,7 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"load_factor_sigma", json_number(c.estimate.load_factor_sigma)},
                     {"grasp_offset", io_detail::json_pose(c.grasp_offset)},
                     {"residual", json_number(c.estimate.residual)},
-                    {"converged", c.estimate.converged},
+                    {"converged", c.estimate.converged()},
                     {"chi2_drop", json_number(c.estimate.prior_chi2 - c.estimate.chi2)},
                     {"parameters", c.estimate.parameters},
                     {"consistent", c.consistent},

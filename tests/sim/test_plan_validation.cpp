@@ -346,7 +346,7 @@ TEST(ClosedLoop, ReducesTheFinalErrorOfAMismatchedPlant) {
   EXPECT_TRUE(run.closed_loop);
   ASSERT_EQ(run.checkpoints.size(), 2u);  // at waypoints 1 and 2 of 3
   for (const Checkpoint& c : run.checkpoints) {
-    EXPECT_TRUE(c.estimate.converged) << c.message;
+    EXPECT_TRUE(c.estimate.converged()) << c.message;
     EXPECT_TRUE(c.replanned) << c.message;
   }
   // The grasp offset is found to a fraction of a millimetre.
@@ -370,7 +370,7 @@ TEST(ClosedLoop, EstimatesWithinTheNoiseOfAnExactPlanChangeNothing) {
       validate_plan(band_problem(), band_plan(), PlantModel{}, MarkerSensorModel{}, options);
   ASSERT_EQ(gated.status, ValidationStatus::Complete) << gated.brief();
   for (const Checkpoint& c : gated.runs.front().checkpoints) {
-    EXPECT_TRUE(c.estimate.converged) << c.message;
+    EXPECT_TRUE(c.estimate.converged()) << c.message;
     EXPECT_FALSE(c.significant) << c.estimate.prior_chi2 - c.estimate.chi2;
     EXPECT_FALSE(c.replanned) << c.message;
     EXPECT_LT(c.estimate.chi2, c.estimate.prior_chi2);  // the fit is at least as good as the prior

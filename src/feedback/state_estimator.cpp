@@ -1,6 +1,6 @@
 // state_estimator.cpp: the weighted least-squares fit of the base wrench (and stiffness scale) to
 // the markers, the held tip pose, the wrist wrench and the prior (state_estimator.hpp).
-#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/feedback/state_estimator.hpp"
 
 #include <cmath>
 #include <limits>
@@ -315,12 +315,15 @@ StateEstimate estimate_state(const ClampedRod& model,
   estimate.load_factor = problem.load_of(x);
   estimate.residual = std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
   estimate.iterations = static_cast<int>(lm.iterations());
-  estimate.converged = r.allFinite() &&
-                       status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
-                       status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation;
-  if (estimate.converged) problem.posterior(x, estimate);
+  estimate.status = !r.allFinite() ? SolveStatus::NonFinite
+                    : status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
+                        ? SolveStatus::NotRun
+                    : status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation
+                        ? SolveStatus::IterationLimit
+                        : SolveStatus::Converged;
+  if (estimate.converged()) problem.posterior(x, estimate);
   estimate.configuration = problem.configuration();
-  estimate.message = estimate.converged ? "converged" : "the fit did not converge";
+  estimate.message = estimate.converged() ? "converged" : "the fit did not converge";
   return estimate;
 }
 

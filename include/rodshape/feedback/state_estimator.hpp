@@ -5,7 +5,8 @@
 //   min Σ_j |Σ_c⁻¹ R_cᵀ (Γ(s_j; w) - m_j)|² + |(p(L) - p_d)/σ_p|² + |log(R_dᵀ R(L))/σ_R|²
 //       + |(W(w) - W_meas)/σ_W|² + |(w - w_prior)/σ_prior|²,
 // solved by Levenberg–Marquardt with the integrator's exact derivatives in w (a forward difference
-// in the stiffness scale). The closed loop's checkpoint estimates the rod this way.
+// in the stiffness scale). The shape controller estimates the rod this way at each checkpoint
+// (shape_controller.hpp).
 #pragma once
 
 #include <optional>
@@ -15,7 +16,8 @@
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/wrench.hpp"
-#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/feedback/marker_measurement.hpp"
+#include "rodshape/solvers/solve_status.hpp"
 
 namespace rodshape {
 
@@ -63,7 +65,12 @@ struct StateHypothesis {
 };
 
 struct StateEstimate {
-  bool converged = false;
+  /// Converged: the fit stopped at a finite point within Levenberg–Marquardt's tolerances.
+  /// IterationLimit: it ran out of evaluations (EstimationOptions::max_iterations); NonFinite: its
+  /// residual is not finite; NotRun: nothing was measured (no marker seen, no wrist wrench), or
+  /// the fit could not start. Only a converged estimate is acted on.
+  SolveStatus status = SolveStatus::NotRun;
+  bool converged() const { return status == SolveStatus::Converged; }
   BaseWrench base_wrench;
   double stiffness_scale = 1.0;
   double load_factor = 0.0;  // λ (with EstimationOptions::gravity)
