@@ -76,6 +76,7 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"grasp_offset", io_detail::json_pose(c.grasp_offset)},
                     {"residual", json_number(c.estimate.residual)},
                     {"converged", c.estimate.converged()},
+                    {"status", to_string(c.estimate.status)},
                     {"chi2_drop", json_number(c.estimate.prior_chi2 - c.estimate.chi2)},
                     {"parameters", c.estimate.parameters},
                     {"consistent", c.consistent},
