@@ -5,8 +5,10 @@
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/feedback/shape_controller.hpp"
+#include "rodshape/feedback/state_estimator.hpp"
 #include "rodshape/samples/rubber_band.hpp"
-#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace {
@@ -75,7 +77,36 @@ void BM_CheckpointReplan(benchmark::State& state) {
   }
 }
 
+/// One whole checkpoint of the controller (ShapeController::update at waypoint 1): the estimate as
+/// above and, acting on every estimate (significance < 0), the re-plan of the next step (a horizon
+/// of 1). The controller is copied, untimed, before each update (an update moves it on).
+void BM_ShapeControllerUpdate(benchmark::State& state) {
+  const Scene& s = scene();
+  const PlanStep& step = s.plan.steps.front();
+  MarkerSensor sensor(MarkerSensorModel{}, 1);
+  const RodConfiguration& c = step.solution.configuration;
+  MarkerMeasurement measurement{sensor.observe(PlantFrame{0.0, step.end_effector, {}, c}, 0.29),
+                                MarkerSensorModel{}};
+  ClosedLoopOptions options;
+  options.estimation.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  options.significance = -1.0;
+  PlanOptions planning;
+  planning.steps = static_cast<int>(s.plan.steps.size());
+  const ShapeController fresh(s.problem, s.plan, planning, options);
+  bool replanned = true;
+  for (auto _ : state) {
+    state.PauseTiming();
+    ShapeController controller = fresh;
+    state.ResumeTiming();
+    const ControllerOutput output = controller.update(measurement, {step.end_effector});
+    replanned = replanned && output.recalculated();
+    benchmark::DoNotOptimize(output);
+  }
+  if (!replanned) state.SkipWithError("an update did not re-plan");
+}
+
 BENCHMARK(BM_CheckpointEstimate)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ShapeControllerUpdate)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckpointReplan)
     ->ArgNames({"remaining", "horizon"})
     ->Args({1, 0})

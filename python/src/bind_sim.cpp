@@ -1,7 +1,7 @@
 // bind_sim.cpp: the simulated experiment's results (validate() is bound with the task in io).
 #include "bindings.hpp"
-#include "rodshape/sim/closed_loop.hpp"
-#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/feedback/marker_measurement.hpp"
+#include "rodshape/feedback/shape_controller.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/sim/plant_model.hpp"
 
@@ -69,7 +69,11 @@ void bind_closed_loop(py::module_& m) {
                      "each estimate's posterior is the next one's prior (recursive least squares)")
       .def("validate", &ClosedLoopOptions::validate);
   py::class_<StateEstimate>(m, "StateEstimate", "The rod's state fitted to what the sensors saw.")
-      .def_readonly("converged", &StateEstimate::converged)
+      .def_property_readonly(
+          "status", [](const StateEstimate& e) { return to_string(e.status); },
+          "the fit's SolveStatus: converged, iteration_limit, non_finite, not_run (nothing "
+          "measured)")
+      .def_property_readonly("converged", &StateEstimate::converged)
       .def_readonly("base_wrench", &StateEstimate::base_wrench)
       .def_readonly("stiffness_scale", &StateEstimate::stiffness_scale)
       .def_readonly("load_factor", &StateEstimate::load_factor, "λ, the weight's factor")

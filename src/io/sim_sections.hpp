@@ -4,8 +4,8 @@
 #pragma once
 
 #include "io/yaml_field.hpp"
-#include "rodshape/sim/closed_loop.hpp"
-#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/feedback/closed_loop_options.hpp"
+#include "rodshape/feedback/marker_measurement.hpp"
 #include "rodshape/sim/plant_model.hpp"
 
 namespace rodshape::io_detail {

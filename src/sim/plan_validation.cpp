@@ -91,8 +91,9 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
                               std::uint64_t seed,
                               PlantRun& plant_run) {
   MarkerSensor camera(sensor, seed);
-  ClosedLoopRun loop = run_closed_loop(problem, options.planning, plan, real, plant.grasp_offset,
-                                       camera, options.loop, options.plant);
+  ClosedLoopRun loop =
+      run_closed_loop(plan, ShapeController(problem, plan, options.planning, options.loop),
+                      {real, plant.grasp_offset, options.plant}, camera);
   ValidationRun run;
   run.seed = seed;
   run.closed_loop = true;

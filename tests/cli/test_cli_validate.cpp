@@ -93,6 +93,13 @@ TEST_F(CliValidate, TheBundledClosedLoopExampleEndsWithinAMillimetre) {
     const Json validation = Json::parse(read_file(outdir() / "validation.json"));
     EXPECT_EQ(validation["driven_by"], "joint_trajectory");
     true_error[closed] = validation["runs"][0]["final"]["true_error"].get<double>();
+    // Each checkpoint's fit says its SolveStatus, in the results' one vocabulary.
+    const Json& estimates = validation["runs"][0]["estimates"];
+    EXPECT_EQ(estimates.size(), closed ? 6u : 0u);
+    for (const Json& e : estimates) {
+      EXPECT_EQ(e["status"], "converged") << e["message"];
+      EXPECT_EQ(e["converged"], true);
+    }
   }
   EXPECT_GT(true_error[0], 1e-3);
   EXPECT_LT(true_error[1], 1e-3);

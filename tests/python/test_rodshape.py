@@ -366,6 +366,7 @@ def test_closed_loop_options_and_checkpoints():
     first = run.checkpoints[0]
     # A 2 mm grasp offset is far beyond the averaged markers' noise: the first estimate acts.
     assert first.significant and first.replanned, first.message
+    assert first.estimate.status == "converged" and first.estimate.converged
     assert first.consistent and first.estimate.residual <= task.closed_loop.max_residual == 2.0
     assert task.closed_loop.max_energy_ratio == 1.5
     assert first.estimate.prior_chi2 - first.estimate.chi2 > 6 + 3 * np.sqrt(12)

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "rodshape/error.hpp"
-#include "rodshape/sim/closed_loop.hpp"
-#include "rodshape/sim/marker_sensor.hpp"
+#include "rodshape/feedback/closed_loop_options.hpp"
+#include "rodshape/feedback/marker_measurement.hpp"
 #include "rodshape/sim/plant_model.hpp"
 #include "rodshape/trajectory/plan.hpp"
 

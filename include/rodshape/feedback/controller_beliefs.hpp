@@ -1,6 +1,7 @@
-// closed_loop_beliefs.hpp (private): what the closed loop believes of the rod's static parameters
-// (the model's corrections and the grasp offset) and how well, as priors for the next estimate
-// (state_estimator.hpp) and as the model the plan is made again with (closed_loop.hpp).
+// controller_beliefs.hpp: what the shape controller believes of the rod's static
+// parameters (the model's corrections and the grasp offset) and how well, as priors for the next
+// estimate (state_estimator.hpp) and as the model the plan is made again with
+// (shape_controller.hpp).
 #pragma once
 
 #include <cmath>
@@ -8,22 +9,21 @@
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/wrench.hpp"
-#include "rodshape/sim/closed_loop.hpp"
-#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/feedback/closed_loop_options.hpp"
+#include "rodshape/feedback/state_estimator.hpp"
 
-namespace rodshape::closed_loop_detail {
+namespace rodshape {
 
-/// The rod's static parameters as the loop sees them: the model's corrections and the grasp offset.
-struct StaticParameters {
-  double stiffness_scale = 1.0, load_factor = 0.0;
-  Pose offset;
-};
-
-/// What the loop believes of the static parameters. `acting`: what the plan uses. `fused`: what all
-/// estimates so far say (with ClosedLoopOptions::fuse, each estimate's posterior, with its
+/// What the controller believes of the static parameters. `acting`: what the plan uses. `fused`:
+/// what all estimates so far say (with ClosedLoopOptions::fuse, each estimate's posterior, with its
 /// covariance, is the next one's prior: recursive least squares; else the last estimate acted
 /// on). The estimates are tested against `acting`, and one acted on makes `fused` the new `acting`.
-struct Beliefs {
+struct ControllerBeliefs {
+  /// The rod's static parameters: the model's corrections and the grasp offset.
+  struct StaticParameters {
+    double stiffness_scale = 1.0, load_factor = 0.0;
+    Pose offset;
+  };
   StaticParameters acting, fused;
   std::optional<double> stiffness_sigma, load_factor_sigma;  // unset: EstimationOptions'
   /// The offset's covariance in the tip frame (position, then the rotation's angle); unset: the
@@ -80,4 +80,4 @@ struct Beliefs {
   }
 };
 
-}  // namespace rodshape::closed_loop_detail
+}  // namespace rodshape

@@ -1,13 +1,13 @@
-// The closed loop's gentleness test of a re-plan (src/sim/replan_gentleness.hpp): a re-planned
+// The closed loop's gentleness test of a re-plan (src/feedback/replan_gentleness.hpp): a re-planned
 // step is refused when its energy exceeds ratio × max(the replaced step's, the start's).
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "sim/replan_gentleness.hpp"
+#include "feedback/replan_gentleness.hpp"
 
-namespace rodshape::closed_loop_detail {
+namespace rodshape::feedback_detail {
 namespace {
 
 std::vector<PlanStep> steps_of(const std::vector<double>& energies) {
@@ -49,4 +49,4 @@ TEST(ReplanGentleness, StepsBeyondTheReplacedOnesAreNotJudged) {
 }
 
 }  // namespace
-}  // namespace rodshape::closed_loop_detail
+}  // namespace rodshape::feedback_detail

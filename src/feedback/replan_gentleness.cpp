@@ -1,10 +1,11 @@
-// replan_gentleness.cpp: the closed loop's gentleness test of a re-plan (replan_gentleness.hpp).
+// replan_gentleness.cpp: the shape controller's gentleness test of a re-plan
+// (replan_gentleness.hpp).
 #include "replan_gentleness.hpp"
 
 #include <algorithm>
 #include <sstream>
 
-namespace rodshape::closed_loop_detail {
+namespace rodshape::feedback_detail {
 
 std::string not_gentle(const std::vector<PlanStep>& steps,
                        double start_energy,
@@ -23,4 +24,4 @@ std::string not_gentle(const std::vector<PlanStep>& steps,
   return {};
 }
 
-}  // namespace rodshape::closed_loop_detail
+}  // namespace rodshape::feedback_detail

@@ -1,6 +1,6 @@
 // state_estimator.cpp: the weighted least-squares fit of the base wrench (and stiffness scale) to
 // the markers, the held tip pose, the wrist wrench and the prior (state_estimator.hpp).
-#include "rodshape/sim/state_estimator.hpp"
+#include "rodshape/feedback/state_estimator.hpp"
 
 #include <cmath>
 #include <limits>
@@ -155,9 +155,10 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
   /// Markers in the camera frame, each axis over its standard deviation.
   void markers(const ClampedRod& rod, Eigen::VectorXd& r, JacobianType* J, int& row) const {
     const Eigen::Matrix3d Rc = sensor_.camera.rotation.transpose();
-    const Eigen::Vector3d sigma(std::max(sensor_.in_plane_noise, 1e-6),
-                                std::max(sensor_.in_plane_noise, 1e-6),
-                                std::max(sensor_.depth_noise, 1e-6));
+    const double floor = options_.min_marker_sigma;
+    const Eigen::Vector3d sigma(std::max(sensor_.in_plane_noise, floor),
+                                std::max(sensor_.in_plane_noise, floor),
+                                std::max(sensor_.depth_noise, floor));
     const Eigen::Matrix3d W = sigma.cwiseInverse().asDiagonal() * Rc;
     for (std::size_t j = 0; j < data_.markers.size(); ++j, row += 3) {
       r.segment<3>(row) = W * (curve_point(configuration_, data_.s[j]) - data_.markers[j]);
@@ -186,8 +187,8 @@ class EstimationProblem : public Eigen::DenseFunctor<double> {
     const Eigen::Matrix3d Rt = data_.end_effector.rotation.transpose();
     const Wrench tip = configuration_.tip_wrench();
     const Eigen::Vector3d arm = configuration_.tip().position - data_.end_effector.position;
-    const double sf = std::max(sensor_.wrist->force, 1e-9),
-                 sm = std::max(sensor_.wrist->moment, 1e-9);
+    const double sf = std::max(sensor_.wrist->force, options_.min_wrist_force_sigma),
+                 sm = std::max(sensor_.wrist->moment, options_.min_wrist_moment_sigma);
     r.segment<3>(row) = (-(Rt * tip.force) - data_.wrist->force) / sf;
     r.segment<3>(row + 3) =
         (-(Rt * (tip.moment + arm.cross(tip.force))) - data_.wrist->moment) / sm;
@@ -247,6 +248,14 @@ void EstimationOptions::validate() const {
   if (gravity)
     require_magnitude_at_most("EstimationOptions.gravity", *gravity, bounds::kMaxGravity, "m/s^2");
   detail::require_positive("EstimationOptions.load_prior_sigma", load_prior_sigma);
+  detail::require_positive("EstimationOptions.min_marker_sigma", min_marker_sigma);
+  require_in_range("EstimationOptions.min_marker_sigma", min_marker_sigma, bounds::kMarkerNoise);
+  detail::require_positive("EstimationOptions.min_wrist_force_sigma", min_wrist_force_sigma);
+  require_in_range("EstimationOptions.min_wrist_force_sigma", min_wrist_force_sigma,
+                   {0.0, bounds::kMaxForce, "N"});
+  detail::require_positive("EstimationOptions.min_wrist_moment_sigma", min_wrist_moment_sigma);
+  require_in_range("EstimationOptions.min_wrist_moment_sigma", min_wrist_moment_sigma,
+                   {0.0, bounds::kMaxForce, "N*m"});
   if (tip_covariance) {
     const Matrix6d& c = *tip_covariance;
     if (!c.allFinite() || !c.isApprox(c.transpose(), 1e-12) || c.llt().info() != Eigen::Success)
@@ -315,12 +324,15 @@ StateEstimate estimate_state(const ClampedRod& model,
   estimate.load_factor = problem.load_of(x);
   estimate.residual = std::sqrt(r.squaredNorm() / static_cast<double>(r.size()));
   estimate.iterations = static_cast<int>(lm.iterations());
-  estimate.converged = r.allFinite() &&
-                       status != Eigen::LevenbergMarquardtSpace::ImproperInputParameters &&
-                       status != Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation;
-  if (estimate.converged) problem.posterior(x, estimate);
+  estimate.status = !r.allFinite() ? SolveStatus::NonFinite
+                    : status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
+                        ? SolveStatus::NotRun
+                    : status == Eigen::LevenbergMarquardtSpace::TooManyFunctionEvaluation
+                        ? SolveStatus::IterationLimit
+                        : SolveStatus::Converged;
+  if (estimate.converged()) problem.posterior(x, estimate);
   estimate.configuration = problem.configuration();
-  estimate.message = estimate.converged ? "converged" : "the fit did not converge";
+  estimate.message = estimate.converged() ? "converged" : "the fit did not converge";
   return estimate;
 }
 

@@ -1,0 +1,23 @@
+// planned_waypoint.hpp: a waypoint of the plan still ahead of the shape controller: where the arm
+// is commanded to, the base wrench the plan expects there (the estimator's prior) and the planned
+// shape's elastic energy (what a re-planned step is held against).
+#pragma once
+
+#include "rodshape/core/pose.hpp"
+#include "rodshape/core/wrench.hpp"
+#include "rodshape/trajectory/plan_result.hpp"
+
+namespace rodshape {
+
+struct PlannedWaypoint {
+  Pose end_effector;
+  BaseWrench wrench;
+  double energy = 0.0;  // J
+};
+
+/// The waypoint a plan's step ends at.
+inline PlannedWaypoint planned_waypoint(const PlanStep& step) {
+  return {step.end_effector, step.solution.base_wrench, step.solution.configuration.energy};
+}
+
+}  // namespace rodshape
