@@ -98,6 +98,29 @@ TargetSpline fit_target_spline(const ShapeTarget& target,
   return fitted;
 }
 
+/// Infeasible (into `result`) when the chain clamp → p_1 → … → p_n is longer than result.reach;
+/// offending_point: the first point the chain reaches beyond it.
+void check_chain_length(const ShapeTarget& target,
+                        const Eigen::Vector3d& clamp,
+                        FeasibilityResult& result) {
+  double chain = 0.0;
+  int beyond = -1;
+  Eigen::Vector3d joint = clamp;
+  for (std::size_t i = 0; i < target.points.size(); ++i) {
+    chain += (target.points[i] - joint).norm();
+    joint = target.points[i];
+    if (beyond < 0 && chain > result.reach) beyond = static_cast<int>(i);
+  }
+  if (beyond < 0) return;
+  result.feasible = false;
+  result.offending_point = beyond;
+  result.reason =
+      "the chain from the clamp through the points in order (the shortest curve "
+      "through them) is " +
+      metres(chain) + " long, longer than the rod (" + metres(result.reach) + "); it passes " +
+      point_field(static_cast<std::size_t>(beyond)) + " beyond that length";
+}
+
 }  // namespace
 
 void ShapeTarget::validate() const {
@@ -142,23 +165,7 @@ FeasibilityResult check_feasibility(const ShapeTarget& target,
   }
 
   // 2. The chain clamp → p_1 → … → p_n: no curve through the points, in order, is shorter.
-  double chain = 0.0;
-  int chain_beyond = -1;  // the first point the chain reaches beyond `reach`
-  Eigen::Vector3d joint = clamp;
-  for (std::size_t i = 0; i < target.points.size(); ++i) {
-    chain += (target.points[i] - joint).norm();
-    joint = target.points[i];
-    if (chain_beyond < 0 && chain > result.reach) chain_beyond = static_cast<int>(i);
-  }
-  if (result.feasible && chain_beyond >= 0) {
-    result.feasible = false;
-    result.offending_point = chain_beyond;
-    result.reason =
-        "the chain from the clamp through the points in order (the shortest curve "
-        "through them) is " +
-        metres(chain) + " long, longer than the rod (" + metres(result.reach) + "); it passes " +
-        point_field(static_cast<std::size_t>(chain_beyond)) + " beyond that length";
-  }
+  if (result.feasible) check_chain_length(target, clamp, result);
 
   // 3. The spline from the clamp through the points: the arc lengths.
   const TargetSpline fitted = fit_target_spline(target, clamp, L);

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <optional>
 #include <random>
-#include <sstream>
 
 #include "rodshape/solvers/stability.hpp"
 
@@ -15,6 +14,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "scene_stages.hpp"
+#include "validation.hpp"
 
 namespace rodshape::detour {
 
@@ -32,13 +32,6 @@ constexpr int kFoldCheckResolution = 16;   // substeps per search substep, verif
 constexpr double kSpike = 4.0;             // a substep's motion over the largest before it: a snap
 /// The longest edge towards a sample, in pose_distance.
 constexpr double kSteerLength(double rod_length) { return rod_length / 6.0; }
-
-/// 1.5 → "1.5", 3 → "3".
-std::string format_ratio(double ratio) {
-  std::ostringstream out;
-  out << ratio;
-  return out.str();
-}
 
 struct Node {
   Waypoint state;
@@ -215,8 +208,9 @@ class Tree {
   /// Why edges stopped, for the search's message.
   std::string stops_text() const {
     return "edges stopped by the scene " + std::to_string(stops_.scene) + ", by the energy cap (" +
-           format_ratio(caps_.first) +
-           (caps_.wider != caps_.first ? ", then " + format_ratio(caps_.wider) : std::string()) +
+           detail::format_value(caps_.first) +
+           (caps_.wider != caps_.first ? ", then " + detail::format_value(caps_.wider)
+                                       : std::string()) +
            " x the larger end energy) " + std::to_string(stops_.energy) + ", by a snap " +
            std::to_string(stops_.snap) + ", rod lost or unstable " + std::to_string(stops_.lost) +
            ", arrived off the planned shape " + std::to_string(stops_.elsewhere);

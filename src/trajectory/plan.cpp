@@ -206,19 +206,6 @@ ShapeResult solve_step(const PlanProblem& problem,
   }
 }
 
-/// Keeps the least gap of a tracked segment (step `step`, 1-based) in the plan's scene result.
-void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& gap, int step) {
-  SceneResult& scene = *result.scene;
-  if (!(gap.margin < scene.margin)) return;
-  scene.min_gap = gap.gap;
-  scene.margin = gap.margin;
-  scene.step = step;
-  scene.s = (gap.segment + gap.t) * problem.rod.step();
-  scene.obstacle = gap.obstacle;
-  scene.obstacle_label =
-      problem.scene.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
-}
-
 /// A detour's waypoint as a step of the plan: the equilibrium it reached, with the cost terms of
 /// the step it leads to (`problem` is that step's ShapeProblem).
 PlanStep detour_step(const detour::Waypoint& waypoint,
@@ -247,6 +234,22 @@ SegmentTracking detour_tracking(const detour::Waypoint& reached, double deviatio
   return segment;
 }
 
+/// A detour's waypoints `via` appended to the plan as steps (detour: true), each edge's tracking
+/// and, with a scene, its least gap recorded.
+void append_detour(PlanResult& result,
+                   const PlanProblem& problem,
+                   const std::vector<detour::Waypoint>& via,
+                   const ObjectiveSet& set,
+                   const PointSet& points,
+                   ShapeProblem& costs) {
+  for (const detour::Waypoint& waypoint : via) {
+    const int number = static_cast<int>(result.steps.size()) + 1;
+    record(result.tracking, detour_tracking(waypoint, 0.0), number - 1);
+    if (result.scene) record_gap(result, problem, waypoint.gap, number);
+    result.steps.push_back(detour_step(waypoint, set, points, costs));
+  }
+}
+
 /// Searches a detour to `step` from the last waypoint; when found, appends its waypoints as
 /// steps (detour: true) and returns the tracking of the last edge, which arrives at `step` (or at
 /// the step optimised again on the branch the rod reaches: `step` is then replaced by it).
@@ -273,13 +276,10 @@ std::optional<SegmentTracking> take_detour(const PlanProblem& problem,
   result.scene->detours.push_back(found.message);
   if (!found.found) return std::nullopt;
   if (found.goal_step) step = std::move(*found.goal_step);
-  for (const detour::Waypoint& via : found.via) {
-    const int number = static_cast<int>(result.steps.size()) + 1;
-    record(result.tracking, detour_tracking(via, 0.0), number - 1);
-    record_gap(result, problem, via.gap, number);
-    result.steps.push_back(detour_step(via, set, step.objective_points, step_problem));
-    loop.tracked = via.wrench;
-    loop.from = via.end_effector;
+  append_detour(result, problem, found.via, set, step.objective_points, step_problem);
+  if (!found.via.empty()) {
+    loop.tracked = found.via.back().wrench;
+    loop.from = found.via.back().end_effector;
   }
   return detour_tracking(found.goal,
                          node_deviation(found.goal.configuration, step.solution.configuration));
@@ -539,10 +539,7 @@ bool gentle_peak(const PlanResult& plan) {
 }
 
 /// Gentle enough that Auto tries nothing else.
-bool gentle(const PlanResult& plan) {
-  return plan.complete() && plan.tracking.refinements == 0 &&
-         !(peak_ratio(plan) > PlanOptions::kGentleRatio);
-}
+bool gentle(const PlanResult& plan) { return gentle_peak(plan) && plan.tracking.refinements == 0; }
 
 PlanOptions with_interpolation(PlanOptions options, ObjectiveInterpolation scheme) {
   options.interpolation = scheme;
@@ -657,13 +654,8 @@ PlanResult plan_by_search(const PlanProblem& problem,
     result.scene = SceneResult{};
     result.scene->clearance = problem.scene.clearance;
   }
-  const ObjectiveSet set{goal.fraction, goal.objective_points};
-  for (const detour::Waypoint& via : found.via) {
-    const int number = static_cast<int>(result.steps.size()) + 1;
-    record(result.tracking, detour_tracking(via, 0.0), number - 1);
-    if (result.scene) record_gap(result, problem, via.gap, number);
-    result.steps.push_back(detour_step(via, set, goal.objective_points, costs));
-  }
+  append_detour(result, problem, found.via, {goal.fraction, goal.objective_points},
+                goal.objective_points, costs);
   record(result.tracking,
          detour_tracking(found.goal,
                          node_deviation(found.goal.configuration, goal.solution.configuration)),

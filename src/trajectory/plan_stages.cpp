@@ -271,6 +271,18 @@ ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const Objecti
   return {half, path.at(half), true};
 }
 
+void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& gap, int step) {
+  SceneResult& scene = *result.scene;
+  if (!(gap.margin < scene.margin)) return;
+  scene.min_gap = gap.gap;
+  scene.margin = gap.margin;
+  scene.step = step;
+  scene.s = (gap.segment + gap.t) * problem.rod.step();
+  scene.obstacle = gap.obstacle;
+  scene.obstacle_label =
+      problem.scene.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
+}
+
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,
                                       const EndEffectorLimits& limits) {

@@ -117,6 +117,10 @@ void record(TrackingResult& tracking, const SegmentTracking& segment, int step_i
 /// 6. The set halfway between fraction f_last and `set`'s, to be planned before it.
 ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const ObjectiveSet& set);
 
+/// Keeps the least gap of a tracked segment (step `step`, 1-based; 0: the initial shape) in the
+/// plan's scene result, when its margin is less than the one kept.
+void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& gap, int step);
+
 /// 7. The timed end-effector path from the initial pose through every step's waypoint.
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,

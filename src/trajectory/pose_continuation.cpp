@@ -100,6 +100,62 @@ PlanStep path_step(const PlanProblem& problem,
   return {set.fraction, false, false, set.points, std::move(solution), end_effector};
 }
 
+/// The held rod from `from` to `goal`'s pose; where it arrives on another stable equilibrium there,
+/// `goal` optimised again from it (kMaxReoptimisations at most) and the path followed again.
+FollowedPath follow_to_goal(const PlanProblem& problem,
+                            const plan_stages::InitialEquilibrium& initial,
+                            const Pose& from,
+                            PlanStep& goal,
+                            int waypoints,
+                            int substeps,
+                            const std::vector<double>* scene_gaps,
+                            const detour::Reoptimise& reoptimise) {
+  FollowedPath path = follow_path(problem, from, initial.wrench, goal, waypoints, substeps,
+                                  scene_gaps, initial.configuration);
+  for (int again = 0; again < kMaxReoptimisations && reoptimise &&
+                      path.followed.event == FollowEvent::OtherBranch &&
+                      arrived_stable(problem, path.followed.configuration, goal);
+       ++again) {
+    std::optional<PlanStep> there = reoptimise(path.followed.base_wrench);
+    if (!there) break;
+    goal = std::move(*there);
+    path = follow_path(problem, from, initial.wrench, goal, waypoints, substeps, scene_gaps,
+                       initial.configuration);
+  }
+  return path;
+}
+
+/// Why a path that was not followed to the end is no plan.
+Refusal not_followed(const PlanProblem& problem, const FollowedPath& path) {
+  const bool scene = path.followed.event == FollowEvent::Stopped;
+  const std::string why =
+      scene ? "it would come within " + std::to_string(path.least->gap * 1e3) + " mm of obstacle " +
+                  problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
+                      path.least->obstacle)
+            : path.followed.message;
+  return {scene ? PlanStatus::Collision : PlanStatus::SnapThrough,
+          "the rod cannot follow the end effector's straight path to the target's optimum: " + why};
+}
+
+/// The path's segments as the plan's tracking (each arriving at its waypoint's equilibrium, the
+/// last on the goal) and, with a scene, their least gap.
+void record_path(PlanResult& result, const PlanProblem& problem, const FollowedPath& path) {
+  if (!problem.scene.empty()) {
+    result.scene = SceneResult{};
+    result.scene->clearance = problem.scene.clearance;
+  }
+  for (std::size_t k = 0; k < path.segments.size(); ++k) {
+    SegmentTracking segment = path.segments[k];
+    const bool last = k + 1 == path.segments.size();
+    segment.arrived = last ? path.followed.base_wrench : path.waypoint_wrench[k];
+    segment.deviation = last ? path.followed.arrival_deviation : 0.0;
+    plan_stages::record(result.tracking, segment, static_cast<int>(k));
+    if (result.scene && segment.gap)
+      plan_stages::record_gap(result, problem, *segment.gap, static_cast<int>(k) + 1);
+  }
+  result.tracking.note = "the rod follows the plan (the end effector's straight path)";
+}
+
 }  // namespace
 
 std::optional<PlanResult> plan(const PlanProblem& problem,
@@ -116,29 +172,10 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
   const std::vector<double> required =
       problem.scene.empty() ? std::vector<double>{}
                             : problem.scene.required_gaps(problem.rod.clamp.position);
-  const std::vector<double>* scene_gaps = problem.scene.empty() ? nullptr : &required;
-  FollowedPath path = follow_path(problem, from, initial.wrench, goal, n, substeps, scene_gaps,
-                                  initial.configuration);
-  for (int again = 0; again < kMaxReoptimisations && reoptimise &&
-                      path.followed.event == FollowEvent::OtherBranch &&
-                      arrived_stable(problem, path.followed.configuration, goal);
-       ++again) {
-    std::optional<PlanStep> there = reoptimise(path.followed.base_wrench);
-    if (!there) break;
-    goal = std::move(*there);
-    path = follow_path(problem, from, initial.wrench, goal, n, substeps, scene_gaps,
-                       initial.configuration);
-  }
+  const FollowedPath path = follow_to_goal(problem, initial, from, goal, n, substeps,
+                                           problem.scene.empty() ? nullptr : &required, reoptimise);
   if (!path.followed.followed()) {
-    const bool scene = path.followed.event == FollowEvent::Stopped;
-    refusal.status = scene ? PlanStatus::Collision : PlanStatus::SnapThrough;
-    refusal.why =
-        "the rod cannot follow the end effector's straight path to the target's optimum: " +
-        (scene ? "it would come within " + std::to_string(path.least->gap * 1e3) +
-                     " mm of obstacle " +
-                     problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
-                         path.least->obstacle)
-               : path.followed.message);
+    refusal = not_followed(problem, path);
     return std::nullopt;
   }
   PlanResult result;
@@ -164,33 +201,7 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     }
   }
   result.steps.push_back(goal);
-  for (std::size_t k = 0; k < path.segments.size(); ++k) {
-    SegmentTracking segment = path.segments[k];
-    segment.arrived =
-        k + 1 < path.segments.size() ? path.waypoint_wrench[k] : path.followed.base_wrench;
-    segment.deviation = k + 1 < path.segments.size() ? 0.0 : path.followed.arrival_deviation;
-    plan_stages::record(result.tracking, segment, static_cast<int>(k));
-  }
-  result.tracking.note = "the rod follows the plan (the end effector's straight path)";
-  if (!problem.scene.empty()) {
-    result.scene = SceneResult{};
-    result.scene->clearance = problem.scene.clearance;
-    if (path.least) {
-      result.scene->min_gap = path.least->gap;
-      result.scene->margin = path.least->margin;
-      result.scene->step =
-          1 + static_cast<int>(std::find_if(path.segments.begin(), path.segments.end(),
-                                            [&](const SegmentTracking& s) {
-                                              return s.gap && s.gap->margin == path.least->margin;
-                                            }) -
-                               path.segments.begin());
-      result.scene->s = (path.least->segment + path.least->t) * problem.rod.step();
-      result.scene->obstacle = path.least->obstacle;
-      result.scene->obstacle_label =
-          problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
-              path.least->obstacle);
-    }
-  }
+  record_path(result, problem, path);
   result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
   if (!plan_stages::follows_timed_path(problem, result)) {
     refusal.why =

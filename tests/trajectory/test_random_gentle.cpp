@@ -159,9 +159,6 @@ std::optional<double> continuation_ratio(const ClampedRod& rod,
   double peak = rest.energy;
   for (const FollowedState& state : followed.states) peak = std::max(peak, state.energy);
   const double ratio = peak / followed.states.back().energy;
-  if (std::getenv("RODSHAPE_GENTLE_DEBUG"))
-    std::printf("  draw: %s, final %.4g J, ratio %.3f\n", followed.brief().c_str(),
-                followed.states.back().energy, ratio);
   if (!(ratio <= kContinuationRatio)) return std::nullopt;
   // Robustly: followed 16 × finer it arrives on the same equilibrium (a path passing near a point
   // where the branch divides goes one way or the other with the resolution; no plan can rely on
