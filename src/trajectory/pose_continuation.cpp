@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/stability.hpp"
 #include "scene_stages.hpp"
+#include "validation.hpp"
 
 namespace rodshape::pose_continuation {
 
@@ -25,15 +27,54 @@ struct FollowedPath {
   std::optional<SceneGap> least;
 };
 
-/// The held rod from the initial pose to `goal`'s, `substeps` per waypoint, arriving on `goal`.
+/// The end effector's waypoints W_0 = `from` … W_n = `to`: the tip's poses interpolated from
+/// `from`'s to `to`'s with `twist` more turn about the rod's tangent at the tip spread along them,
+/// T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ) (φ = 0: the straight path's points).
+std::vector<Pose> waypoint_poses(
+    const PlanProblem& problem, const Pose& from, const Pose& to, int n, double twist) {
+  const Pose& tip_T_ee = problem.grasp.tip_to_end_effector;
+  const Pose tip_from = compose(from, inverse(tip_T_ee));
+  Pose tip_to = compose(to, inverse(tip_T_ee));
+  const auto about_tangent = [](double angle) {
+    return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  };
+  tip_to.rotation = tip_to.rotation * about_tangent(twist);
+  std::vector<Pose> poses{from};
+  for (int i = 1; i < n; ++i) {
+    const double sigma = static_cast<double>(i) / n;
+    Pose tip = interpolate(tip_from, tip_to, sigma);
+    tip.rotation = tip.rotation * about_tangent(-twist * sigma);
+    poses.push_back(compose(tip, tip_T_ee));
+  }
+  poses.push_back(to);
+  return poses;
+}
+
+/// The held tip along straight segments between the end effector's waypoints, σ ∈ [i/n, (i+1)/n]
+/// on the segment from W_i to W_i+1.
+EquilibriumPath through_waypoints(const PlanProblem& problem, const std::vector<Pose>& poses) {
+  const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
+  const int n = static_cast<int>(poses.size()) - 1;
+  return {[poses, n, ee_T_tip, grasp = problem.grasp](double sigma) {
+            const double x = std::clamp(sigma, 0.0, 1.0) * n;
+            const int i = std::min(n - 1, static_cast<int>(std::floor(x)));
+            const Pose ee = interpolate(poses[static_cast<std::size_t>(i)],
+                                        poses[static_cast<std::size_t>(i) + 1], x - i);
+            return plan_stages::held_tip(compose(ee, ee_T_tip), grasp);
+          },
+          false};
+}
+
+/// The held rod from the initial pose W_0 to `goal`'s W_n through the waypoints `poses`,
+/// `substeps` per waypoint, arriving on `goal`.
 FollowedPath follow_path(const PlanProblem& problem,
-                         const Pose& from,
+                         const std::vector<Pose>& poses,
                          const BaseWrench& w,
                          const PlanStep& goal,
-                         int waypoints,
                          int substeps,
                          const std::vector<double>* required,
                          const RodConfiguration& start) {
+  const int waypoints = static_cast<int>(poses.size()) - 1;
   FollowedPath path;
   path.segments.resize(static_cast<std::size_t>(waypoints));
   FollowOptions follow;
@@ -54,9 +95,8 @@ FollowedPath follow_path(const PlanProblem& problem,
     ++substep;
     return true;
   };
-  path.followed = follow_equilibrium(
-      problem.rod, plan_stages::commanded_segment(problem, from, goal.end_effector), w, follow,
-      &goal.solution.configuration, 1e-3);
+  path.followed = follow_equilibrium(problem.rod, through_waypoints(problem, poses), w, follow,
+                                     &goal.solution.configuration, 1e-3);
   for (std::size_t k = 0; k < path.followed.states.size(); ++k) {
     const FollowedState& state = path.followed.states[k];
     SegmentTracking& segment = path.segments[k / static_cast<std::size_t>(substeps)];
@@ -100,18 +140,22 @@ PlanStep path_step(const PlanProblem& problem,
   return {set.fraction, false, false, set.points, std::move(solution), end_effector};
 }
 
-/// The held rod from `from` to `goal`'s pose; where it arrives on another stable equilibrium there,
-/// `goal` optimised again from it (kMaxReoptimisations at most) and the path followed again.
+/// The held rod from `from` to `goal`'s pose with `twist` (waypoint_poses); where it arrives on
+/// another stable equilibrium there, `goal` optimised again from it (kMaxReoptimisations at most)
+/// and the path followed again. `poses` are the waypoints of the path followed last.
 FollowedPath follow_to_goal(const PlanProblem& problem,
                             const plan_stages::InitialEquilibrium& initial,
                             const Pose& from,
+                            double twist,
                             PlanStep& goal,
                             int waypoints,
                             int substeps,
                             const std::vector<double>* scene_gaps,
-                            const detour::Reoptimise& reoptimise) {
-  FollowedPath path = follow_path(problem, from, initial.wrench, goal, waypoints, substeps,
-                                  scene_gaps, initial.configuration);
+                            const detour::Reoptimise& reoptimise,
+                            std::vector<Pose>& poses) {
+  poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
+  FollowedPath path = follow_path(problem, poses, initial.wrench, goal, substeps, scene_gaps,
+                                  initial.configuration);
   for (int again = 0; again < kMaxReoptimisations && reoptimise &&
                       path.followed.event == FollowEvent::OtherBranch &&
                       arrived_stable(problem, path.followed.configuration, goal);
@@ -119,7 +163,8 @@ FollowedPath follow_to_goal(const PlanProblem& problem,
     std::optional<PlanStep> there = reoptimise(path.followed.base_wrench);
     if (!there) break;
     goal = std::move(*there);
-    path = follow_path(problem, from, initial.wrench, goal, waypoints, substeps, scene_gaps,
+    poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
+    path = follow_path(problem, poses, initial.wrench, goal, substeps, scene_gaps,
                        initial.configuration);
   }
   return path;
@@ -156,14 +201,14 @@ void record_path(PlanResult& result, const PlanProblem& problem, const FollowedP
   result.tracking.note = "the rod follows the plan (the end effector's straight path)";
 }
 
-}  // namespace
-
-std::optional<PlanResult> plan(const PlanProblem& problem,
-                               const PlanOptions& options,
-                               const plan_stages::InitialEquilibrium& initial,
-                               const PlanResult& reference,
-                               const detour::Reoptimise& reoptimise,
-                               Refusal& refusal) {
+/// The Pose plan along the path with `twist` (waypoint_poses), or nullopt with `refusal`.
+std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
+                                          const PlanOptions& options,
+                                          const plan_stages::InitialEquilibrium& initial,
+                                          const PlanResult& reference,
+                                          const detour::Reoptimise& reoptimise,
+                                          double twist,
+                                          Refusal& refusal) {
   PlanStep goal = reference.steps.back();
   const int n = options.steps;
   const int substeps =
@@ -172,8 +217,10 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
   const std::vector<double> required =
       problem.scene.empty() ? std::vector<double>{}
                             : problem.scene.required_gaps(problem.rod.clamp.position);
-  const FollowedPath path = follow_to_goal(problem, initial, from, goal, n, substeps,
-                                           problem.scene.empty() ? nullptr : &required, reoptimise);
+  std::vector<Pose> poses;
+  const FollowedPath path =
+      follow_to_goal(problem, initial, from, twist, goal, n, substeps,
+                     problem.scene.empty() ? nullptr : &required, reoptimise, poses);
   if (!path.followed.followed()) {
     refusal = not_followed(problem, path);
     return std::nullopt;
@@ -182,6 +229,9 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
   result.status = PlanStatus::Complete;
   result.message = "complete: " + std::to_string(n) +
                    " steps on the end effector's straight path to the target's optimum";
+  if (twist != 0.0)
+    result.message += ", its tip turned " + detail::format_value(twist * 180.0 / std::numbers::pi) +
+                      " degrees more about the rod's tangent along the way";
   result.feasibility = reference.feasibility;
   result.initial_wrench = initial.wrench;
   result.initial_configuration = initial.configuration;
@@ -193,7 +243,7 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     const double sigma = static_cast<double>(i) / n;
     result.steps.push_back(path_step(problem, {sigma, sets.at(sigma)},
                                      path.waypoint_wrench[static_cast<std::size_t>(i - 1)],
-                                     interpolate(from, goal.end_effector, sigma)));
+                                     poses[static_cast<std::size_t>(i)]));
     if (!result.steps.back().solution.stability->stable) {
       refusal.why = "the end effector's straight path passes an unstable equilibrium at " +
                     std::to_string(sigma) + " of the way";
@@ -211,6 +261,34 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     return std::nullopt;
   }
   return result;
+}
+
+/// The tracked peak energy over the larger end energy.
+double peak_ratio(const PlanResult& result) {
+  const double larger = std::max(result.initial_configuration.energy,
+                                 result.steps.back().solution.configuration.energy);
+  return larger > 0.0 ? result.tracking.peak_energy / larger : 0.0;
+}
+
+}  // namespace
+
+std::optional<PlanResult> plan(const PlanProblem& problem,
+                               const PlanOptions& options,
+                               const plan_stages::InitialEquilibrium& initial,
+                               const PlanResult& reference,
+                               const detour::Reoptimise& reoptimise,
+                               Refusal& refusal) {
+  std::optional<PlanResult> best;
+  for (const double twist : kTwists) {
+    Refusal why;
+    std::optional<PlanResult> tried =
+        plan_with_twist(problem, options, initial, reference, reoptimise, twist, why);
+    if (twist == 0.0) refusal = why;  // the straight path's refusal speaks for all
+    if (!tried) continue;
+    if (!best || peak_ratio(*tried) < peak_ratio(*best)) best = std::move(tried);
+    if (peak_ratio(*best) <= PlanOptions::kGentleRatio) break;
+  }
+  return best;
 }
 
 }  // namespace rodshape::pose_continuation

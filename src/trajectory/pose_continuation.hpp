@@ -6,6 +6,8 @@
 // the way (a helix wound from straight), it stays at its end energies.
 #pragma once
 
+#include <array>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -26,6 +28,26 @@ struct Refusal {
 /// stable equilibrium, the goal's step optimised from there (a local optimum of the same points on
 /// the branch the rod reaches) and the path followed again to it.
 inline constexpr int kMaxReoptimisations = 2;
+
+/// Extra turns of the end effector about the rod's tangent at the tip, spread evenly along the
+/// path, tried in turn where the straight path (0) is refused or not gentle: the target's points
+/// fix the centreline, not the twist, and its optimum is the least twisted equilibrium through
+/// them; the straight path to its pose may then wind the rod onto another equilibrium there,
+/// where a path turning the tip by an eighth to three quarters of a turn more (and back) keeps
+/// the branch (the sweep's helices needed 30° to 165°). The
+/// gentlest followed plan is kept; the first within PlanOptions::kGentleRatio ends the tries.
+inline constexpr double kEighthTurn = std::numbers::pi / 4;
+inline constexpr std::array<double, 11> kTwists = {0.0,
+                                                   kEighthTurn,
+                                                   -kEighthTurn,
+                                                   2 * kEighthTurn,
+                                                   -2 * kEighthTurn,
+                                                   3 * kEighthTurn,
+                                                   -3 * kEighthTurn,
+                                                   4 * kEighthTurn,
+                                                   -4 * kEighthTurn,
+                                                   6 * kEighthTurn,
+                                                   -6 * kEighthTurn};
 
 /// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
 /// last step (a plan by objective sets that reached the target, tracked or not), or to that step
