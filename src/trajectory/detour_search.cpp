@@ -57,8 +57,8 @@ class Tree {
         required_(required),
         goal_(goal),
         reoptimise_(reoptimise),
-        caps_(caps),
-        rng_(20261125) {}
+        rng_(20261125),
+        caps_(caps) {}
 
   /// The rod followed along the straight interpolation from `start` to `to`; nullopt when it is
   /// lost, jumps, comes too near an obstacle, or (with `expected`) arrives elsewhere; then, with

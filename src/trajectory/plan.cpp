@@ -523,14 +523,11 @@ double peak_ratio(const PlanResult& plan) {
   return larger > 0.0 ? plan.tracking.peak_energy / larger : std::nan("");
 }
 
-/// How near another scheme's last step must come to the target to replace the Shape plan: the
-/// largest distance of an objective point from the rod of the Shape plan's last step, with 5 % +
-/// 0.1 mm of slack (another optimiser's end on the same target); when the Shape plan did not
-/// reach the target, 1 % of the rod's length (an optimum 10 cm off a point is no plan for it).
-double reached_within(const PlanResult& plan, const PlanProblem& problem) {
-  const bool reached = plan.status != PlanStatus::Partial && plan.status != PlanStatus::Infeasible;
-  if (!reached || plan.steps.empty()) return 0.01 * problem.rod.properties.length;
-  return 1.05 * plan.steps.back().solution.cost.max_distance + 1e-4;
+/// Why a complete plan of another scheme does not replace the Shape plan.
+std::string farther_than(const PlanResult& plan, double reach) {
+  return "its last step is farther from the target than allowed (" +
+         detail::format_value(plan.steps.back().solution.cost.max_distance * 1e3) + " mm > " +
+         detail::format_value(reach * 1e3) + " mm)";
 }
 
 /// Complete with a tracked peak within kGentleRatio × the larger end energy.
@@ -703,11 +700,11 @@ PlanResult gentlest_plan(const PlanProblem& problem,
           problem, with_interpolation(options, ObjectiveInterpolation::Projection), initial);
     const ObjectiveInterpolation schemes[] = {ObjectiveInterpolation::Pose,
                                               ObjectiveInterpolation::Projection};
-    const double reach = reached_within(best, problem);
+    const double reach = plan_stages::reached_within(best, problem);
     for (int k = 0; k < schemes_tried; ++k) {
       tried.push_back(trial(others[k], schemes[k]));
       if (others[k].complete() && !(others[k].steps.back().solution.cost.max_distance <= reach)) {
-        tried.back().note = "its last step is farther from the target than allowed";
+        tried.back().note = farther_than(others[k], reach);
         continue;
       }
       const bool better =
@@ -720,7 +717,7 @@ PlanResult gentlest_plan(const PlanProblem& problem,
           plan_by_search(problem, options, initial, best.complete() ? &best : &plan_for_optimum);
       tried.push_back(trial(searched, ObjectiveInterpolation::Search));
       if (searched.complete() && !(searched.steps.back().solution.cost.max_distance <= reach))
-        tried.back().note = "its last step is farther from the target than allowed";
+        tried.back().note = farther_than(searched, reach);
       else if (searched.complete() && (!best.complete() || peak_ratio(searched) < peak_ratio(best)))
         best = std::move(searched);
     }

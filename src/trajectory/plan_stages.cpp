@@ -321,4 +321,13 @@ bool follows_timed_path(const PlanProblem& problem, const PlanResult& result) {
   return true;
 }
 
+double reached_within(const PlanResult& shape, const PlanProblem& problem) {
+  const double length = problem.rod.properties.length;
+  const bool reached =
+      shape.status != PlanStatus::Partial && shape.status != PlanStatus::Infeasible;
+  if (!reached || shape.steps.empty()) return 0.01 * length;
+  return std::max(1.05 * shape.steps.back().solution.cost.max_distance + 1e-4,
+                  kNearTarget * length);
+}
+
 }  // namespace rodshape::plan_stages

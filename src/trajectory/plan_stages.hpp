@@ -133,4 +133,13 @@ std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
 /// path passes near) one way and the samples another: such a path is no plan.
 bool follows_timed_path(const PlanProblem& problem, const PlanResult& result);
 
+/// How near another scheme's last step must come to the target to replace the Shape plan `shape`
+/// (which is not gentle when this is asked): the largest distance of an objective point from the
+/// rod of its last step, with 5 % + 0.1 mm of slack (another optimiser's end on the same target),
+/// and at least kNearTarget of the rod's length (a gentle path may end on the same points' optimum
+/// on another branch, a little farther); when `shape` did not reach the target, 1 % of the rod's
+/// length (an optimum 10 cm off a point is no plan for it).
+inline constexpr double kNearTarget = 0.0025;
+double reached_within(const PlanResult& shape, const PlanProblem& problem);
+
 }  // namespace rodshape::plan_stages

@@ -279,10 +279,19 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
                                const detour::Reoptimise& reoptimise,
                                Refusal& refusal) {
   std::optional<PlanResult> best;
+  const double reach = plan_stages::reached_within(reference, problem);
   for (const double twist : kTwists) {
     Refusal why;
     std::optional<PlanResult> tried =
         plan_with_twist(problem, options, initial, reference, reoptimise, twist, why);
+    if (tried && !(tried->steps.back().solution.cost.max_distance <= reach)) {
+      why.why =
+          "the rod cannot follow the end effector's straight path to the target's optimum: "
+          "it arrives on another equilibrium, whose optimum is " +
+          detail::format_value(tried->steps.back().solution.cost.max_distance * 1e3) +
+          " mm from the target";
+      tried.reset();
+    }
     if (twist == 0.0) refusal = why;  // the straight path's refusal speaks for all
     if (!tried) continue;
     if (!best || peak_ratio(*tried) < peak_ratio(*best)) best = std::move(tried);
