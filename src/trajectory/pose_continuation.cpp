@@ -29,7 +29,8 @@ struct FollowedPath {
 
 /// The end effector's waypoints W_0 = `from` … W_n = `to`: the tip's poses interpolated from
 /// `from`'s to `to`'s with `twist` more turn about the rod's tangent at the tip spread along them,
-/// T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ) (φ = 0: the straight path's points).
+/// T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ); φ = 0: the end effector's straight
+/// path's points.
 std::vector<Pose> waypoint_poses(
     const PlanProblem& problem, const Pose& from, const Pose& to, int n, double twist) {
   const Pose& tip_T_ee = problem.grasp.tip_to_end_effector;
@@ -42,6 +43,10 @@ std::vector<Pose> waypoint_poses(
   std::vector<Pose> poses{from};
   for (int i = 1; i < n; ++i) {
     const double sigma = static_cast<double>(i) / n;
+    if (twist == 0.0) {  // the end effector's straight path
+      poses.push_back(interpolate(from, to, sigma));
+      continue;
+    }
     Pose tip = interpolate(tip_from, tip_to, sigma);
     tip.rotation = tip.rotation * about_tangent(-twist * sigma);
     poses.push_back(compose(tip, tip_T_ee));
@@ -51,8 +56,12 @@ std::vector<Pose> waypoint_poses(
 }
 
 /// The held tip along straight segments between the end effector's waypoints, σ ∈ [i/n, (i+1)/n]
-/// on the segment from W_i to W_i+1.
-EquilibriumPath through_waypoints(const PlanProblem& problem, const std::vector<Pose>& poses) {
+/// on the segment from W_i to W_i+1 (with `twist` 0 they lie on one straight path: that one, as
+/// plan_stages::commanded_segment has it).
+EquilibriumPath through_waypoints(const PlanProblem& problem,
+                                  const std::vector<Pose>& poses,
+                                  double twist) {
+  if (twist == 0.0) return plan_stages::commanded_segment(problem, poses.front(), poses.back());
   const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
   const int n = static_cast<int>(poses.size()) - 1;
   return {[poses, n, ee_T_tip, grasp = problem.grasp](double sigma) {
@@ -65,10 +74,11 @@ EquilibriumPath through_waypoints(const PlanProblem& problem, const std::vector<
           false};
 }
 
-/// The held rod from the initial pose W_0 to `goal`'s W_n through the waypoints `poses`,
-/// `substeps` per waypoint, arriving on `goal`.
+/// The held rod from the initial pose W_0 to `goal`'s W_n through the waypoints `poses` (of
+/// `twist`), `substeps` per waypoint, arriving on `goal`.
 FollowedPath follow_path(const PlanProblem& problem,
                          const std::vector<Pose>& poses,
+                         double twist,
                          const BaseWrench& w,
                          const PlanStep& goal,
                          int substeps,
@@ -95,8 +105,8 @@ FollowedPath follow_path(const PlanProblem& problem,
     ++substep;
     return true;
   };
-  path.followed = follow_equilibrium(problem.rod, through_waypoints(problem, poses), w, follow,
-                                     &goal.solution.configuration, 1e-3);
+  path.followed = follow_equilibrium(problem.rod, through_waypoints(problem, poses, twist), w,
+                                     follow, &goal.solution.configuration, 1e-3);
   for (std::size_t k = 0; k < path.followed.states.size(); ++k) {
     const FollowedState& state = path.followed.states[k];
     SegmentTracking& segment = path.segments[k / static_cast<std::size_t>(substeps)];
@@ -154,7 +164,7 @@ FollowedPath follow_to_goal(const PlanProblem& problem,
                             const detour::Reoptimise& reoptimise,
                             std::vector<Pose>& poses) {
   poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
-  FollowedPath path = follow_path(problem, poses, initial.wrench, goal, substeps, scene_gaps,
+  FollowedPath path = follow_path(problem, poses, twist, initial.wrench, goal, substeps, scene_gaps,
                                   initial.configuration);
   for (int again = 0; again < kMaxReoptimisations && reoptimise &&
                       path.followed.event == FollowEvent::OtherBranch &&
@@ -164,7 +174,7 @@ FollowedPath follow_to_goal(const PlanProblem& problem,
     if (!there) break;
     goal = std::move(*there);
     poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
-    path = follow_path(problem, poses, initial.wrench, goal, substeps, scene_gaps,
+    path = follow_path(problem, poses, twist, initial.wrench, goal, substeps, scene_gaps,
                        initial.configuration);
   }
   return path;
