@@ -85,7 +85,7 @@ Validation validate_task(const PlanTask& task,
   try {
     PlanResult planned = plan(task.problem, task.options);
     ValidationResult result =
-        validate_plan(task.problem, planned, task.plant, task.sensor, options);
+        validate_plan(task.problem, planned, task.plant, task.sensor_model(), options);
     return {std::move(result), std::move(planned), task};
   } catch (const InputError& error) {
     throw InputError(task.locate(error));

@@ -77,11 +77,13 @@ def test_a_non_finite_number_names_its_field(tmp_path):
 
 def equilibrium_examples():
     return [p for p in sorted(glob.glob(str(EXAMPLES / "*.yaml")))
-            if not Path(p).name.startswith("plan_")]
+            if not Path(p).name.startswith(("plan_", "validate_"))]
 
 
 def plan_examples():
-    return sorted(glob.glob(str(EXAMPLES / "plan_*.yaml")))
+    """The plan tasks: plan_*.yaml, and validate_*.yaml (plan tasks made to be validated)."""
+    return sorted(glob.glob(str(EXAMPLES / "plan_*.yaml")) +
+                  glob.glob(str(EXAMPLES / "validate_*.yaml")))
 
 
 @pytest.mark.parametrize("path", equilibrium_examples(), ids=lambda p: Path(p).stem)

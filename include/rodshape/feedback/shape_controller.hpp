@@ -17,6 +17,7 @@
 // controller knows no plant: sim/closed_loop.hpp drives one with it.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,12 @@ struct Checkpoint {
   bool significant = false;  // the estimate differs from the plan beyond noise (see significance)
   bool replanned = false;
   std::string message;  // the re-plan's brief, or why the plan was kept
+  /// What the estimate was made from: the markers seen (averaged over the rest) or the points of
+  /// the rest's pooled cloud; 0 until a driver says.
+  int points = 0;
+  /// The RMS distance from the estimated centreline to the real rod's (sim/shape_error.hpp,
+  /// centreline_rms): a truth only a simulation knows, filled by its driver; NaN otherwise.
+  double shape_rms = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Where the arm is when the controller is updated: at rest at the waypoint it was driven to

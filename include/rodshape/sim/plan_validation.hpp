@@ -13,6 +13,7 @@
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/enum_names.hpp"
+#include "rodshape/feedback/sensor_model.hpp"
 #include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
@@ -56,7 +57,8 @@ struct ValidationRun {
   std::uint64_t seed = 0;
   std::vector<double> time, error_3d, error_2d, true_error;  // s, m, m, m
   std::vector<int> visible_markers;
-  SensorFrame last_seen;  // what the sensor saw at the last frame
+  SensorFrame last_seen;  // what the marker camera saw at the last frame
+  CloudFrame last_cloud;  // what the depth camera saw at the last frame (sensor.kind: depth)
   ShapeError final;       // at the last frame
   bool closed_loop = false;
   std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
@@ -104,10 +106,12 @@ std::vector<double> frame_times(double t0, double t1, double rate);
 /// Validates `plan` (of `problem`, with a non-empty end-effector path) on `plant` seen by
 /// `sensor`, driven along commanded_path(). Throws InputError for bad input (a plan without a path,
 /// a plant that cannot be held at the start is a status, not an error).
+/// The sensor is a marker camera or a depth camera (sim/depth_camera.hpp: it needs the rod's
+/// radius, problem.scene.rod_radius > 0 from rod.section, and sees the plan's scene and arm).
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
-                               const MarkerSensorModel& sensor,
+                               const SensorModel& sensor,
                                const ValidationOptions& options = {});
 
 }  // namespace rodshape
