@@ -48,9 +48,30 @@ DepthCamera::DepthCamera(DepthSensorModel model, std::uint64_t seed)
   fy_ = model_.focal_y();
   cx_ = 0.5 * model_.width;
   cy_ = 0.5 * model_.height;
-  depth_.assign(static_cast<std::size_t>(model_.width) * model_.height, kNone);
-  segment_.assign(depth_.size(), -1);
 }
+
+struct DepthCamera::ZBuffer {
+  std::vector<double> depth;
+  std::vector<int> segment;
+  std::vector<int> touched;
+  /// The thread's buffer, at least `pixels` large.
+  static ZBuffer& of_this_thread(std::size_t pixels) {
+    thread_local ZBuffer buffer;
+    if (buffer.depth.size() < pixels) {
+      buffer.depth.resize(pixels, kNone);
+      buffer.segment.resize(pixels, -1);
+    }
+    return buffer;
+  }
+  /// Every pixel hit set back to none.
+  void clear() {
+    for (const int pixel : touched) {
+      depth[static_cast<std::size_t>(pixel)] = kNone;
+      segment[static_cast<std::size_t>(pixel)] = -1;
+    }
+    touched.clear();
+  }
+};
 
 /// The unit ray through the centre of `pixel` (row-major), camera frame (x right, y down, z ahead).
 Eigen::Vector3d DepthCamera::ray(int pixel) const {
@@ -61,11 +82,6 @@ Eigen::Vector3d DepthCamera::ray(int pixel) const {
 /// Each segment's capsule into the pixels of its image's bounding box: a ball of radius r at
 /// (x, y, z), z > r, projects within f r (1 + |x| / z) / (z − r) of f x / z (and likewise in y).
 void DepthCamera::render_rod(const std::vector<Eigen::Vector3d>& nodes, double radius) {
-  for (const int pixel : touched_) {
-    depth_[static_cast<std::size_t>(pixel)] = kNone;
-    segment_[static_cast<std::size_t>(pixel)] = -1;
-  }
-  touched_.clear();
   const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
     const Eigen::Vector3d& a = nodes[i];
@@ -87,14 +103,14 @@ void DepthCamera::render_rod(const std::vector<Eigen::Vector3d>& nodes, double r
       for (int k = i0; k <= i1; ++k) {
         const int pixel = j * model_.width + k;
         const double t = sim_detail::ray_capsule(origin, ray(pixel), a, b, radius);
-        double& nearest = depth_[static_cast<std::size_t>(pixel)];
+        double& nearest = z_->depth[static_cast<std::size_t>(pixel)];
         if (!(t < nearest)) continue;
-        if (nearest == kNone) touched_.push_back(pixel);
+        if (nearest == kNone) z_->touched.push_back(pixel);
         nearest = t;
-        segment_[static_cast<std::size_t>(pixel)] = static_cast<int>(i);
+        z_->segment[static_cast<std::size_t>(pixel)] = static_cast<int>(i);
       }
   }
-  std::sort(touched_.begin(), touched_.end());  // the visible pixels in a fixed order
+  std::sort(z_->touched.begin(), z_->touched.end());  // the visible pixels in a fixed order
 }
 
 /// The rod's pixels whose ray meets an occluder before the rod, and those out of range, dropped.
@@ -128,15 +144,15 @@ void DepthCamera::hide_occluded(const DepthOccluders& occluders, const Pose& cam
                                           transformed(camera_T_world, link.to), link.radius}});
   visible_.clear();
   const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
-  for (const int pixel : touched_) {
-    const double t = depth_[static_cast<std::size_t>(pixel)];
+  for (const int pixel : z_->touched) {
+    const double t = z_->depth[static_cast<std::size_t>(pixel)];
     const Eigen::Vector3d d = ray(pixel);
     const double z = t * d.z();
     if (z < model_.min_range || z > model_.max_range) continue;
     const bool hidden = std::any_of(solids.begin(), solids.end(), [&](const Obstacle& solid) {
       return sim_detail::ray_obstacle(origin, d, solid) < t;
     });
-    if (!hidden) visible_.push_back({pixel, t, segment_[static_cast<std::size_t>(pixel)]});
+    if (!hidden) visible_.push_back({pixel, t, z_->segment[static_cast<std::size_t>(pixel)]});
   }
 }
 
@@ -146,7 +162,7 @@ bool DepthCamera::on_silhouette(int pixel) const {
   const auto empty = [&](int du, int dv) {
     const int uu = u + du, vv = v + dv;
     if (uu < 0 || vv < 0 || uu >= model_.width || vv >= model_.height) return true;
-    return depth_[static_cast<std::size_t>(vv * model_.width + uu)] == kNone;
+    return z_->depth[static_cast<std::size_t>(vv * model_.width + uu)] == kNone;
   };
   return empty(-1, 0) || empty(1, 0) || empty(0, -1) || empty(0, 1);
 }
@@ -187,6 +203,8 @@ CloudFrame DepthCamera::observe(const PlantFrame& frame,
                                              " must be > 0: the depth camera sees the rod's "
                                              "surface, its section's circumscribed radius");
   const Pose camera_T_world = inverse(model_.camera);
+  ZBuffer& z = ZBuffer::of_this_thread(static_cast<std::size_t>(model_.width) * model_.height);
+  z_ = &z;
   std::vector<Eigen::Vector3d> nodes;
   nodes.reserve(frame.configuration.p.size());
   for (const Eigen::Vector3d& p : frame.configuration.p)
@@ -223,6 +241,8 @@ CloudFrame DepthCamera::observe(const PlantFrame& frame,
     }
     cloud.points.push_back(model_.camera.position + model_.camera.rotation * p);
   }
+  z.clear();  // clean for the thread's next frame, of any camera
+  z_ = nullptr;
   if (model_.wrist)
     cloud.wrist = sim_detail::measured_wrist_wrench(frame, *model_.wrist, random_, normal_);
   return cloud;

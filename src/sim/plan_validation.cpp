@@ -293,6 +293,16 @@ ValidationResult validate_plan(const PlanProblem& problem,
     throw InputError("Scene.rod_radius",
                      ": the depth camera sees the rod's surface, which needs the section's "
                      "radius (rod.section)");
+  if (const auto* depth = std::get_if<DepthSensorModel>(&sensor); depth && options.closed_loop) {
+    const double pooled = static_cast<double>(options.loop.checkpoint_frames) * depth->points;
+    if (pooled > ValidationOptions::kMaxRestPoints)
+      throw InputError("DepthSensorModel.points",
+                       " = " + std::to_string(depth->points) + " with ClosedLoopOptions." +
+                           "checkpoint_frames = " + std::to_string(options.loop.checkpoint_frames) +
+                           " would pool " + detail::format_value(pooled) +
+                           " points at a rest; at most " +
+                           detail::format_value(ValidationOptions::kMaxRestPoints));
+  }
   if (plan.end_effector_path.empty())
     throw InputError("PlanResult.end_effector_path", ": the plan has no path to carry out");
   ValidationResult result;

@@ -1,7 +1,8 @@
 // test_depth_validation.cpp: the paper's experiment watched by the depth camera
 // (examples/validate_depth_camera.yaml). Its board hides about a third of the band; open loop,
 // each frame's cloud is the model's points and the true errors are the marker camera's (the plant
-// does not depend on what sees it); a depth camera without the rod's radius is bad input.
+// does not depend on what sees it); a depth camera without the rod's radius, and a rest's pooled
+// cloud beyond its bound, are bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +82,21 @@ TEST(DepthValidation, ADepthCameraNeedsTheRodsRadius) {
   const std::string message = testing::input_error_message(
       [&] { validate_plan(problem, e.plan, e.task.plant, *e.task.depth_sensor); });
   EXPECT_EQ(message.rfind("Scene.rod_radius", 0), 0u) << message;
+}
+
+TEST(DepthValidation, ARestsPooledCloudIsBounded) {
+  const Example& e = example();
+  DepthSensorModel sensor = *e.task.depth_sensor;
+  sensor.points = DepthSensorModel::kMaxPoints;  // 100,000 × 15 frames: 1.5e6 > 1e6
+  ValidationOptions options;
+  options.closed_loop = true;
+  const std::string message = testing::input_error_message(
+      [&] { validate_plan(e.task.problem, e.plan, e.task.plant, sensor, options); });
+  EXPECT_EQ(message.rfind("DepthSensorModel.points = 100000 with ClosedLoopOptions."
+                          "checkpoint_frames = 15 would pool 1.5e+06 points",
+                          0),
+            0u)
+      << message;
 }
 
 }  // namespace

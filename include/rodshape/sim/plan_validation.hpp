@@ -31,6 +31,9 @@ struct ValidationOptions {
   /// the checkpoints): each keeps about 40 bytes of series and writes about 200 bytes of
   /// validation.json and validation.csv (docs/limits.md).
   static constexpr double kMaxFrames = 1e6;
+  /// A depth camera's points pooled over a closed loop's rest (checkpoint_frames × points): the
+  /// cloud one estimate fits (24 bytes a point; docs/limits.md).
+  static constexpr double kMaxRestPoints = 1e6;
   int runs = 1;            // 1 ≤ runs ≤ kMaxRuns
   std::uint64_t seed = 1;  // run k's sensor is seeded with seed + k
   PlantOptions plant;
