@@ -51,7 +51,8 @@ StateEstimate estimate_state_from_cloud(const ClampedRod& model,
   if (seen.points.empty() && !grasp.wrist)
     return feedback_detail::nothing_measured(
         "nothing was measured: the cloud has no point and there is no wrist wrench");
-  const feedback_detail::CloudRows cloud(seen, sensor, options);
+  const feedback_detail::CloudRows cloud(seen, model.properties.section->circumscribed_radius(),
+                                         sensor, options);
   return feedback_detail::fit_state(model, cloud, grasp, prior, options, hypothesis);
 }
 

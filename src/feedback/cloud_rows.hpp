@@ -1,6 +1,6 @@
 // cloud_rows.hpp (private): a cloud's rows of the state fit (cloud_estimator.hpp's residual): one
 // per point, the Cauchy row of the point's distance to the model's surface over its noise along
-// the direction from the centreline, and their exact columns in w.
+// the direction from the centreline, and their columns in w.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,8 +20,9 @@ CauchyRow cauchy_row(double z);
 /// The Cauchy weight 1/(1 + z²/c²) of a point z σ away.
 double cauchy_weight(double z);
 
-/// A cloud point's σ along a direction (cloud_measurement.hpp's model: axial σ_z(z) along the
-/// camera's ray, lateral px z / f across it, f the mean focal length), at least `floor`. The depth
+/// A cloud point's σ along a direction n (cloud_measurement.hpp's model: axial σ_z(z, θ) along the
+/// camera's ray, θ the ray's angle to n, the surface's normal; lateral px z / f across it, f the
+/// mean focal length), at least `floor`. The depth
 /// is clamped to the camera's range, where the model holds.
 class PointNoise {
  public:
@@ -37,8 +38,10 @@ class PointNoise {
 /// One row per cloud point: the Cauchy row of z_k = d_k / σ_k.
 class CloudRows final : public MeasurementBlock {
  public:
-  /// `seen` must outlive the rows.
+  /// The points of `seen` (which must outlive the rows) against the tube of `radius` about the
+  /// centreline.
   CloudRows(const CloudFrame& seen,
+            double radius,
             const DepthSensorModel& sensor,
             const EstimationOptions& options);
   int rows() const override { return static_cast<int>(points_.size()); }
@@ -53,12 +56,12 @@ class CloudRows final : public MeasurementBlock {
               const RodConfiguration& configuration,
               int total_rows,
               StateEstimate& estimate) const override;
-  /// z_k of every point at `configuration` (of `rod`).
-  std::vector<double> weighted_distances(const ClampedRod& rod,
-                                         const RodConfiguration& configuration) const;
+  /// z_k of every point at `configuration`.
+  std::vector<double> weighted_distances(const RodConfiguration& configuration) const;
 
  private:
   const std::vector<Eigen::Vector3d>& points_;
+  double radius_;
   PointNoise noise_;
 };
 

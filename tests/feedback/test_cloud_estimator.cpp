@@ -25,6 +25,8 @@ using testing::CloudRecipe;
 using testing::surface_cloud;
 
 const BaseWrench kTrue{{-0.3, 0.1, 0.0}, {0.0, 0.08, 0.01}};
+/// The band's surface: the tube of its 2 × 2 cm section's circumscribed radius.
+const double kRadius = 0.01 * std::sqrt(2.0);
 
 /// The band's N = 50 model.
 ClampedRod band() { return samples::rubber_band(ConstitutiveModel::Cosserat, 50); }
@@ -54,7 +56,7 @@ TEST(CloudEstimator, RecoversTheCentrelineFromAKinectLikeCloudWithOcclusionAndOu
   const DepthSensorModel sensor;
   for (unsigned seed = 1; seed <= 5; ++seed) {
     const CloudRecipe recipe{500, 0.35, 0.65, 0.10, true, seed};
-    const CloudFrame cloud = surface_cloud(truth, *band().properties.section, sensor, recipe);
+    const CloudFrame cloud = surface_cloud(truth, kRadius, sensor, recipe);
     const StateEstimate e = estimate_band(cloud, sensor);
     ASSERT_TRUE(e.converged()) << e.message;
     EXPECT_LT(centreline_rms(e.configuration, truth), 2e-3) << "seed " << seed;
@@ -73,7 +75,7 @@ TEST(CloudEstimator, ANoiseFreeCloudGivesTheCentrelineMuchCloser) {
   const RodConfiguration truth = integrate(band(), kTrue);
   const DepthSensorModel sensor;
   const CloudRecipe recipe{500, 0.35, 0.65, 0.0, false, 3};
-  const CloudFrame cloud = surface_cloud(truth, *band().properties.section, sensor, recipe);
+  const CloudFrame cloud = surface_cloud(truth, kRadius, sensor, recipe);
   const StateEstimate e = estimate_band(cloud, sensor);
   ASSERT_TRUE(e.converged()) << e.message;
   // Every point is weighed at the sensor's σ (1–2 mm), not at zero: what is left is the pull of
@@ -85,21 +87,17 @@ TEST(CloudEstimator, ANoiseFreeCloudGivesTheCentrelineMuchCloser) {
 }
 
 TEST(CloudEstimator, TheRowsDerivativesAreTheFiniteDifferences) {
-  // A circular section (radius 5 mm) and a noise-free sensor (every σ the floor): the rows'
-  // Jacobian in w is exact. Points off the surface by a few σ, so that the Cauchy loss bends.
-  RodDescription d = samples::rubber_band_description(ConstitutiveModel::Cosserat);
-  d.section = CrossSection::circle(0.005);
-  ClampedRod rod;
-  rod.properties = make_rod_properties(d);
-  rod.intervals = 40;
+  // A noise-free sensor (every σ the floor, 1 mm): the rows' Jacobian in w is exact. Points off
+  // the surface by a few σ (drawn with the Kinect's noise), so that the Cauchy loss bends.
+  const ClampedRod rod = samples::rubber_band(ConstitutiveModel::Cosserat, 40);
   DepthSensorModel sensor;
-  sensor.noise = {0.0, 0.0, 0.0, 0.0};
+  sensor.noise = {0.0, 0.0, 0.0, 0.0, 0.0};
   EstimationOptions options;
   options.min_cloud_sigma = 1e-3;
   const RodConfiguration truth = integrate(rod, kTrue);
-  CloudFrame cloud = surface_cloud(truth, *rod.properties.section, DepthSensorModel{},
-                                   CloudRecipe{60, 0.0, 0.0, 0.0, true, 9});
-  const feedback_detail::CloudRows rows(cloud, sensor, options);
+  const CloudFrame cloud =
+      surface_cloud(truth, kRadius, DepthSensorModel{}, CloudRecipe{60, 0.0, 0.0, 0.0, true, 9});
+  const feedback_detail::CloudRows rows(cloud, kRadius, sensor, options);
   const Vector6d w = kTrue.to_vector() + 0.01 * rod.properties.bending_wrench_units();
   const RodConfiguration at = integrate(rod, BaseWrench::from_vector(w), Derivatives::AllNodes);
   Eigen::VectorXd r(rows.rows());
@@ -163,8 +161,8 @@ TEST(CloudEstimator, TheShapeControllerKeepsThePlanWhenTheCloudShowsThePlannedRo
   ShapeController controller(problem, plan, planning);
   const PlanStep& step = plan.steps.front();
   CloudMeasurement measurement;
-  measurement.frame = surface_cloud(step.solution.configuration, *problem.rod.properties.section,
-                                    measurement.sensor, CloudRecipe{500, 0.35, 0.65, 0.1, true, 4});
+  measurement.frame = surface_cloud(step.solution.configuration, kRadius, measurement.sensor,
+                                    CloudRecipe{500, 0.35, 0.65, 0.1, true, 4});
   measurement.frame.t = 2.0;
   const ControllerOutput out = controller.update(measurement, {step.end_effector});
   const Checkpoint& c = out.checkpoint;

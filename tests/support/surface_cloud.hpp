@@ -1,6 +1,7 @@
 // surface_cloud.hpp: a synthetic depth-camera cloud of a rod's equilibrium for the cloud
 // estimator's tests and benchmark (not the simulated camera, sim/): points drawn uniformly in arc
-// length and around the section's boundary, kept where the surface faces the camera, a window of
+// length and around the tube of the section's circumscribed radius (the surface the estimator
+// fits), kept where the surface faces the camera, a window of
 // the length left out (occlusion), Gaussian noise from DepthSensorModel's model (axial along the
 // camera's ray, lateral across it) and a fraction of outliers drawn uniformly in a box around
 // the rod. Seeded: the same arguments give the same cloud.
@@ -13,7 +14,6 @@
 #include <random>
 #include <vector>
 
-#include "rodshape/core/cross_section.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/feedback/cloud_measurement.hpp"
@@ -37,25 +37,10 @@ inline Eigen::Matrix3d frame_at(const RodConfiguration& c, double s) {
   return c.R[i] * exp_so3(t * log_so3(c.R[i].transpose() * c.R[i + 1]));
 }
 
-/// A point of the section's boundary, uniform in its perimeter, u ∈ [0, 1), and its outward
-/// normal (section frame).
-inline std::pair<Eigen::Vector3d, Eigen::Vector3d> boundary_point(const CrossSection& section,
-                                                                  double u) {
-  if (section.shape == CrossSection::Shape::Circle) {
-    const double phi = 2.0 * std::numbers::pi * u;
-    const Eigen::Vector3d n(std::cos(phi), std::sin(phi), 0.0);
-    return {section.radius * n, n};
-  }
-  const double w = section.width, h = section.height, along = u * 2.0 * (w + h);
-  if (along < w) return {{along - 0.5 * w, -0.5 * h, 0.0}, {0.0, -1.0, 0.0}};
-  if (along < w + h) return {{0.5 * w, along - w - 0.5 * h, 0.0}, {1.0, 0.0, 0.0}};
-  if (along < 2 * w + h) return {{along - w - h - 0.5 * w, 0.5 * h, 0.0}, {0.0, 1.0, 0.0}};
-  return {{-0.5 * w, along - 2 * w - h - 0.5 * h, 0.0}, {-1.0, 0.0, 0.0}};
-}
-
-/// The cloud of `shape` (a rod of `section`) as `sensor` sees it, world frame.
+/// The cloud of `shape` (its surface the tube of `radius` about the centreline) as `sensor` sees
+/// it, world frame.
 inline CloudFrame surface_cloud(const RodConfiguration& shape,
-                                const CrossSection& section,
+                                double radius,
                                 const DepthSensorModel& sensor,
                                 const CloudRecipe& recipe) {
   std::mt19937 random(recipe.seed);
@@ -68,10 +53,11 @@ inline CloudFrame surface_cloud(const RodConfiguration& shape,
     const double s = length * uniform(random);
     if (s >= recipe.occluded_from * length && s < recipe.occluded_to * length) continue;
     const Eigen::Matrix3d R = frame_at(shape, s);
-    const auto [offset, normal] = boundary_point(section, uniform(random));
-    const Eigen::Vector3d x = curve_point(shape, s) + R * offset;
+    const double phi = 2.0 * std::numbers::pi * uniform(random);
+    const Eigen::Vector3d normal = R * Eigen::Vector3d(std::cos(phi), std::sin(phi), 0.0);
+    const Eigen::Vector3d x = curve_point(shape, s) + radius * normal;
     const Eigen::Vector3d ray = (x - sensor.camera.position).normalized();
-    if ((R * normal).dot(ray) >= 0.0) continue;  // the far side: hidden
+    if (normal.dot(ray) >= 0.0) continue;  // the far side: hidden
     Eigen::Vector3d noisy = x;
     if (recipe.noise) {
       const double z = (sensor.camera.rotation.transpose() * (x - sensor.camera.position)).z();

@@ -2,24 +2,23 @@
 // unknowns as estimate_state (state_estimator.hpp: the base wrench w, optionally the stiffness
 // scale and the weight's factor λ, the held tip within its prior, the wrist wrench, a weak prior)
 // with the markers' rows replaced by one point-to-surface row per cloud point x_k:
-//   d_k(w) = |x_k - Γ(s_k; w)| - ρ_k,  s_k = argmin_s |x_k - Γ(s; w)|,
+//   d_k(w) = |x_k - Γ(s_k; w)| - ρ,  s_k = argmin_s |x_k - Γ(s; w)|,
 // Γ the model's centreline (cubic Hermite between nodes, optimisation/curve_distance.hpp), s_k
-// found by a k-d tree over the nodes and the intervals next to the nearest one, ρ_k the section's
-// radius in the direction of x_k in the section's plane at s_k (a circle's radius; a rectangle's
-// boundary along that direction; towards the rod's ends, beyond them, scaled by the direction's
-// part in the section's plane, so that a point past an end cap is measured to the end). Each d_k is
-// divided by the point's noise along n_k = (x_k - Γ)/|x_k - Γ| (cloud_measurement.hpp's model:
-// axial σ_z(z) along the camera's ray, lateral σ = px z / f across it):
-//   σ_k² = σ_z² (n_k·e_ray)² + σ_lat² (1 - (n_k·e_ray)²),  σ_k ≥
-//   EstimationOptions::min_cloud_sigma,
+// found by a k-d tree (nanoflann) over the nodes, then on the intervals next to the nearest one,
+// and ρ the section's circumscribed radius: the rod's surface as the library knows it (the tube
+// the scene's clearance keeps, the simulated depth camera's capsules; a point past an end is
+// measured to the end node, the capsule's cap). Each d_k is divided by the point's noise along
+// n_k = (x_k - Γ)/|x_k - Γ|, the surface's normal (cloud_measurement.hpp's model: axial σ_z(z, θ)
+// along the camera's ray e, θ its angle to n_k; lateral σ = px z / f across it):
+//   σ_k² = σ_z² (n_k·e)² + σ_lat² (1 - (n_k·e)²),  σ_k ≥ EstimationOptions::min_cloud_sigma,
 // and passed through the Cauchy loss ρ_c(z) = (c²/2) log(1 + z²/c²), c = kCauchyScale (in σ),
 // as the row r_k = sign(z_k) √(2 ρ_c(z_k)) (Σ r_k² = 2 Σ ρ_c; r ≈ z near 0): a point 10 σ away
 // weighs 1/18 of an inlier in the fit, so outliers do not drag it. Derivatives: dd_k/dw =
 // -n_kᵀ dΓ(s_k)/dw exactly (the envelope argument: s_k is a minimiser; the integrator's node
-// sensitivities), times the loss' derivative; σ_k and ρ_k are re-evaluated at every residual but
-// held in the Jacobian (they change with the fit only through the direction n_k; for a circular
-// section and a direction-free σ — equal noises, or the floor — the Jacobian is exact, and
-// tests/feedback/test_cloud_estimator.cpp checks it against finite differences).
+// sensitivities), times the loss' slope over σ_k. σ_k is re-evaluated at every residual but held
+// in the Jacobian (it changes with the fit only through the direction n_k; with the floor or
+// equal axial and lateral noise the Jacobian is exact, and tests/feedback/test_cloud_estimator.cpp
+// checks it against finite differences).
 #pragma once
 
 #include <optional>
