@@ -117,7 +117,7 @@ void BM_DepthCameraFrame(benchmark::State& state) {
   model.outliers = 0.02;
   DepthCamera camera(model, 1);
   DepthOccluders occluders;
-  occluders.obstacles = {{"board", BoxObstacle{{0.035, -0.5, 0.1}, {0.04, 0.02, 0.5}}}};
+  occluders.obstacles = {{"board", BoxObstacle{{0.1, -0.5, 0.09}, {0.6, 0.02, 0.05}}}};
   std::size_t points = 0;
   for (auto _ : state) {
     const CloudFrame cloud = camera.observe(frame, 0.0141, occluders);

@@ -11,7 +11,6 @@
 #include <string>
 #include <utility>
 
-#include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
 
 namespace rodshape {
@@ -98,11 +97,8 @@ class Driver {
     if (sensor_.sees_cloud()) {
       CloudMeasurement measurement = sensor_.rest_cloud();
       measurement.frame.t = t;
-      // TEMPORARY until branch `cloud` (ShapeController::update of a cloud) is merged.
-      throw InputError("ValidationOptions.closed_loop",
-                       ": the closed loop from a depth camera needs the cloud estimator, not yet "
-                       "merged (" +
-                           std::to_string(measurement.frame.points.size()) + " points)");
+      checkpoint = controller_.update(measurement, {at}).checkpoint;
+      checkpoint.points = static_cast<int>(measurement.frame.points.size());
     } else {
       MarkerMeasurement measurement = sensor_.rest_markers();
       measurement.frame.t = t;

@@ -17,6 +17,7 @@
 // controller knows no plant: sim/closed_loop.hpp drives one with it.
 #pragma once
 
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/feedback/closed_loop_options.hpp"
+#include "rodshape/feedback/cloud_measurement.hpp"
 #include "rodshape/feedback/controller_beliefs.hpp"
 #include "rodshape/feedback/marker_measurement.hpp"
 #include "rodshape/feedback/planned_waypoint.hpp"
@@ -84,6 +86,13 @@ class ShapeController {
   /// Estimates the rod's state and keeps the plan or makes the rest again. Throws InputError when
   /// no waypoint but the last is ahead (nothing is left to control) or for a bad sensor model.
   ControllerOutput update(const MarkerMeasurement& measurement, const ArmState& arm);
+  /// The same from a depth camera's cloud (estimate_state_from_cloud, cloud_estimator.hpp). The
+  /// gates read the same: an estimate is consistent when the model explains the cloud
+  /// (unexplained(): converged, its residual over the inliers, about 1 at the camera's noise, ≤
+  /// max_residual, and at most half the points outliers of the robust loss), and significant when
+  /// the drop of the robust χ² (Σ of the Cauchy rows, ≈ χ² near the truth) from the plan's state
+  /// exceeds k + significance · √(2k), as for markers.
+  ControllerOutput update(const CloudMeasurement& measurement, const ArmState& arm);
 
   /// The waypoints still ahead, the one the arm is driven to first.
   const std::vector<PlannedWaypoint>& remaining() const { return remaining_; }
@@ -94,8 +103,16 @@ class ShapeController {
   const ControllerBeliefs& beliefs() const { return beliefs_; }
 
  private:
+  /// One sensor's estimator: the state from what it saw, given the held tip's prior pose, the
+  /// gripper, the prior, the options and the hypothesis.
+  using Estimator = std::function<StateEstimate(const Pose& tip,
+                                                const Pose& end_effector,
+                                                const StatePrior& prior,
+                                                const EstimationOptions& options,
+                                                const StateHypothesis& hypothesis)>;
+  ControllerOutput update_with(double t, const ArmState& arm, const Estimator& estimator);
   void estimate(Checkpoint& c,
-                const MarkerMeasurement& measurement,
+                const Estimator& estimator,
                 const Pose& end_effector,
                 const BaseWrench& planned);
   std::string kept_message(const Checkpoint& c) const;
