@@ -49,6 +49,16 @@ DEPTH = """sensor:
 """
 DEPTH_HEADING = "## A depth camera"
 DEPTH_EXAMPLE = "validate_depth_camera"
+PARAGRAPH_OCCLUDED_TIP = [
+    "Where the board hid the band's upper third instead (the tip's side, an upright board at",
+    "x = 0.035 m), the grasp offset went unobserved: in single closed-loop runs the estimates",
+    "at waypoints 2–5 were 5–28 mm off the real rod (shape RMS), four of them rejected by the",
+    "residual guard (2.8–5.6 > 2); without flying pixels all passed it (1.8–1.9) and the run",
+    "ended at 5.6 mm, worse than open loop (0.87 mm). With no board every estimate was within",
+    "0.09–0.13 mm and the run ended at 0.22 mm. An occluded tip needs more than the cloud: a",
+    "wrist sensor, or a tighter prior on the grasp.",
+    "",
+]
 
 
 def run(build, task_text, name, runs, closed, workdir):
@@ -138,7 +148,9 @@ def depth_section(rows, runs):
         "the RMS distance from each estimate's centreline to the real rod's (a truth only the",
         f"simulation knows, `shape_rms` in validation.json). Final errors in mm, {runs} runs, median",
         "(min–max); measured: the distance from the objective points to the cloud, less the",
-        "section's radius (the hidden part of the band is far from every point).",
+        "section's radius (the hidden part of the band is far from every point; where the cloud",
+        "covers a point's neighbourhood it is about 0, so the true error and the shape RMS are the",
+        "ones to read).",
         "",
         "| experiment | loop | status | 3D measured | true | true max | shape RMS | points |",
         "|---|---|---|---|---|---|---|---|",
@@ -150,6 +162,22 @@ def depth_section(rows, runs):
             f"| `{experiment}` | {loop} | {status} | {cell([f['error_3d'] for f in final])} | "
             f"{cell([f['true_error'] for f in final])} | "
             f"{cell([f['true_max_distance'] for f in final])} | {rms} | {used} |")
+    lines += [
+        "",
+        "What it shows: from the clouds alone the closed loop ends at 0.20–0.43 mm (medians) on",
+        "every experiment but one, from 0.87–1.71 mm open loop, as the markers' closed loop does",
+        "(0.25–0.42 mm), the Panda's arm in view included; the estimates' centrelines lie",
+        "0.13–0.40 mm (medians) from the real rod's. With a third of the band hidden",
+        "(`validate_depth_camera`) the estimates stay within 0.06–0.21 mm and the loop ends at",
+        "0.21 mm. `plan_twisted_3d` is the exception: its estimates are good (shape RMS 0.2–0.5",
+        "mm) but most re-plans are refused as not gentle (a re-planned step of about twice the",
+        "energy of the one it replaces, `closed_loop.max_energy_ratio`), so most runs end where",
+        "the open loop does (0.97 mm). A cloud of a round tube does not see the rod's twist about",
+        "its axis, which only the grasp offset's prior then holds; the markers' loop, which sees",
+        "no twist either, re-plans there: why the re-plans from a cloud's estimate are coiled is",
+        "open.",
+        "",
+    ] + PARAGRAPH_OCCLUDED_TIP
     return "\n".join(lines) + "\n"
 
 
