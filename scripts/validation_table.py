@@ -58,6 +58,16 @@ PARAGRAPH_OCCLUDED_TIP = [
     "0.09–0.13 mm and the run ended at 0.22 mm. An occluded tip needs more than the cloud: a",
     "wrist sensor, or a tighter prior on the grasp.",
     "",
+    "The weight's factor λ is where the clouds' estimates differ from the markers': on",
+    "`plan_c_arc` (single closed-loop runs) the markers put it at 1.18 at the last checkpoint",
+    "(the plant's weight over its 0.85 stiffness: 1/0.85), the clouds with axial noise only at",
+    "1.27–1.41, with the full Kinect model (the incidence term, up to 13 mm at 85°, and the",
+    "lateral pixels) at −0.3 to −0.7, and in `validate_depth_camera` (flying pixels, the board)",
+    "at 1.9–2.2 (its own σ there 0.04–0.3). The shapes stay within 0.2 mm (shape RMS): likely a",
+    "bias of a tenth of a millimetre in the silhouette's points, seen from slightly above, which",
+    "only λ, the one vertical load, can absorb. Read λ from a cloud as a fitting parameter,",
+    "not as the rod's weight.",
+    "",
 ]
 
 
