@@ -109,6 +109,7 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"significant", c.significant},
                     {"replanned", c.replanned},
                     {"points", c.points},
+                    {"outliers", c.estimate.outliers},
                     {"shape_rms", json_number(c.shape_rms)},
                     {"message", c.message}});
   return list;

@@ -125,6 +125,7 @@ TEST_F(CliValidate, TheDepthCameraExampleClosesTheLoopFromCloudsAlone) {
     EXPECT_EQ(estimates.size(), closed ? 6u : 0u);
     for (const Json& e : estimates) {  // each from a rest's 15 pooled clouds, near the real rod
       EXPECT_EQ(e["points"], 15 * 500);
+      EXPECT_LT(e["outliers"].get<int>(), 15 * 500 / 10) << e["message"];  // 2 % flying pixels
       EXPECT_LT(e["shape_rms"].get<double>(), 2e-3) << e["message"];
     }
     // The figure shows the cloud under the errors.
