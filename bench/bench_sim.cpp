@@ -1,13 +1,14 @@
 // Benchmarks of the closed loop's checkpoint on the paper's experiment (the band at N = 100, ten
 // objective points, seven steps): the state estimate from ten markers, and the re-plan of the
 // remaining steps from it (all of them, or the next only: the closed loop's default horizon). One
-// checkpoint is one estimate plus one re-plan.
+// checkpoint is one estimate plus one re-plan. And one frame of the simulated depth camera.
 #include <benchmark/benchmark.h>
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/feedback/shape_controller.hpp"
 #include "rodshape/feedback/state_estimator.hpp"
 #include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/sim/depth_camera.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -105,7 +106,33 @@ void BM_ShapeControllerUpdate(benchmark::State& state) {
   if (!replanned) state.SkipWithError("an update did not re-plan");
 }
 
+/// One frame of the simulated Kinect v2 (512 × 424, 500 points) of the band at waypoint 1, 1 m
+/// away, its section's circumscribed radius (14.1 mm), a board hiding part of it: the capsules
+/// splatted and cast against, the occlusion test, the noise. The validation draws one per frame.
+void BM_DepthCameraFrame(benchmark::State& state) {
+  const Scene& s = scene();
+  const PlanStep& step = s.plan.steps.front();
+  const PlantFrame frame{0.0, step.end_effector, {}, step.solution.configuration};
+  DepthSensorModel model;
+  model.outliers = 0.02;
+  DepthCamera camera(model, 1);
+  DepthOccluders occluders;
+  occluders.obstacles = {{"board", BoxObstacle{{0.1, -0.5, 0.09}, {0.6, 0.02, 0.05}}}};
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const CloudFrame cloud = camera.observe(frame, 0.0141, occluders);
+    points = cloud.points.size();
+    benchmark::DoNotOptimize(cloud);
+  }
+  state.counters["points"] = static_cast<double>(points);
+  const int visible = camera.visible_pixels();
+  camera.observe(frame, 0.0141);
+  state.counters["visible_pixels"] = visible;
+  state.counters["hidden_fraction"] = 1.0 - visible / static_cast<double>(camera.visible_pixels());
+}
+
 BENCHMARK(BM_CheckpointEstimate)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DepthCameraFrame)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ShapeControllerUpdate)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CheckpointReplan)
     ->ArgNames({"remaining", "horizon"})

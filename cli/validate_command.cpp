@@ -135,7 +135,7 @@ class ValidateCommand final : public Command {
       if (progress.active())
         options.progress = [&progress](int done, int total) { progress.update(done, total); };
       try {
-        result = validate_plan(task.problem, plan, task.plant, task.sensor, options);
+        result = validate_plan(task.problem, plan, task.plant, task.sensor_model(), options);
       } catch (const InputError& error) {
         throw InputError(task.locate(error));
       }

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
       options.loop = task.closed_loop;
       options.planning = task.options;
       const ValidationResult v =
-          validate_plan(task.problem, planned, task.plant, task.sensor, options);
+          validate_plan(task.problem, planned, task.plant, task.sensor_model(), options);
       std::printf("%s loop: %s\n", closed_loop ? "closed" : "open", v.brief().c_str());
       for (const ValidationRun& run : v.runs)
         std::printf("  seed %llu: final true error %.3f mm\n",

@@ -8,7 +8,7 @@ OLD and NEW hold what `rodshape equilibrium` (*.json) and `rodshape plan` (one d
 with plan.json, trajectory.csv, joint_trajectory.*) wrote for the same task files, e.g.
 
   for t in examples/*.yaml; do n=$(basename "$t" .yaml)
-    case $n in plan_*) build/rodshape plan "$t" -o OUT/$n -q ;;
+    case $n in plan_* | validate_*) build/rodshape plan "$t" -o OUT/$n -q ;;
                *) build/rodshape equilibrium "$t" -o OUT/$n.json -q ;; esac; done
 
 Numbers agree when |a - b| <= tolerance * max(1, |a|, |b|); strings, keys and list lengths must be

@@ -89,7 +89,8 @@ _name_setter_errors(_rodshape)
 # be changed in code (task.problem, task.options, ...), a bad value may not be the file's: its
 # message then names the file without a line and says so.
 
-_TASK_PARTS = {_rodshape.PlanTask: ("rod", "problem", "options", "plant", "sensor", "closed_loop"),
+_TASK_PARTS = {_rodshape.PlanTask: ("rod", "problem", "options", "plant", "sensor", "depth_sensor",
+                                         "closed_loop"),
                _rodshape.EquilibriumTask: ("rod",)}
 
 

@@ -85,7 +85,7 @@ Validation validate_task(const PlanTask& task,
   try {
     PlanResult planned = plan(task.problem, task.options);
     ValidationResult result =
-        validate_plan(task.problem, planned, task.plant, task.sensor, options);
+        validate_plan(task.problem, planned, task.plant, task.sensor_model(), options);
     return {std::move(result), std::move(planned), task};
   } catch (const InputError& error) {
     throw InputError(task.locate(error));
@@ -115,7 +115,10 @@ void bind_tasks(py::module_& m) {
       .def_readwrite("problem", &PlanTask::problem)
       .def_readwrite("options", &PlanTask::options)
       .def_readwrite("plant", &PlanTask::plant, "the simulated plant (PlantModel)")
-      .def_readwrite("sensor", &PlanTask::sensor, "the simulated sensor (MarkerSensorModel)")
+      .def_readwrite("sensor", &PlanTask::sensor, "the simulated markers (MarkerSensorModel)")
+      .def_readwrite("depth_sensor", &PlanTask::depth_sensor,
+                     "the simulated depth camera (DepthSensorModel) with sensor.kind: depth, "
+                     "which validate uses instead of the markers; else None")
       .def_readwrite("closed_loop", &PlanTask::closed_loop, "the ClosedLoopOptions")
       .def_readonly("source", &PlanTask::source)
       .def_property_readonly("kind", [](const PlanTask&) { return "plan"; });

@@ -47,6 +47,32 @@ void bind_models(py::module_& m) {
       .def_readwrite("frame_rate", &MarkerSensorModel::frame_rate, "Hz, (0, 1000]")
       .def_readwrite("camera", &MarkerSensorModel::camera, "world_T_camera (z: the depth)")
       .def("validate", &MarkerSensorModel::validate);
+  py::class_<DepthNoiseModel>(m, "DepthNoiseModel",
+                              "A depth camera's noise (Fankhauser et al. 2015's Kinect v2 model): "
+                              "axial σ_z(z, θ) = a0 + a1 z + a2 z² + incidence z^1.5 θ²/(π/2 − θ)² "
+                              "along the ray, lateral_pixels across it.")
+      .def(py::init<>())
+      .def_readwrite("a0", &DepthNoiseModel::a0, "m")
+      .def_readwrite("a1", &DepthNoiseModel::a1, "m/m")
+      .def_readwrite("a2", &DepthNoiseModel::a2, "m/m²")
+      .def_readwrite("incidence", &DepthNoiseModel::incidence, "m/m^1.5")
+      .def_readwrite("lateral_pixels", &DepthNoiseModel::lateral_pixels, "px");
+  py::class_<DepthSensorModel>(m, "DepthSensorModel",
+                               "A pinhole depth camera seeing the rod's surface as a point cloud "
+                               "(a plan task's sensor section with kind: depth).")
+      .def(py::init<>())
+      .def_readwrite("width", &DepthSensorModel::width, "pixels, 1 … 4096")
+      .def_readwrite("height", &DepthSensorModel::height, "pixels, 1 … 4096")
+      .def_readwrite("fov_x_deg", &DepthSensorModel::fov_x_deg, "degrees, (0, 180)")
+      .def_readwrite("fov_y_deg", &DepthSensorModel::fov_y_deg, "degrees, (0, 180)")
+      .def_readwrite("min_range", &DepthSensorModel::min_range, "m")
+      .def_readwrite("max_range", &DepthSensorModel::max_range, "m")
+      .def_readwrite("points", &DepthSensorModel::points, "per frame, 1 … 100000")
+      .def_readwrite("noise", &DepthSensorModel::noise, "the DepthNoiseModel")
+      .def_readwrite("outliers", &DepthSensorModel::outliers, "fraction of flying pixels, [0, 1)")
+      .def_readwrite("frame_rate", &DepthSensorModel::frame_rate, "Hz, (0, 1000]")
+      .def_readwrite("camera", &DepthSensorModel::camera, "world_T_camera (z: the depth)")
+      .def("validate", &DepthSensorModel::validate);
 }
 
 void bind_closed_loop(py::module_& m) {

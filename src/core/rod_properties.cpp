@@ -85,6 +85,7 @@ void RodProperties::validate() const {
   require_magnitude_at_most("RodProperties.u_rest", u_rest, bounds::kMaxRestTurn / length, "1/m");
   detail::require_non_negative("RodProperties.mass_per_length", mass_per_length);
   require_in_range("RodProperties.mass_per_length", mass_per_length, bounds::kMassPerLength);
+  if (section) section->validate("RodProperties.section");
   require_cosserat_resolvable(*this, [](bool axial, double K) {
     return StiffSource{axial ? "RodProperties.K_tra[2]" : "RodProperties.K_tra[0]",
                        " = " + detail::format_value(K) + " N"};
@@ -147,6 +148,7 @@ RodProperties make_rod_properties(const RodDescription& d) {
   p.K_tra = {GA, GA, EA};
   p.K_rot = {EIx, EIy, GJ};
   if (d.section && d.material) p.mass_per_length = d.material->density * d.section->area();
+  p.section = d.section;
   require_cosserat_resolvable(  // named as the user gave it
       p, [&d](bool axial, double K) { return description_source(d, axial, K); });
   p.validate();

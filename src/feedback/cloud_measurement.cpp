@@ -2,6 +2,7 @@
 // (cloud_measurement.hpp).
 #include "rodshape/feedback/cloud_measurement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -31,6 +32,12 @@ double focal(int pixels, double fov_deg) {
 }
 
 }  // namespace
+
+double DepthNoiseModel::axial_sigma(double z, double theta) const {
+  const double angle = std::clamp(theta, 0.0, kMaxIncidence);
+  const double grazing = angle / (0.5 * std::numbers::pi - angle);
+  return axial_sigma(z) + incidence * z * std::sqrt(z) * grazing * grazing;
+}
 
 double DepthSensorModel::focal_x() const { return focal(width, fov_x_deg); }
 double DepthSensorModel::focal_y() const { return focal(height, fov_y_deg); }
@@ -65,6 +72,8 @@ void DepthSensorModel::validate() const {
   require_in_range("DepthSensorModel.noise.a0", noise.a0, {-1.0, 1.0, "m"});
   require_in_range("DepthSensorModel.noise.a1", noise.a1, {-1.0, 1.0, "m/m"});
   require_in_range("DepthSensorModel.noise.a2", noise.a2, {-1.0, 1.0, "m/m^2"});
+  detail::require_non_negative("DepthSensorModel.noise.incidence", noise.incidence);
+  require_in_range("DepthSensorModel.noise.incidence", noise.incidence, {0.0, 1.0, "m/m^1.5"});
   detail::require_non_negative("DepthSensorModel.noise.lateral_pixels", noise.lateral_pixels);
   require_in_range("DepthSensorModel.noise.lateral_pixels", noise.lateral_pixels,
                    {0.0, 100.0, "px"});

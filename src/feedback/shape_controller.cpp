@@ -4,14 +4,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "replan_gentleness.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/feedback/cloud_estimator.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
+
+namespace {
+
+void ensure_waypoint_ahead(const std::vector<PlannedWaypoint>& remaining) {
+  if (remaining.size() < 2)
+    throw InputError("ShapeController.update",
+                     ": the arm is at the plan's last waypoint; nothing is left to control");
+}
+
+}  // namespace
 
 void ClosedLoopOptions::validate() const {
   estimation.validate();
@@ -49,18 +59,40 @@ ShapeController::ShapeController(const PlanProblem& problem,
 
 ControllerOutput ShapeController::update(const MarkerMeasurement& measurement,
                                          const ArmState& arm) {
-  if (remaining_.size() < 2)
-    throw InputError("ShapeController.update",
-                     ": the arm is at the plan's last waypoint; nothing is left to control");
+  ensure_waypoint_ahead(remaining_);
   measurement.sensor.validate();
+  return update_with(measurement.frame.t, arm,
+                     [&](const Pose& tip, const Pose& end_effector, const StatePrior& prior,
+                         const EstimationOptions& options, const StateHypothesis& hypothesis) {
+                       return estimate_state(problem_.rod, tip, end_effector, measurement.frame,
+                                             measurement.sensor, prior, options, hypothesis);
+                     });
+}
+
+ControllerOutput ShapeController::update(const CloudMeasurement& measurement, const ArmState& arm) {
+  ensure_waypoint_ahead(remaining_);
+  measurement.sensor.validate();
+  return update_with(measurement.frame.t, arm,
+                     [&](const Pose& tip, const Pose& end_effector, const StatePrior& prior,
+                         const EstimationOptions& options, const StateHypothesis& hypothesis) {
+                       return estimate_state_from_cloud(problem_.rod, tip, end_effector,
+                                                        measurement.frame, measurement.sensor,
+                                                        prior, options, hypothesis);
+                     });
+}
+
+/// The checkpoint at time t: the estimate by `estimator`, judged, and the plan kept or made again.
+ControllerOutput ShapeController::update_with(double t,
+                                              const ArmState& arm,
+                                              const Estimator& estimator) {
   const BaseWrench planned = remaining_.front().wrench;
   remaining_.erase(remaining_.begin());
   fresh_ = std::max(0, fresh_ - 1);
   ControllerOutput output;
   Checkpoint& c = output.checkpoint;
-  c.t = measurement.frame.t;
+  c.t = t;
   c.waypoint = ++waypoint_;
-  estimate(c, measurement, arm.end_effector, planned);
+  estimate(c, estimator, arm.end_effector, planned);
   if (options_.replan && c.significant)
     replan(c, c.estimate.base_wrench);
   else if (options_.replan && fresh_ == 0) {  // the next step was planned with other beliefs
@@ -77,16 +109,15 @@ ControllerOutput ShapeController::update(const MarkerMeasurement& measurement,
 
 /// The estimate from the measurement, judged (consistent, significant) and taken into the beliefs.
 void ShapeController::estimate(Checkpoint& c,
-                               const MarkerMeasurement& measurement,
+                               const Estimator& estimator,
                                const Pose& end_effector,
                                const BaseWrench& planned) {
   // The tip where the gripper is believed to hold it.
   const Pose commanded = compose(end_effector, inverse(problem_.grasp.tip_to_end_effector));
   c.estimate =
-      estimate_state(problem_.rod, compose(commanded, beliefs_.fused.offset), end_effector,
-                     measurement.frame, measurement.sensor, beliefs_.prior(planned),
-                     beliefs_.estimation(options_, commanded), beliefs_.hypothesis(planned));
-  c.consistent = c.estimate.converged() && c.estimate.residual <= options_.max_residual;
+      estimator(compose(commanded, beliefs_.fused.offset), end_effector, beliefs_.prior(planned),
+                beliefs_.estimation(options_, commanded), beliefs_.hypothesis(planned));
+  c.consistent = unexplained(c.estimate, options_.max_residual).empty();
   c.significant = c.consistent && significant(c.estimate);
   if (c.consistent && (c.significant || options_.fuse))
     beliefs_.take(c.estimate, commanded, options_);
@@ -99,13 +130,9 @@ void ShapeController::estimate(Checkpoint& c,
 std::string ShapeController::kept_message(const Checkpoint& c) const {
   if (c.significant) return "plan kept";
   if (!c.estimate.converged()) return "plan kept: " + c.estimate.message;
-  if (!c.consistent) {
-    std::ostringstream out;
-    out.precision(3);
-    out << "plan kept: the model does not explain the markers (residual " << c.estimate.residual
-        << " > max_residual " << options_.max_residual << "); the estimate is not used";
-    return out.str();
-  }
+  if (!c.consistent)
+    return "plan kept: " + unexplained(c.estimate, options_.max_residual) +
+           "; the estimate is not used";
   return "plan kept: the estimate is within the noise of the plan's state";
 }
 
@@ -133,7 +160,9 @@ void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
   PlanOptions options = planning_;
   options.steps = static_cast<int>(remaining_.size());
   options.horizon = std::min(options_.horizon, options.steps);
-  options.track_between_waypoints = false;
+  // Untracked re-plans are faster; in a scene plan() needs the tracking, which checks the rod
+  // clear of it between waypoints (without it every re-plan in a scene was refused).
+  options.track_between_waypoints = !rest.scene.empty();
   try {
     const PlanResult again = plan(rest, options);
     c.message = again.brief(options.steps);

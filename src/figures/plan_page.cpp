@@ -215,7 +215,7 @@ json plan_data(const PlanResult& plan, const PlanProblem& problem, const FigureC
 }
 
 /// What a validation adds: per run, its errors over time, the plant's last equilibrium, the
-/// markers seen at the last frame and the checkpoints.
+/// markers or the depth camera's cloud seen at the last frame and the checkpoints.
 json validation_data(const ValidationResult& result) {
   json runs = json::array();
   for (const ValidationRun& run : result.runs) {
@@ -227,9 +227,10 @@ json validation_data(const ValidationResult& result) {
       e2.push_back(mm(run.error_2d[i]));
       et.push_back(mm(run.true_error[i]));
     }
-    json markers = json::array();
+    json markers = json::array(), cloud = json::array();
     for (const auto& m : run.last_seen.markers)
       if (m) markers.push_back(point(*m));
+    for (const Eigen::Vector3d& q : run.last_cloud.points) cloud.push_back(point(q));
     json checkpoints = json::array();
     for (const Checkpoint& c : run.checkpoints)
       checkpoints.push_back({{"t", c.t},
@@ -251,6 +252,7 @@ json validation_data(const ValidationResult& result) {
                     {"plant_final_t", run.plant_final.t},
                     {"markers", markers},
                     {"markers_t", run.last_seen.t},
+                    {"cloud", cloud},
                     {"checkpoints", checkpoints}});
   }
   return {{"status", to_string(result.status)},

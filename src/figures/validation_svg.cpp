@@ -3,6 +3,7 @@
 // open loop against a few tenths closed) reads beside the larger errors on the way.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "figures/svg_drawing.hpp"
@@ -110,6 +111,39 @@ std::string millimetres(double metres) {
   return out.str();
 }
 
+constexpr double kCloudHeight = 260.0;  // px, the cloud's panel below the plot
+
+/// A depth camera's run: its last frame's cloud (blue dots) over the real rod's centreline
+/// (green), both projected on the world's x–z plane (the default camera's image plane), at one
+/// scale on both axes.
+void draw_cloud_panel(std::ostringstream& out, const ValidationRun& run, double top) {
+  const std::vector<Eigen::Vector3d>& rod = run.plant_final.configuration.p;
+  const std::vector<Eigen::Vector3d>& cloud = run.last_cloud.points;
+  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(),
+                     std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (const auto* points : {&rod, &cloud})
+    for (const Eigen::Vector3d& p : *points) {
+      lo = lo.cwiseMin(Eigen::Vector2d(p.x(), p.z()));
+      hi = hi.cwiseMax(Eigen::Vector2d(p.x(), p.z()));
+    }
+  const double inner = kCloudHeight - 40.0;
+  const double scale = std::min((kWidth - kLeft - kRight) / std::max(hi.x() - lo.x(), 1e-6),
+                                inner / std::max(hi.y() - lo.y(), 1e-6));
+  const auto x = [&](const Eigen::Vector3d& p) { return kLeft + scale * (p.x() - lo.x()); };
+  const auto y = [&](const Eigen::Vector3d& p) { return top + 30.0 + scale * (hi.y() - p.z()); };
+  out << "<text x=\"" << fixed(kLeft) << "\" y=\"" << fixed(top + 14)
+      << "\">the depth camera's cloud at the last frame (" << cloud.size()
+      << " points, blue) and the real rod (green), x–z, " << fixed(1e3 / scale, 2)
+      << " mm per px</text>\n";
+  out << "<polyline fill=\"none\" stroke=\"#2ca02c\" stroke-width=\"1.5\" points=\"";
+  for (const Eigen::Vector3d& p : rod) out << fixed(x(p)) << ',' << fixed(y(p)) << ' ';
+  out << "\"/>\n<g fill=\"#1f77b4\">\n";
+  for (const Eigen::Vector3d& p : cloud)
+    out << "<circle cx=\"" << fixed(x(p)) << "\" cy=\"" << fixed(y(p)) << "\" r=\"1.2\"/>\n";
+  out << "</g>\n";
+}
+
 }  // namespace
 
 std::string validation_svg(const ValidationResult& result) {
@@ -121,7 +155,9 @@ std::string validation_svg(const ValidationResult& result) {
       figures::wrapped(title.str(), figures::characters_in(kWidth - kLeft - kRight, 14));
   const double top = 22 + 18.0 * static_cast<double>(lines.size()) + kLegend;
   const Axes axes = fit_axes(result, top);
-  const double height = top + kPlotHeight + kBottom;
+  const ValidationRun* first = result.runs.empty() ? nullptr : &result.runs.front();
+  const bool cloud = first != nullptr && !first->last_cloud.points.empty();
+  const double height = top + kPlotHeight + kBottom + (cloud ? kCloudHeight : 0.0);
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << svg_signature_comment()
@@ -133,7 +169,6 @@ std::string validation_svg(const ValidationResult& result) {
     out << "<text x=\"" << fixed(kLeft) << "\" y=\"" << fixed(22 + 18.0 * static_cast<double>(k))
         << "\" font-size=\"14\">" << escaped(lines[k]) << "</text>\n";
   // The legend, with the first run's final errors: the numbers the figure is about.
-  const ValidationRun* first = result.runs.empty() ? nullptr : &result.runs.front();
   double x = kLeft;
   const double y = top - 12;
   for (int c = 0; c < 3; ++c) {
@@ -155,6 +190,7 @@ std::string validation_svg(const ValidationResult& result) {
     draw_series(out, axes, run.time, run.error_2d, kColours[1]);
   }
   if (first != nullptr) draw_series(out, axes, first->time, first->true_error, kColours[2]);
+  if (cloud) draw_cloud_panel(out, *first, top + kPlotHeight + kBottom);
   out << "</svg>\n";
   return out.str();
 }

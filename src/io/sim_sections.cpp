@@ -3,6 +3,10 @@
 
 #include "io/task_sections.hpp"
 
+#include <optional>
+#include <string_view>
+#include <vector>
+
 namespace rodshape::io_detail {
 
 namespace {
@@ -50,8 +54,23 @@ Eigen::Vector3d read_planner_gravity(const YamlField& root) {
   return Eigen::Vector3d::Zero();
 }
 
-MarkerSensorModel read_sensor_section(const YamlField& sensor) {
-  sensor.expect_mapping({"markers", "noise", "dropout", "frame_rate", "camera", "wrench_noise"});
+namespace {
+
+/// `wrench_noise {force, moment}`: the wrist sensor's noise (absent: no wrist sensor).
+std::optional<WristNoise> read_wrench_noise(const YamlField& sensor) {
+  const YamlField wrench = sensor.get("wrench_noise");
+  if (!wrench.present()) return std::nullopt;
+  wrench.expect_mapping({"force", "moment"});
+  WristNoise noise;
+  read_number_into(wrench, "force", noise.force);
+  read_number_into(wrench, "moment", noise.moment);
+  return noise;
+}
+
+MarkerSensorModel read_marker_sensor(const YamlField& sensor) {
+  sensor.expect_mapping(
+      {"kind", "markers", "noise", "dropout", "frame_rate", "camera", "wrench_noise"},
+      {{"depth", "sensor.depth is the depth camera's section: it needs sensor.kind: depth"}});
   MarkerSensorModel model;
   if (const YamlField markers = sensor.get("markers"); markers.present())
     model.markers = markers.integer();
@@ -64,15 +83,71 @@ MarkerSensorModel read_sensor_section(const YamlField& sensor) {
   read_number_into(sensor, "frame_rate", model.frame_rate);
   if (const YamlField camera = sensor.get("camera"); camera.present())
     model.camera = read_pose(camera);
-  if (const YamlField wrench = sensor.get("wrench_noise"); wrench.present()) {
-    wrench.expect_mapping({"force", "moment"});
-    WristNoise noise;
-    read_number_into(wrench, "force", noise.force);
-    read_number_into(wrench, "moment", noise.moment);
-    model.wrist = noise;
-  }
+  model.wrist = read_wrench_noise(sensor);
   sensor.located([&] { model.validate(); });
   return model;
+}
+
+/// `[first, second]`: a list of two numbers.
+void read_pair_into(const YamlField& parent, const char* key, double& first, double& second) {
+  const YamlField pair = parent.get(key);
+  if (!pair.present()) return;
+  const std::vector<YamlField> values = pair.elements();
+  if (values.size() != 2) pair.fail(pair.path() + " must be a list of two numbers");
+  first = values[0].number();
+  second = values[1].number();
+}
+
+/// `sensor.depth`: resolution [w, h], field_of_view [x, y] (degrees), range [min, max] (m),
+/// points, noise {a0, a1, a2, incidence, lateral_pixels}, outliers.
+void read_depth_camera(const YamlField& depth, DepthSensorModel& model) {
+  depth.expect_mapping({"resolution", "field_of_view", "range", "points", "noise", "outliers"});
+  if (const YamlField resolution = depth.get("resolution"); resolution.present()) {
+    const std::vector<YamlField> values = resolution.elements();
+    if (values.size() != 2)
+      resolution.fail(resolution.path() + " must be a list of two whole numbers [width, height]");
+    model.width = values[0].integer();
+    model.height = values[1].integer();
+  }
+  read_pair_into(depth, "field_of_view", model.fov_x_deg, model.fov_y_deg);
+  read_pair_into(depth, "range", model.min_range, model.max_range);
+  if (const YamlField points = depth.get("points"); points.present())
+    model.points = points.integer();
+  if (const YamlField noise = depth.get("noise"); noise.present()) {
+    noise.expect_mapping({"a0", "a1", "a2", "incidence", "lateral_pixels"});
+    read_number_into(noise, "a0", model.noise.a0);
+    read_number_into(noise, "a1", model.noise.a1);
+    read_number_into(noise, "a2", model.noise.a2);
+    read_number_into(noise, "incidence", model.noise.incidence);
+    read_number_into(noise, "lateral_pixels", model.noise.lateral_pixels);
+  }
+  read_number_into(depth, "outliers", model.outliers);
+}
+
+DepthSensorModel read_depth_sensor(const YamlField& sensor) {
+  static constexpr std::string_view kMarkerKey =
+      "a marker camera's key, not allowed with sensor.kind: depth (the depth camera's keys go "
+      "under sensor.depth)";
+  sensor.expect_mapping({"kind", "depth", "frame_rate", "camera", "wrench_noise"},
+                        {{"markers", kMarkerKey}, {"noise", kMarkerKey}, {"dropout", kMarkerKey}});
+  DepthSensorModel model;
+  if (const YamlField depth = sensor.get("depth"); depth.present()) read_depth_camera(depth, model);
+  read_number_into(sensor, "frame_rate", model.frame_rate);
+  if (const YamlField camera = sensor.get("camera"); camera.present())
+    model.camera = read_pose(camera);
+  model.wrist = read_wrench_noise(sensor);
+  sensor.located([&] { model.validate(); });
+  return model;
+}
+
+}  // namespace
+
+SensorModel read_sensor_section(const YamlField& sensor) {
+  SensorKind kind = SensorKind::Markers;
+  if (const YamlField field = sensor.get("kind"); field.present())
+    kind = *value_of(kSensorKindNames, field.choice({"markers", "depth"}));
+  if (kind == SensorKind::Depth) return read_depth_sensor(sensor);
+  return read_marker_sensor(sensor);
 }
 
 ClosedLoopOptions read_closed_loop_section(const YamlField& loop) {

@@ -173,12 +173,24 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   if (const YamlField plant = root.get("plant"); plant.present())
     task.plant = io_detail::read_plant_section(plant);
   task.plant.planner_gravity = io_detail::read_planner_gravity(root);
-  if (const YamlField sensor = root.get("sensor"); sensor.present())
-    task.sensor = io_detail::read_sensor_section(sensor);
+  if (const YamlField sensor = root.get("sensor"); sensor.present()) {
+    SensorModel model = io_detail::read_sensor_section(sensor);
+    if (auto* depth = std::get_if<DepthSensorModel>(&model))
+      task.depth_sensor = *depth;
+    else
+      task.sensor = std::get<MarkerSensorModel>(model);
+  }
   if (const YamlField loop = root.get("closed_loop"); loop.present())
     task.closed_loop = io_detail::read_closed_loop_section(loop);
   if (const YamlField scene = root.get("scene"); scene.present())
     problem.scene = io_detail::read_scene_section(scene, section, task.options);
+  if (task.depth_sensor) {  // the depth camera sees the rod's surface: the scene's radius
+    if (!section)
+      root.get("sensor").get("kind").fail(
+          "sensor.kind: depth needs rod.section, which is missing: the depth camera sees the "
+          "rod's surface (its centreline inflated by the section's circumscribed radius)");
+    problem.scene.rod_radius = section->circumscribed_radius();
+  }
   if (const YamlField robot = root.get("robot"); robot.present()) {
     io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
                                   task);

@@ -1,5 +1,8 @@
 // validation_json.cpp: the validation document (validation_output.hpp; schema in
 // docs/task-file.md, "validate").
+#include <optional>
+#include <variant>
+
 #include "io/json_format.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/validation_output.hpp"
@@ -34,16 +37,39 @@ Json plant_object(const ValidationResult& result, const PlantModel& plant) {
   return j;
 }
 
+Json wrench_noise(const std::optional<WristNoise>& wrist) {
+  return wrist ? Json{{"force", wrist->force}, {"moment", wrist->moment}} : Json(nullptr);
+}
+
 Json sensor_object(const MarkerSensorModel& sensor) {
   Json j;
+  j["kind"] = to_string(SensorKind::Markers);
   j["markers"] = sensor.markers;
   j["noise"] = {{"in_plane", sensor.in_plane_noise}, {"depth", sensor.depth_noise}};
   j["dropout"] = sensor.dropout;
   j["frame_rate"] = sensor.frame_rate;
   j["camera"] = io_detail::json_pose(sensor.camera);
-  j["wrench_noise"] = sensor.wrist
-                          ? Json{{"force", sensor.wrist->force}, {"moment", sensor.wrist->moment}}
-                          : Json(nullptr);
+  j["wrench_noise"] = wrench_noise(sensor.wrist);
+  return j;
+}
+
+Json sensor_object(const DepthSensorModel& sensor) {
+  Json j;
+  j["kind"] = to_string(SensorKind::Depth);
+  j["depth"] = {{"resolution", {sensor.width, sensor.height}},
+                {"field_of_view", {sensor.fov_x_deg, sensor.fov_y_deg}},
+                {"range", {sensor.min_range, sensor.max_range}},
+                {"points", sensor.points},
+                {"noise",
+                 {{"a0", sensor.noise.a0},
+                  {"a1", sensor.noise.a1},
+                  {"a2", sensor.noise.a2},
+                  {"incidence", sensor.noise.incidence},
+                  {"lateral_pixels", sensor.noise.lateral_pixels}}},
+                {"outliers", sensor.outliers}};
+  j["frame_rate"] = sensor.frame_rate;
+  j["camera"] = io_detail::json_pose(sensor.camera);
+  j["wrench_noise"] = wrench_noise(sensor.wrist);
   return j;
 }
 
@@ -82,6 +108,9 @@ Json checkpoints_array(const std::vector<Checkpoint>& checkpoints) {
                     {"consistent", c.consistent},
                     {"significant", c.significant},
                     {"replanned", c.replanned},
+                    {"points", c.points},
+                    {"outliers", c.estimate.outliers},
+                    {"shape_rms", json_number(c.shape_rms)},
                     {"message", c.message}});
   return list;
 }
@@ -94,7 +123,7 @@ Json run_object(const ValidationRun& run) {
   j["error_3d"] = numbers(run.error_3d);
   j["error_2d"] = numbers(run.error_2d);
   j["true_error"] = numbers(run.true_error);
-  j["visible_markers"] = run.visible_markers;
+  j["visible_markers"] = run.visible_markers;  // a depth camera: the points of each frame's cloud
   j["final"] = {{"error_3d", json_number(run.final.error_3d)},
                 {"error_2d", json_number(run.final.error_2d)},
                 {"true_error", json_number(run.final.true_error)},
@@ -124,7 +153,8 @@ std::string validation_json(const ValidationResult& result,
       {"steps", static_cast<int>(plan.steps.size())},
       {"duration", plan.end_effector_path.empty() ? 0.0 : plan.end_effector_path.back().t}};
   j["plant"] = plant_object(result, task.plant);
-  j["sensor"] = sensor_object(task.sensor);
+  j["sensor"] =
+      std::visit([](const auto& sensor) { return sensor_object(sensor); }, task.sensor_model());
   j["driven_by"] = result.driven_by_joints() ? "joint_trajectory" : "end_effector_path";
   j["plant_solves"] = result.plant.solves;
   Json runs = Json::array();

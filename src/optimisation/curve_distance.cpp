@@ -183,6 +183,34 @@ CurveProjection project_onto_curve(const RodConfiguration& configuration,
                  [&](int i) -> const IntervalBall& { return balls[static_cast<std::size_t>(i)]; });
 }
 
+CurveProjection project_near_node(const RodConfiguration& configuration,
+                                  const Eigen::Vector3d& point,
+                                  int node) {
+  const RodConfiguration& c = configuration;
+  assert(node >= 0 && node < c.nodes());
+  CurveProjection result;
+  result.closest = c.p[static_cast<std::size_t>(node)];
+  result.distance = (result.closest - point).norm();
+  const int intervals = c.nodes() - 1;
+  if (intervals < 1) return result;
+  result.interval = std::min(node, intervals - 1);
+  result.t = node > result.interval ? 1.0 : 0.0;
+  for (int i = std::max(node - 1, 0); i <= std::min(node, intervals - 1); ++i) {
+    const HermiteSegment H = segment_of(c, i);
+    const LocalMinimum local = minimise_on_segment(H, point);
+    const double d = std::sqrt(local.squared);
+    if (d < result.distance) {
+      result.distance = d;
+      result.interval = i;
+      result.t = local.t;
+      result.closest = H.value(local.t);
+    }
+  }
+  const int i = result.interval;
+  result.s = c.s[i] + result.t * (c.s[i + 1] - c.s[i]);
+  return result;
+}
+
 namespace {
 
 /// d(p'_i)/dw = R_i (δv_i - v_i × θ_i), one column per base-wrench direction, with

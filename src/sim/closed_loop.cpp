@@ -3,8 +3,10 @@
 #include "rodshape/sim/closed_loop.hpp"
 
 #include "scene_contact.hpp"
+#include "sensor_view.hpp"
 
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,11 +29,13 @@ std::vector<double> frames_within(double t0, double t1, double rate, bool includ
 
 class Driver {
  public:
-  Driver(ShapeController controller, const ClosedLoopPlant& plant, MarkerSensor& sensor)
+  Driver(ShapeController controller,
+         const ClosedLoopPlant& plant,
+         const std::function<sim_detail::SensorView(const PlanProblem&)>& view)
       : controller_(std::move(controller)),
         problem_(controller_.problem()),
         plant_(plant),
-        sensor_(sensor),
+        sensor_(view(problem_)),
         contact_(problem_.scene, plant.rod.clamp.position) {}
 
   ClosedLoopRun run(const PlanResult& plan) {
@@ -47,11 +51,12 @@ class Driver {
       w = part.last.base_wrench;
       t = part.last.t;
       if (controller_.remaining().size() == 1) break;  // the last waypoint
-      MarkerMeasurement measurement{dwell(t), averaged_sensor()};
-      measurement.frame.t = t;
-      run_.checkpoints.push_back(controller_.update(measurement, {from}).checkpoint);
+      dwell(t);
+      run_.checkpoints.push_back(update(t, from));
     }
     run_.driven_by_joints = joints_.has_value();  // reset when a segment had no IK solution
+    run_.last_seen = sensor_.last_markers();
+    run_.last_cloud = sensor_.last_cloud();
     run_.min_gap = contact_.min_gap();
     run_.plant.events.insert(run_.plant.events.end(), contact_.contacts().begin(),
                              contact_.contacts().end());
@@ -66,7 +71,7 @@ class Driver {
         time_parameterize({from, to}, controller_.planning().end_effector);
     for (TimedPose& sample : path) sample.t += t;
     if (joints_) path = hand_path(path);
-    const double rate = sensor_.model().frame_rate;
+    const double rate = sensor_.frame_rate();
     PlantRun part = drive_plant(
         plant_.rod, problem_.grasp, plant_.grasp_offset, path, w,
         frames_within(t, path.back().t, rate, first), [&](const PlantFrame& frame) { see(frame); },
@@ -78,10 +83,31 @@ class Driver {
   /// One frame seen and its errors recorded; the frame itself is not kept (issue 24).
   void see(const PlantFrame& frame) {
     contact_.see(frame);
-    run_.last_seen = sensor_.observe(frame, plant_.rod.properties.length);
+    std::vector<CapsuleObstacle> links;
+    if (joints_ && sensor_.sees_cloud()) links = arm_link_capsules(*problem_.arm, *joints_);
     run_.times.push_back(frame.t);
-    run_.errors.push_back(shape_error(problem_.target.points, plant_.rod.clamp.position,
-                                      run_.last_seen, frame.configuration, sensor_.model().camera));
+    run_.errors.push_back(
+        sensor_.see(frame, problem_, plant_.rod.clamp.position, std::move(links)));
+  }
+
+  /// The rest's measurement handed to the controller at time `t`, the arm at `at`; the
+  /// checkpoint with what its estimate was made from and how far it is from the plant's rod.
+  Checkpoint update(double t, const Pose& at) {
+    Checkpoint checkpoint;
+    if (sensor_.sees_cloud()) {
+      CloudMeasurement measurement = sensor_.rest_cloud();
+      measurement.frame.t = t;
+      checkpoint = controller_.update(measurement, {at}).checkpoint;
+      checkpoint.points = static_cast<int>(measurement.frame.points.size());
+    } else {
+      MarkerMeasurement measurement = sensor_.rest_markers();
+      measurement.frame.t = t;
+      checkpoint = controller_.update(measurement, {at}).checkpoint;
+      checkpoint.points = measurement.frame.visible();
+    }
+    checkpoint.shape_rms =
+        centreline_rms(checkpoint.estimate.configuration, run_.plant.last.configuration);
+    return checkpoint;
   }
 
   /// The segment as the hand moves along it: IK at every sample, from the joints the arm has
@@ -113,49 +139,26 @@ class Driver {
     all.last = part.last;
   }
 
-  /// The arm rests at the waypoint for checkpoint_frames frames (recorded with their errors); the
-  /// markers seen are averaged. Returns the averaged frame; `t` moves to the end of the rest.
-  SensorFrame dwell(double& t) {
+  /// The arm rests at the waypoint for checkpoint_frames frames (recorded with their errors), the
+  /// sensor putting them together; `t` moves to the end of the rest.
+  void dwell(double& t) {
     const int n = controller_.options().checkpoint_frames;
-    const double rate = sensor_.model().frame_rate;
+    const double rate = sensor_.frame_rate();
     PlantFrame still = run_.plant.last;
-    std::vector<Eigen::Vector3d> sum(run_.last_seen.markers.size(), Eigen::Vector3d::Zero());
-    std::vector<int> count(sum.size(), 0);
-    SensorFrame mean = run_.last_seen;
-    for (int k = 0; k < n; ++k) {
-      if (k > 0) {
-        still.t = t + k / rate;
-        see(still);
-        ++run_.plant.frames;
-      }
-      const SensorFrame& seen = run_.last_seen;
-      for (std::size_t j = 0; j < sum.size(); ++j)
-        if (seen.markers[j]) {
-          sum[j] += *seen.markers[j];
-          ++count[j];
-        }
+    sensor_.start_rest();
+    for (int k = 1; k < n; ++k) {
+      still.t = t + k / rate;
+      see(still);
+      ++run_.plant.frames;
     }
-    for (std::size_t j = 0; j < sum.size(); ++j)
-      mean.markers[j] =
-          count[j] > 0 ? std::optional<Eigen::Vector3d>(sum[j] / count[j]) : std::nullopt;
     t += (n - 1) / rate;
     run_.plant.last.t = t;
-    return mean;
-  }
-
-  /// The sensor as the averaged markers have it: the noise divided by √checkpoint_frames.
-  MarkerSensorModel averaged_sensor() const {
-    MarkerSensorModel averaged = sensor_.model();
-    const double root_n = std::sqrt(static_cast<double>(controller_.options().checkpoint_frames));
-    averaged.in_plane_noise /= root_n;
-    averaged.depth_noise /= root_n;
-    return averaged;
   }
 
   ShapeController controller_;
   const PlanProblem& problem_;    // the controller's
   const ClosedLoopPlant& plant_;  // the real rod and grasp, which the controller does not know
-  MarkerSensor& sensor_;
+  sim_detail::SensorView sensor_;
   std::optional<Eigen::VectorXd> joints_;  // the arm's joints at the last waypoint
   sim_detail::SceneContact contact_;       // the plant against the plan's scene
   ClosedLoopRun run_;
@@ -167,7 +170,19 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
                               const ClosedLoopPlant& plant,
                               MarkerSensor& sensor) {
-  Driver driver(std::move(controller), plant, sensor);
+  const double length = plant.rod.properties.length;
+  Driver driver(std::move(controller), plant,
+                [&](const PlanProblem&) { return sim_detail::SensorView(sensor, length); });
+  return driver.run(plan);
+}
+
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              const ClosedLoopPlant& plant,
+                              DepthCamera& camera) {
+  Driver driver(std::move(controller), plant, [&](const PlanProblem& problem) {
+    return sim_detail::SensorView(camera, problem);
+  });
   return driver.run(plan);
 }
 

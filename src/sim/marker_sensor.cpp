@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "rodshape/optimisation/curve_distance.hpp"
+#include "wrist_wrench.hpp"
 
 namespace rodshape {
 
@@ -29,21 +30,8 @@ SensorFrame MarkerSensor::observe(const PlantFrame& frame, double length) {
     }
     seen.markers.emplace_back(curve_point(frame.configuration, s) + Rc * noise);
   }
-  if (model_.wrist) {
-    // The rod's wrench on the gripper, -n(L), -m(L), in the end-effector frame.
-    const Pose& ee = frame.end_effector;  // where the gripper is (the grasp may be off)
-    const Wrench tip = frame.configuration.tip_wrench();
-    Wrench w;
-    w.force = -(ee.rotation.transpose() * tip.force);
-    w.moment =
-        -(ee.rotation.transpose() *
-          (tip.moment + (frame.configuration.tip().position - ee.position).cross(tip.force)));
-    for (int k = 0; k < 3; ++k) {
-      w.force(k) += model_.wrist->force * normal_(random_);
-      w.moment(k) += model_.wrist->moment * normal_(random_);
-    }
-    seen.wrist = w;
-  }
+  if (model_.wrist)
+    seen.wrist = sim_detail::measured_wrist_wrench(frame, *model_.wrist, random_, normal_);
   return seen;
 }
 

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "parallel_runs.hpp"
@@ -13,11 +15,60 @@
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
 #include "scene_contact.hpp"
+#include "sensor_view.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
 
 namespace {
+
+/// Run k's sensor (its own random stream) and the view the drivers see it through. Holds pointers
+/// into itself: neither copied nor moved.
+class RunSensor {
+ public:
+  RunSensor(const SensorModel& model,
+            std::uint64_t seed,
+            double length,
+            const PlanProblem& problem) {
+    if (const auto* markers = std::get_if<MarkerSensorModel>(&model)) {
+      view_.emplace(markers_.emplace(*markers, seed), length);
+    } else {
+      view_.emplace(depth_.emplace(std::get<DepthSensorModel>(model), seed), problem);
+    }
+  }
+  RunSensor(const RunSensor&) = delete;
+  RunSensor& operator=(const RunSensor&) = delete;
+  sim_detail::SensorView& view() { return *view_; }
+  /// The closed loop carried out with this sensor.
+  ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                                ShapeController controller,
+                                const ClosedLoopPlant& plant) {
+    if (markers_) return rodshape::run_closed_loop(plan, std::move(controller), plant, *markers_);
+    return rodshape::run_closed_loop(plan, std::move(controller), plant, *depth_);
+  }
+
+ private:
+  std::optional<MarkerSensor> markers_;
+  std::optional<DepthCamera> depth_;
+  std::optional<sim_detail::SensorView> view_;
+};
+
+/// The arm's joints at time t along a joint trajectory: its last sample at or before t.
+const Eigen::VectorXd& joints_at(const JointTrajectoryResult& joints, double t) {
+  const auto after = std::upper_bound(joints.t.begin(), joints.t.end(), t);
+  const auto k = after == joints.t.begin() ? 0 : (after - joints.t.begin()) - 1;
+  return joints.q[static_cast<std::size_t>(k)];
+}
+
+double frame_rate_of(const SensorModel& sensor) {
+  return std::visit([](const auto& model) { return model.frame_rate; }, sensor);
+}
+
+/// The library's name of the sensor's frame rate, for messages.
+std::string frame_rate_field(const SensorModel& sensor) {
+  return kind_of(sensor) == SensorKind::Depth ? "DepthSensorModel.frame_rate"
+                                              : "MarkerSensorModel.frame_rate";
+}
 
 /// A frame's errors appended to a run's series.
 void record(ValidationRun& run, double t, const ShapeError& error) {
@@ -36,20 +87,21 @@ void drive_and_observe(ValidationResult& result,
                        const PlanProblem& problem,
                        const PlanResult& plan,
                        const PlantModel& plant,
-                       const MarkerSensorModel& sensor,
+                       const SensorModel& sensor,
                        const ValidationOptions& options,
                        const std::vector<TimedPose>& path,
                        const std::vector<double>& times) {
-  std::vector<MarkerSensor> cameras;
+  const double length = result.real_rod.properties.length;
+  std::vector<std::unique_ptr<RunSensor>> cameras;
   for (int k = 0; k < options.runs; ++k) {
     ValidationRun& run = result.runs.emplace_back();
     run.seed = options.seed + static_cast<std::uint64_t>(k);
     for (auto* series : {&run.time, &run.error_3d, &run.error_2d, &run.true_error})
       series->reserve(times.size());
     run.visible_markers.reserve(times.size());
-    cameras.emplace_back(sensor, run.seed);
+    cameras.push_back(std::make_unique<RunSensor>(sensor, run.seed, length, problem));
   }
-  const double length = result.real_rod.properties.length;
+  const bool clouds_see_arm = kind_of(sensor) == SensorKind::Depth && drives_joints(problem, plan);
   const Eigen::Vector3d clamp = result.real_rod.clamp.position;
   sim_detail::SceneContact contact(problem.scene, clamp);
   const int total = static_cast<int>(times.size());
@@ -61,18 +113,19 @@ void drive_and_observe(ValidationResult& result,
       options.progress(driven, total);
     }
     contact.see(frame);
-    for (std::size_t k = 0; k < cameras.size(); ++k) {
-      ValidationRun& run = result.runs[k];
-      run.last_seen = cameras[k].observe(frame, length);
-      record(run, frame.t,
-             shape_error(problem.target.points, clamp, run.last_seen, frame.configuration,
-                         sensor.camera));
-    }
+    std::vector<CapsuleObstacle> links;
+    if (clouds_see_arm)
+      links = arm_link_capsules(*problem.arm, joints_at(plan.arm->joints, frame.t));
+    for (std::size_t k = 0; k < cameras.size(); ++k)
+      record(result.runs[k], frame.t, cameras[k]->view().see(frame, problem, clamp, links));
   };
   result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path,
                              plan.initial_wrench, times, see, options.plant);
   if (options.progress && driven < total) options.progress(total, total);  // lost on the way
-  for (ValidationRun& run : result.runs) {
+  for (std::size_t k = 0; k < cameras.size(); ++k) {
+    ValidationRun& run = result.runs[k];
+    run.last_seen = cameras[k]->view().last_markers();
+    run.last_cloud = cameras[k]->view().last_cloud();
     run.events = result.plant.events;
     run.events.insert(run.events.end(), contact.contacts().begin(), contact.contacts().end());
     run.min_gap = contact.min_gap();
@@ -85,15 +138,15 @@ void drive_and_observe(ValidationResult& result,
 ValidationRun closed_loop_run(const PlanProblem& problem,
                               const PlanResult& plan,
                               const PlantModel& plant,
-                              const MarkerSensorModel& sensor,
+                              const SensorModel& sensor,
                               const ValidationOptions& options,
                               const ClampedRod& real,
                               std::uint64_t seed,
                               PlantRun& plant_run) {
-  MarkerSensor camera(sensor, seed);
+  RunSensor camera(sensor, seed, real.properties.length, problem);
   ClosedLoopRun loop =
-      run_closed_loop(plan, ShapeController(problem, plan, options.planning, options.loop),
-                      {real, plant.grasp_offset, options.plant}, camera);
+      camera.run_closed_loop(plan, ShapeController(problem, plan, options.planning, options.loop),
+                             {real, plant.grasp_offset, options.plant});
   ValidationRun run;
   run.seed = seed;
   run.closed_loop = true;
@@ -104,6 +157,7 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
   loop.times = {};
   loop.errors = {};
   run.last_seen = std::move(loop.last_seen);
+  run.last_cloud = std::move(loop.last_cloud);
   run.checkpoints = std::move(loop.checkpoints);
   run.events = loop.plant.events;
   run.min_gap = loop.min_gap;
@@ -117,17 +171,18 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
 /// its series and writes its lines (docs/limits.md). Closed loop, the rests at the checkpoints
 /// count too (the re-plans' paths may differ a little from the plan's: an estimate).
 void check_frames(const PlanResult& plan,
-                  const MarkerSensorModel& sensor,
+                  const SensorModel& sensor,
                   const ValidationOptions& options) {
   const double duration = plan.end_effector_path.back().t - plan.end_effector_path.front().t;
-  double per_run = std::floor(duration * sensor.frame_rate) + 2.0;
+  const double rate = frame_rate_of(sensor);
+  double per_run = std::floor(duration * rate) + 2.0;
   if (options.closed_loop)
     per_run += static_cast<double>(plan.steps.size()) * (options.loop.checkpoint_frames + 1);
   const double all = per_run * options.runs;
   if (all <= ValidationOptions::kMaxFrames) return;
-  throw InputError("MarkerSensorModel.frame_rate",
+  throw InputError(frame_rate_field(sensor),
                    ": the path of " + detail::format_value(duration) + " s at " +
-                       detail::format_value(sensor.frame_rate) + " Hz" +
+                       detail::format_value(rate) + " Hz" +
                        (options.closed_loop ? " with the rests at the checkpoints" : "") +
                        ", with ValidationOptions.runs = " + std::to_string(options.runs) +
                        ", would have " + detail::format_value(all) + " frames; at most " +
@@ -230,10 +285,24 @@ bool ValidationResult::driven_by_joints() const {
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
-                               const MarkerSensorModel& sensor,
+                               const SensorModel& sensor,
                                const ValidationOptions& options) {
   options.validate();
-  sensor.validate();
+  std::visit([](const auto& model) { model.validate(); }, sensor);
+  if (kind_of(sensor) == SensorKind::Depth && !(problem.scene.rod_radius > 0.0))
+    throw InputError("Scene.rod_radius",
+                     ": the depth camera sees the rod's surface, which needs the section's "
+                     "radius (rod.section)");
+  if (const auto* depth = std::get_if<DepthSensorModel>(&sensor); depth && options.closed_loop) {
+    const double pooled = static_cast<double>(options.loop.checkpoint_frames) * depth->points;
+    if (pooled > ValidationOptions::kMaxRestPoints)
+      throw InputError("DepthSensorModel.points",
+                       " = " + std::to_string(depth->points) + " with ClosedLoopOptions." +
+                           "checkpoint_frames = " + std::to_string(options.loop.checkpoint_frames) +
+                           " would pool " + detail::format_value(pooled) +
+                           " points at a rest; at most " +
+                           detail::format_value(ValidationOptions::kMaxRestPoints));
+  }
   if (plan.end_effector_path.empty())
     throw InputError("PlanResult.end_effector_path", ": the plan has no path to carry out");
   ValidationResult result;
@@ -245,7 +314,7 @@ ValidationResult validate_plan(const PlanProblem& problem,
   if (!options.closed_loop) {
     const std::vector<TimedPose> path = commanded_path(problem, plan);
     drive_and_observe(result, problem, plan, plant, sensor, options, path,
-                      frame_times(path.front().t, path.back().t, sensor.frame_rate));
+                      frame_times(path.front().t, path.back().t, frame_rate_of(sensor)));
     for (ValidationRun& run : result.runs) run.driven_by_joints = drives_joints(problem, plan);
   }
   if (options.closed_loop) {

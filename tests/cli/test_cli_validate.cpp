@@ -1,6 +1,7 @@
 // test_cli_validate.cpp: `rodshape validate` as a user runs it: a nominal plant reproduces the
 // plan's own distances, a fixed seed repeats bit for bit, and bad plant or sensor sections are
-// one-line errors naming the field with nothing written.
+// one-line errors naming the field with nothing written (the depth camera's keys too); the depth
+// camera's example closes the loop from clouds alone.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -106,6 +107,35 @@ TEST_F(CliValidate, TheBundledClosedLoopExampleEndsWithinAMillimetre) {
   EXPECT_LT(true_error[1], 0.5 * true_error[0]);
 }
 
+TEST_F(CliValidate, TheDepthCameraExampleClosesTheLoopFromCloudsAlone) {
+  // A third of the band hidden, Kinect-like noise, flying pixels, no markers, no wrist sensor.
+  const std::string example = (kSource / "examples" / "validate_depth_camera.yaml").string();
+  double true_error[2] = {0.0, 0.0};
+  for (int closed = 0; closed < 2; ++closed) {
+    const Outcome result = run("validate " + quoted(example) + " -o " + quoted(outdir().string()) +
+                               (closed ? " --closed-loop" : ""));
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const Json validation = Json::parse(read_file(outdir() / "validation.json"));
+    EXPECT_EQ(validation["sensor"]["kind"], "depth");
+    EXPECT_EQ(validation["sensor"]["depth"]["points"], 500);
+    const Json& run = validation["runs"][0];
+    true_error[closed] = run["final"]["true_error"].get<double>();
+    EXPECT_EQ(run["visible_markers"].back(), 500);  // the last frame's cloud
+    const Json& estimates = run["estimates"];
+    EXPECT_EQ(estimates.size(), closed ? 6u : 0u);
+    for (const Json& e : estimates) {  // each from a rest's 15 pooled clouds, near the real rod
+      EXPECT_EQ(e["points"], 15 * 500);
+      EXPECT_LT(e["outliers"].get<int>(), 15 * 500 / 10) << e["message"];  // 2 % flying pixels
+      EXPECT_LT(e["shape_rms"].get<double>(), 2e-3) << e["message"];
+    }
+    // The figure shows the cloud under the errors.
+    EXPECT_NE(read_file(outdir() / "validation.svg").find("the depth camera's cloud"),
+              std::string::npos);
+  }
+  EXPECT_LT(true_error[1], 1e-3);
+  EXPECT_LT(true_error[1], 0.5 * true_error[0]);
+}
+
 TEST_F(CliValidate, ClosedLoopRunsInParallelWriteWhatOneJobWritesAndNoProgressOffATerminal) {
   // The runs' seeds are fixed whoever carries them out: validation.json is the same for any
   // --jobs. Standard error is a file here, not a terminal: no progress line, nothing at all.
@@ -143,6 +173,15 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
        "sensor.dropout = 1 hides every marker, and there is no wrist sensor "
        "(sensor.wrench_noise): nothing would be measured"},
       {"sensor: {wrench_noise: {force: -1}}\n", "sensor.wrench_noise.force = -1 must be >= 0"},
+      {"sensor: {kind: depth, markers: 10}\n",
+       "sensor.markers: unknown key; a marker camera's key, not allowed with sensor.kind: depth"},
+      {"sensor: {kind: depth, depth: {points: 0}}\n",
+       "sensor.depth.points = 0 must be in [1, 100000]"},
+      {"sensor: {kind: depth, depth: {range: [2, 1]}}\n",
+       "sensor.depth.range[1] = 1 must be > min_range = 2"},
+      {"sensor: {kind: depth, depth: {resolution: [512]}}\n",
+       "sensor.depth.resolution must be a list of two whole numbers"},
+      {"sensor: {kind: camera}\n", "sensor.kind"},
       {"closed_loop: {horizon: -1}\n", "closed_loop.horizon = -1 must be in [0, 1000]"},
       {"closed_loop: {horizon: 1.5}\n", "closed_loop.horizon"},
       {"closed_loop: {fuse: 2}\n", "closed_loop.fuse"},

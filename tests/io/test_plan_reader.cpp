@@ -405,7 +405,9 @@ TEST(PlanReader, BundledPlanExamplesRead) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(examples)) {
     const std::string name = entry.path().filename().string();
-    if (!name.starts_with("plan_") || entry.path().extension() != ".yaml") continue;
+    if (!(name.starts_with("plan_") || name.starts_with("validate_")) ||
+        entry.path().extension() != ".yaml")
+      continue;
     SCOPED_TRACE(name);
     const PlanTask task = read_plan_task(entry.path().string());
     // Ten points, as the paper's markers, except the hook over part of the band.
@@ -419,6 +421,8 @@ TEST(PlanReader, BundledPlanExamplesRead) {
       EXPECT_TRUE(task.sensor.wrist.has_value());
       EXPECT_TRUE(task.closed_loop.estimation.gravity.has_value());
     }
+    // Only the depth camera's example is seen by one, the others by markers (sensor.kind).
+    EXPECT_EQ(task.depth_sensor.has_value(), name == "validate_depth_camera.yaml");
     if (name == "plan_panda_shelf.yaml") {  // the arm in a scene, its links kept clear
       ASSERT_EQ(task.problem.scene.obstacles.size(), 4u);
       EXPECT_EQ(task.problem.scene.obstacles[1].name, "board");
@@ -434,7 +438,7 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     }
     ++count;
   }
-  EXPECT_EQ(count, 13);
+  EXPECT_EQ(count, 14);  // 13 plan_*.yaml and validate_depth_camera.yaml
 }
 
 // ---- the plant's weight (issue 24, item 2)

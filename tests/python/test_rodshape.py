@@ -77,11 +77,13 @@ def test_a_non_finite_number_names_its_field(tmp_path):
 
 def equilibrium_examples():
     return [p for p in sorted(glob.glob(str(EXAMPLES / "*.yaml")))
-            if not Path(p).name.startswith("plan_")]
+            if not Path(p).name.startswith(("plan_", "validate_"))]
 
 
 def plan_examples():
-    return sorted(glob.glob(str(EXAMPLES / "plan_*.yaml")))
+    """The plan tasks: plan_*.yaml, and validate_*.yaml (plan tasks made to be validated)."""
+    return sorted(glob.glob(str(EXAMPLES / "plan_*.yaml")) +
+                  glob.glob(str(EXAMPLES / "validate_*.yaml")))
 
 
 @pytest.mark.parametrize("path", equilibrium_examples(), ids=lambda p: Path(p).stem)
@@ -449,3 +451,12 @@ def test_the_shelf_plan_keeps_the_arms_links_clear():
     arm = rodshape.panda()
     assert len(arm.link_capsules) == 14 and arm.collision_notes == []
     assert arm.link_capsules[-1].label() == "panda_link8 (right_finger)"
+
+
+def test_a_depth_task_has_its_depth_camera():
+    depth = rodshape.load_task(str(EXAMPLES / "validate_depth_camera.yaml"))
+    camera = depth.depth_sensor
+    assert isinstance(camera, rodshape.DepthSensorModel)
+    assert (camera.width, camera.height, camera.points) == (512, 424, 500)
+    assert camera.noise.a0 == 0.0015 and camera.outliers == 0.02
+    assert rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")).depth_sensor is None

@@ -36,6 +36,9 @@ struct RodProperties {
   Eigen::Vector3d v_rest = Eigen::Vector3d::UnitZ();  // ṽ: straight, unstretched
   Eigen::Vector3d u_rest = Eigen::Vector3d::Zero();   // ũ: constant precurvature, 1/m
   double mass_per_length = 0.0;                       // ρA, kg/m (0 when unknown)
+  /// The section the stiffnesses came from, when known: the rod's surface about its centreline
+  /// (a depth camera sees it: feedback/cloud_estimator.hpp).
+  std::optional<CrossSection> section;
 
   /// Throws InputError naming the field ("rod.length", "rod.stiffness.EIx", ...).
   void validate() const;

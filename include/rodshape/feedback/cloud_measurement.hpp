@@ -18,12 +18,22 @@
 
 namespace rodshape {
 
-/// The depth camera's noise: axial σ_z(z) = a0 + a1 z + a2 z² (m, z in m) along the viewing ray,
-/// lateral σ = lateral_pixels · z / f across it.
+/// The depth camera's noise, after Fankhauser et al. 2015 ("Kinect v2 for mobile robot
+/// navigation: evaluation and modeling", ICAR), whose indoor axial model is
+/// σ_z(z, θ) = 1.5 − 0.5 z + 0.3 z² + 0.1 z^{3/2} θ² / (π/2 − θ)² mm (z in m, θ the angle between
+/// the viewing ray and the surface's normal): axial σ_z(z) = a0 + a1 z + a2 z² (m, z the depth
+/// along the camera's +z) plus the incidence term `incidence` · z^{3/2} θ² / (π/2 − θ)² (θ at most
+/// kMaxIncidence), along the viewing ray; lateral σ = lateral_pixels · z / f across it (0.8 px, the
+/// Kinect's lateral noise of Nguyen et al. 2012 away from grazing angles).
 struct DepthNoiseModel {
-  double a0 = 1.5e-3, a1 = -0.5e-3, a2 = 0.3e-3;  // m, m/m, m/m²
-  double lateral_pixels = 0.8;                    // px
+  static constexpr double kMaxIncidence = 1.4835298641951802;  // rad, 85°
+  double a0 = 1.5e-3, a1 = -0.5e-3, a2 = 0.3e-3;               // m, m/m, m/m²
+  double incidence = 0.1e-3;    // m/m^{3/2}, the θ term's coefficient
+  double lateral_pixels = 0.8;  // px
+  /// σ_z(z) = a0 + a1 z + a2 z², the noise of a surface facing the camera (θ = 0).
   double axial_sigma(double z) const { return a0 + a1 * z + a2 * z * z; }
+  /// σ_z(z, θ): σ_z(z) + incidence · z^{3/2} θ² / (π/2 − θ)², θ clamped to [0, kMaxIncidence].
+  double axial_sigma(double z, double theta) const;
 };
 
 struct DepthSensorModel {

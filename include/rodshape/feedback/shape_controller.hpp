@@ -17,12 +17,15 @@
 // controller knows no plant: sim/closed_loop.hpp drives one with it.
 #pragma once
 
+#include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "rodshape/core/pose.hpp"
 #include "rodshape/feedback/closed_loop_options.hpp"
+#include "rodshape/feedback/cloud_measurement.hpp"
 #include "rodshape/feedback/controller_beliefs.hpp"
 #include "rodshape/feedback/marker_measurement.hpp"
 #include "rodshape/feedback/planned_waypoint.hpp"
@@ -43,6 +46,12 @@ struct Checkpoint {
   bool significant = false;  // the estimate differs from the plan beyond noise (see significance)
   bool replanned = false;
   std::string message;  // the re-plan's brief, or why the plan was kept
+  /// What the estimate was made from: the markers seen (averaged over the rest) or the points of
+  /// the rest's pooled cloud; 0 until a driver says.
+  int points = 0;
+  /// The RMS distance from the estimated centreline to the real rod's (sim/shape_error.hpp,
+  /// centreline_rms): a truth only a simulation knows, filled by its driver; NaN otherwise.
+  double shape_rms = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Where the arm is when the controller is updated: at rest at the waypoint it was driven to
@@ -77,6 +86,13 @@ class ShapeController {
   /// Estimates the rod's state and keeps the plan or makes the rest again. Throws InputError when
   /// no waypoint but the last is ahead (nothing is left to control) or for a bad sensor model.
   ControllerOutput update(const MarkerMeasurement& measurement, const ArmState& arm);
+  /// The same from a depth camera's cloud (estimate_state_from_cloud, cloud_estimator.hpp). The
+  /// gates read the same: an estimate is consistent when the model explains the cloud
+  /// (unexplained(): converged, its residual over the inliers, about 1 at the camera's noise, ≤
+  /// max_residual, and at most half the points outliers of the robust loss), and significant when
+  /// the drop of the robust χ² (Σ of the Cauchy rows, ≈ χ² near the truth) from the plan's state
+  /// exceeds k + significance · √(2k), as for markers.
+  ControllerOutput update(const CloudMeasurement& measurement, const ArmState& arm);
 
   /// The waypoints still ahead, the one the arm is driven to first.
   const std::vector<PlannedWaypoint>& remaining() const { return remaining_; }
@@ -87,8 +103,16 @@ class ShapeController {
   const ControllerBeliefs& beliefs() const { return beliefs_; }
 
  private:
+  /// One sensor's estimator: the state from what it saw, given the held tip's prior pose, the
+  /// gripper, the prior, the options and the hypothesis.
+  using Estimator = std::function<StateEstimate(const Pose& tip,
+                                                const Pose& end_effector,
+                                                const StatePrior& prior,
+                                                const EstimationOptions& options,
+                                                const StateHypothesis& hypothesis)>;
+  ControllerOutput update_with(double t, const ArmState& arm, const Estimator& estimator);
   void estimate(Checkpoint& c,
-                const MarkerMeasurement& measurement,
+                const Estimator& estimator,
                 const Pose& end_effector,
                 const BaseWrench& planned);
   std::string kept_message(const Checkpoint& c) const;

@@ -52,6 +52,11 @@ struct EstimationOptions {
   double min_marker_sigma = 1e-4;        // m
   double min_wrist_force_sigma = 1e-3;   // N (about a laboratory force/torque sensor's resolution)
   double min_wrist_moment_sigma = 1e-4;  // N·m
+  /// The least standard deviation a cloud point's distance to the surface is weighed with
+  /// (cloud_estimator.hpp): 0.2 mm, twice the markers' floor, as a section's dimensions (and so
+  /// its surface about the centreline) are rarely known better; far below a Kinect v2's
+  /// single-frame noise (1–2 mm at 1 m), which it leaves alone. > 0, at most 1 m.
+  double min_cloud_sigma = 2e-4;  // m
   int max_iterations = 50;
   void validate() const;
 };
@@ -99,6 +104,11 @@ struct StateEstimate {
   /// estimated tip pose (position in m, then the rotation's body-frame angle in rad).
   double stiffness_sigma = 0.0, load_factor_sigma = 0.0;
   Matrix6d tip_covariance = Matrix6d::Zero();
+  /// The posterior covariance of w = (n(0), m(0)) (N, N·m), the same (JᵀJ)⁻¹'s block.
+  Matrix6d base_wrench_covariance = Matrix6d::Zero();
+  /// From a cloud (cloud_estimator.hpp; 0 for markers): the points fitted, and of those the
+  /// outliers, which the robust loss discounts at the estimate (their weight below 0.1).
+  int points = 0, outliers = 0;
   RodConfiguration configuration;  // of the estimate (the model with the scale applied)
   std::string message;
 };

@@ -6,12 +6,14 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rodshape/error.hpp"
 #include "rodshape/feedback/closed_loop_options.hpp"
 #include "rodshape/feedback/marker_measurement.hpp"
+#include "rodshape/feedback/sensor_model.hpp"
 #include "rodshape/sim/plant_model.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -22,6 +24,8 @@ struct PlanTask {
   PlanOptions options;  // trajectory.steps (n_inter), optimizer, end-effector limits, robot.reach
   PlantModel plant;     // the real rod of `rodshape validate` (the planner's by default)
   MarkerSensorModel sensor;  // what sees it (10 markers, a Kinect-like camera, no wrist sensor)
+  /// `sensor.kind: depth`: the depth camera that sees it instead of `sensor`'s markers.
+  std::optional<DepthSensorModel> depth_sensor;
   ClosedLoopOptions closed_loop;  // `rodshape validate --closed-loop`: estimation and re-plans
   std::string source;             // the file name that messages name
   /// The files the task was read from (the task file, robot.urdf): never an output of its run.
@@ -29,6 +33,10 @@ struct PlanTask {
   /// The line of each key of the file, two levels deep ("initial" → 14, "initial.tip" → 15).
   std::map<std::string, int> lines;
 
+  /// The sensor `rodshape validate` uses: the depth camera if the task has one, else the markers.
+  SensorModel sensor_model() const {
+    return depth_sensor ? SensorModel(*depth_sensor) : SensorModel(sensor);
+  }
   /// The message of an InputError that plan() threw for this task, as the task file says it:
   /// "<source>:<line>: <task field><problem>", the line that of the deepest key of the field that
   /// the file has (none when it has none of it).

@@ -47,6 +47,13 @@ CurveProjection project_onto_curve(const RodConfiguration& configuration,
                                    const Eigen::Vector3d& point,
                                    const std::vector<IntervalBall>& balls);
 
+/// The minimiser of |Γ(s) - p| over the (one or two) intervals next to node `node`: the closest
+/// point when `node` is the node nearest to p and Γ bends little within an interval (a cloud's
+/// points, a section's radius off the curve; feedback/cloud_estimator.hpp finds `node` with a k-d
+/// tree). 0 ≤ node < configuration.nodes().
+CurveProjection project_near_node(const RodConfiguration& configuration,
+                                  const Eigen::Vector3d& point,
+                                  int node);
 /// d dist(Γ, p) / dw by the envelope argument: the closest point moves with the curve, but at an
 /// interior minimum (Γ(s) - p) ⟂ Γ'(s), so d dist/dw = (Γ(s) - p)ᵀ/dist · dΓ(s)/dw at fixed s,
 /// with dΓ(s)/dw the Hermite interpolant of dp_i/dw and d(p'_i)/dw = R_i (δv_i - v_i × θ_i).

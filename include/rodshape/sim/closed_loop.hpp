@@ -1,9 +1,9 @@
 // closed_loop.hpp: the closed loop in simulation. The driver carries out a plan on the plant (the
 // real rod) segment by segment; at each waypoint but the last the arm rests for
-// ClosedLoopOptions::checkpoint_frames frames, the markers seen are averaged, and the averaged
-// measurement is handed to the ShapeController (feedback/shape_controller.hpp), whose waypoints
-// ahead (the plan's, or corrected) the driver then follows. Every frame is seen by the sensor and
-// its errors recorded.
+// ClosedLoopOptions::checkpoint_frames frames, the markers seen are averaged (a depth camera's
+// clouds pooled), and the measurement is handed to the ShapeController
+// (feedback/shape_controller.hpp), whose waypoints ahead (the plan's, or corrected) the driver then
+// follows. Every frame is seen by the sensor and its errors recorded.
 #pragma once
 
 #include <limits>
@@ -12,6 +12,7 @@
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/pose.hpp"
 #include "rodshape/feedback/shape_controller.hpp"
+#include "rodshape/sim/depth_camera.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
 #include "rodshape/sim/shape_error.hpp"
@@ -34,7 +35,8 @@ struct ClosedLoopRun {
   double min_gap = std::numeric_limits<double>::infinity();  // to the plan's scene, m
   std::vector<double> times;                                 // s, one per frame
   std::vector<ShapeError> errors;  // one per frame (the frames themselves are not kept)
-  SensorFrame last_seen;           // what the sensor saw at the last frame
+  SensorFrame last_seen;           // what the marker camera saw at the last frame
+  CloudFrame last_cloud;           // what the depth camera saw at the last frame
   std::vector<Checkpoint> checkpoints;
   /// With an arm (a plan with a complete joint trajectory), each segment is solved by IK from the
   /// arm's joints and the plant follows the hand's poses (commanded_path.hpp). A segment without
@@ -49,5 +51,12 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
                               const ClosedLoopPlant& plant,
                               MarkerSensor& sensor);
+/// The same seen by a depth camera (in the plan's scene, with the arm's links when it has an arm:
+/// where the arm stands at the end of the segment it is on, exact at the rests where the
+/// controller is updated). The clouds of a rest are pooled into one measurement.
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              const ClosedLoopPlant& plant,
+                              DepthCamera& camera);
 
 }  // namespace rodshape

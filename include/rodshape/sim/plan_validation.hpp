@@ -13,6 +13,7 @@
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/enum_names.hpp"
+#include "rodshape/feedback/sensor_model.hpp"
 #include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
@@ -30,6 +31,9 @@ struct ValidationOptions {
   /// the checkpoints): each keeps about 40 bytes of series and writes about 200 bytes of
   /// validation.json and validation.csv (docs/limits.md).
   static constexpr double kMaxFrames = 1e6;
+  /// A depth camera's points pooled over a closed loop's rest (checkpoint_frames × points): the
+  /// cloud one estimate fits (24 bytes a point; docs/limits.md).
+  static constexpr double kMaxRestPoints = 1e6;
   int runs = 1;            // 1 ≤ runs ≤ kMaxRuns
   std::uint64_t seed = 1;  // run k's sensor is seeded with seed + k
   PlantOptions plant;
@@ -56,7 +60,8 @@ struct ValidationRun {
   std::uint64_t seed = 0;
   std::vector<double> time, error_3d, error_2d, true_error;  // s, m, m, m
   std::vector<int> visible_markers;
-  SensorFrame last_seen;  // what the sensor saw at the last frame
+  SensorFrame last_seen;  // what the marker camera saw at the last frame
+  CloudFrame last_cloud;  // what the depth camera saw at the last frame (sensor.kind: depth)
   ShapeError final;       // at the last frame
   bool closed_loop = false;
   std::vector<Checkpoint> checkpoints;  // closed loop: one per waypoint but the last
@@ -104,10 +109,12 @@ std::vector<double> frame_times(double t0, double t1, double rate);
 /// Validates `plan` (of `problem`, with a non-empty end-effector path) on `plant` seen by
 /// `sensor`, driven along commanded_path(). Throws InputError for bad input (a plan without a path,
 /// a plant that cannot be held at the start is a status, not an error).
+/// The sensor is a marker camera or a depth camera (sim/depth_camera.hpp: it needs the rod's
+/// radius, problem.scene.rod_radius > 0 from rod.section, and sees the plan's scene and arm).
 ValidationResult validate_plan(const PlanProblem& problem,
                                const PlanResult& plan,
                                const PlantModel& plant,
-                               const MarkerSensorModel& sensor,
+                               const SensorModel& sensor,
                                const ValidationOptions& options = {});
 
 }  // namespace rodshape

@@ -314,6 +314,7 @@
     if (!run) return;
     plantMesh = tube(run.plant_final, drawRadius, 0x2ca02c, 0.75);
     if (run.markers.length > 0) markerMeshes.push(dots(run.markers, 0x111111, 7, true));
+    if (run.cloud && run.cloud.length > 0) markerMeshes.push(dots(run.cloud, 0x1f77b4, 3, true));
     drawPlot();
     listCheckpoints(run);
   }
@@ -355,7 +356,9 @@
   if (data.workspace_box) legendRow('#2a9d4a', 'workspace box');
   if (data.validation) {
     legendRow('#2ca02c', "plant's rod at the end (the real rod)");
-    legendRow('#111111', 'markers seen at the last frame', true);
+    var seesCloud = data.validation.runs.some(function (run) { return run.cloud && run.cloud.length > 0; });
+    if (seesCloud) legendRow('#1f77b4', "the depth camera's cloud at the last frame", true);
+    else legendRow('#111111', 'markers seen at the last frame', true);
     if (data.validation.runs.length > 1) {
       element('h2', {}, side, 'Run');
       var select = element('select', { id: 'rs-run' }, side);
