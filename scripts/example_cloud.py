@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes examples/clouds/band_kinect.ply: a synthetic depth-camera cloud of the rubber band of
+"""Writes examples/clouds/estimate_band.ply: a synthetic depth-camera cloud of the rubber band of
 examples/estimate_band.yaml, in the camera's frame (m). The band's equilibrium comes from
 `rodshape equilibrium examples/rubber_band.yaml` (JSON on stdin): 500 points of its surface (the
 tube of the section's circumscribed radius, 14.1 mm) that face the camera, the middle third of the
@@ -57,7 +57,7 @@ def main():
     lo, hi = P.min(0) - 0.05, P.max(0) + 0.05
     for k in range(50):
         points[k] = np.array([rng.uniform(lo[j], hi[j]) for j in range(3)])
-    with open("examples/clouds/band_kinect.ply", "w") as out:
+    with open("examples/clouds/estimate_band.ply", "w") as out:
         out.write("ply\nformat ascii 1.0\n"
                   "comment the rubber band of examples/estimate_band.yaml in the camera frame, m\n"
                   "comment synthetic (scripts/example_cloud.py): Kinect v2 noise, the middle "

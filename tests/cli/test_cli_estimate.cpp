@@ -21,7 +21,7 @@ using rodshape::testing::read_file;
 
 const std::string kExamples = std::string(RODSHAPE_SOURCE_DIR) + "/examples";
 const std::string kTask = kExamples + "/estimate_band.yaml";
-const std::string kCloud = kExamples + "/clouds/band_kinect.ply";
+const std::string kCloud = kExamples + "/clouds/estimate_band.ply";
 
 class CliEstimate : public rodshape::testing::CliTest {
  protected:

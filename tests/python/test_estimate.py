@@ -13,7 +13,7 @@ import rodshape
 SOURCE = Path(os.environ.get("RODSHAPE_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 CLI = os.environ.get("RODSHAPE_CLI", str(SOURCE / "build" / "rodshape"))
 TASK = SOURCE / "examples" / "estimate_band.yaml"
-CLOUD = SOURCE / "examples" / "clouds" / "band_kinect.ply"
+CLOUD = SOURCE / "examples" / "clouds" / "estimate_band.ply"
 
 
 def ply_points(path):
