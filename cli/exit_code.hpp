@@ -10,6 +10,8 @@ enum ExitCode : int {
                        // or is an input, an infeasible target: nothing written or removed
   kNotConverged = 3,   // the solver did not converge; the result (with its status) is still written
   kPartialPlan = 3,    // plan: a step's optimisation failed; the steps before it are still written
+  kNotExplained = 3,   // estimate: the fit did not converge or the model does not explain the
+                       // cloud; the result (saying why) is still written
 };
 
 }  // namespace rodshape::cli

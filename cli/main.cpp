@@ -12,6 +12,7 @@
 
 #include "command.hpp"
 #include "equilibrium_command.hpp"
+#include "estimate_command.hpp"
 #include "exit_code.hpp"
 #include "fk_command.hpp"
 #include "ik_command.hpp"
@@ -81,8 +82,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit codes: 0 success, 2 bad input (task file, command line, output path, an infeasible "
       "target; nothing is written or removed), 3 solver did not converge, plan stopped at a "
-      "failed step, validate's plant snapped or was lost, or ik found no solution (the result is "
-      "still written), 1 internal error.");
+      "failed step, validate's plant snapped or was lost, ik found no solution, or estimate's "
+      "model does not explain the cloud (the result is still written), 1 internal error.");
   app.failure_message([](const CLI::App*, const CLI::Error& error) {
     return "error: " + one_line(error.what()) + " (run 'rodshape --help')\n";
   });
@@ -93,6 +94,7 @@ int main(int argc, char** argv) {
     commands.emplace_back(subcommand, std::move(command));
   };
   add(make_equilibrium_command());
+  add(make_estimate_command());
   add(make_plan_command());
   add(make_validate_command());
   add(make_fk_command());

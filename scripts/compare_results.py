@@ -9,6 +9,7 @@ with plan.json, trajectory.csv, joint_trajectory.*) wrote for the same task file
 
   for t in examples/*.yaml; do n=$(basename "$t" .yaml)
     case $n in plan_* | validate_*) build/rodshape plan "$t" -o OUT/$n -q ;;
+               estimate_*) ;;  # rodshape estimate: see docs/estimate.md
                *) build/rodshape equilibrium "$t" -o OUT/$n.json -q ;; esac; done
 
 Numbers agree when |a - b| <= tolerance * max(1, |a|, |b|); strings, keys and list lengths must be

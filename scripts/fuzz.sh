@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (fuzz/) with clang, AddressSanitizer and UndefinedBehaviorSanitizer
-# into build-fuzz/ and runs each for a bounded time, both at once (one core each).
+# into build-fuzz/ and runs each for a bounded time, all at once.
 #   fuzz_task_reader   parse_equilibrium_task and parse_plan_task on arbitrary bytes
 #   fuzz_equilibrium   parse, solve (capped iterations), stability, JSON
+#   fuzz_cloud_reader  the PLY, PCD and CSV cloud readers on arbitrary bytes
 # Usage: bash scripts/fuzz.sh [SECONDS]     (per target; default 60)
 # Environment:
 #   RODSHAPE_FUZZ_SECONDS  seconds per target when no argument is given (default 60)
@@ -10,7 +11,7 @@
 #                          tolerance) is a finding too (known numeric findings: fuzz/findings/)
 #   RODSHAPE_JOBS          parallel compile jobs (default 2)
 # Needs clang++ and libclang-rt-14-dev (libFuzzer). The corpus grows in build-fuzz/corpus/<target>/
-# (seeded from examples/*.yaml and fuzz/regressions/); a finding's reproducer is written to build-fuzz/findings/<target>/
+# (seeded from examples/*.yaml and fuzz/regressions/; the cloud reader's from fuzz/seeds/cloud/); a finding's reproducer is written to build-fuzz/findings/<target>/
 # and the script exits 1. Reproduce one with: (cd examples && ../build-fuzz/fuzz/<target> FILE)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -19,7 +20,7 @@ root="$PWD"
 seconds="${1:-${RODSHAPE_FUZZ_SECONDS:-60}}"
 jobs="${RODSHAPE_JOBS:-2}"
 build="$root/build-fuzz"
-targets=(fuzz_task_reader fuzz_equilibrium)
+targets=(fuzz_task_reader fuzz_equilibrium fuzz_cloud_reader)
 
 # -O1 with line tables, as libFuzzer recommends; assertions on.
 mkdir -p "$build"
@@ -38,7 +39,11 @@ for target in "${targets[@]}"; do
   corpus="$build/corpus/$target"
   findings="$build/findings/$target"
   mkdir -p "$corpus" "$findings"
-  cp "$root"/examples/*.yaml "$root"/fuzz/regressions/* "$corpus"/
+  if [ "$target" = fuzz_cloud_reader ]; then
+    cp "$root"/fuzz/seeds/cloud/* "$corpus"/
+  else
+    cp "$root"/examples/*.yaml "$root"/fuzz/regressions/* "$corpus"/
+  fi
   # In examples/, the seeds' relative robot.urdf paths lead to data/robots/. No standard input.
   (cd "$root/examples" && exec "$build/fuzz/$target" -max_total_time="$seconds" \
     -rss_limit_mb=2048 -timeout=10 -max_len=16384 -print_final_stats=1 \

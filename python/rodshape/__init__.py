@@ -26,14 +26,15 @@ except ImportError as _error:
         f"python3-numpy: run /usr/bin/python3 (another python3 may come first on PATH)") from None
 from ._rodshape import *  # noqa: F401,F403
 from ._rodshape import (InputError, __version__, read_equilibrium_task,  # noqa: F401
-                        read_plan_task)
+                        read_estimate_task, read_plan_task)
 
 _TASK_CAP = 1 << 20  # bytes: the task reader's cap (docs/limits.md); it says so beyond
 
 
 def load_task(path):
-    """An equilibrium task or a plan task (one with a top-level `target`) read from a YAML file,
-    with the same checks and messages as the command line. `path` is a str, bytes or os.PathLike
+    """An equilibrium task, a plan task (one with a top-level `target`) or an estimate task (an
+    equilibrium task with a top-level `sensor`: rodshape.estimate) read from a YAML file, with the
+    same checks and messages as the command line. `path` is a str, bytes or os.PathLike
     (else TypeError)."""
     if not isinstance(path, (str, bytes, os.PathLike)):
         raise TypeError(f"load_task: path must be a str, bytes or os.PathLike, "
@@ -46,6 +47,8 @@ def load_task(path):
         return read_equilibrium_task(path)  # the reader says what is wrong, in its words
     if re.search(r"^target\s*:", head, re.MULTILINE):
         return read_plan_task(path)
+    if re.search(r"^sensor\s*:", head, re.MULTILINE):
+        return read_estimate_task(path)
     return read_equilibrium_task(path)
 
 
@@ -138,3 +141,4 @@ def _task_call(call):
 plan = _task_call(_rodshape.plan)
 validate = _task_call(_rodshape.validate)
 solve = _task_call(_rodshape.solve)
+estimate = _task_call(_rodshape.estimate)

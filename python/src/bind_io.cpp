@@ -7,7 +7,9 @@
 
 #include "bindings.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/feedback/cloud_estimator.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/estimate_task.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
@@ -34,6 +36,13 @@ struct Plan {
   std::string to_json() const { return plan_result_json(result, task); }
 };
 
+/// An estimate task's result: what `rodshape estimate` computes and writes.
+struct Estimate {
+  CloudEstimate result;
+  EstimateTask task;
+  std::string to_json() const { return estimate_result_json(task, result); }
+};
+
 struct Validation {
   ValidationResult result;
   PlanResult plan;
@@ -46,6 +55,37 @@ Equilibrium solve_task(const EquilibriumTask& task) {
     return {analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options)};
   } catch (const InputError& error) {  // a held pose beyond the model's validity
     throw InputError(task.source + ": " + in_task_names(error));
+  }
+}
+
+/// The (n × 3) rows of `points` (camera frame); InputError naming `points` for another shape.
+std::vector<Eigen::Vector3d> cloud_rows(
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& points) {
+  if (points.ndim() != 2 || points.shape(1) != 3)
+    throw InputError("points", ": expected an (n, 3) array of x, y, z in the camera's frame");
+  if (points.shape(0) > kMaxCloudPoints)
+    throw InputError("points", ": " + std::to_string(points.shape(0)) + " points, more than " +
+                                   std::to_string(kMaxCloudPoints));
+  const auto view = points.unchecked<2>();
+  std::vector<Eigen::Vector3d> rows;
+  rows.reserve(static_cast<std::size_t>(view.shape(0)));
+  for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+    rows.emplace_back(view(i, 0), view(i, 1), view(i, 2));
+    if (!rows.back().allFinite())
+      throw InputError("points[" + std::to_string(i) + "]", " is not finite");
+  }
+  return rows;
+}
+
+Estimate estimate_task(
+    const EstimateTask& task,
+    const py::array_t<double, py::array::c_style | py::array::forcecast>& points) {
+  std::vector<Eigen::Vector3d> rows = cloud_rows(points);
+  py::gil_scoped_release release;
+  try {
+    return {estimate_from_cloud(task, rows), task};
+  } catch (const InputError& error) {
+    throw InputError(task.equilibrium.source + ": " + in_task_names(error));
   }
 }
 
@@ -122,6 +162,17 @@ void bind_tasks(py::module_& m) {
       .def_readwrite("closed_loop", &PlanTask::closed_loop, "the ClosedLoopOptions")
       .def_readonly("source", &PlanTask::source)
       .def_property_readonly("kind", [](const PlanTask&) { return "plan"; });
+  py::class_<EstimateTask>(m, "EstimateTask", py::dynamic_attr(),
+                           "An estimate task file (rodshape estimate), read and checked.")
+      .def_readwrite("equilibrium", &EstimateTask::equilibrium,
+                     "the equilibrium task: rod, base, held tip (the fit's prior)")
+      .def_readwrite("options", &EstimateTask::options)
+      .def_readwrite("max_residual", &EstimateTask::max_residual,
+                     "the largest residual of a fit the model explains")
+      .def_property_readonly("source", [](const EstimateTask& t) { return t.equilibrium.source; })
+      .def_property_readonly("kind", [](const EstimateTask&) { return "estimate"; });
+  m.def("read_estimate_task", &read_estimate_task, py::arg("path"),
+        "Reads an estimate task file (InputError with the CLI's message when it is bad).");
   m.def("read_equilibrium_task", &read_equilibrium_task, py::arg("path"),
         "Reads an equilibrium task file (InputError with the CLI's message when it is bad).");
   m.def("read_plan_task", &read_plan_task, py::arg("path"),
@@ -129,6 +180,17 @@ void bind_tasks(py::module_& m) {
 }
 
 void bind_outcomes(py::module_& m) {
+  py::class_<Estimate>(m, "Estimate", "What `rodshape estimate` computes for a task and a cloud.")
+      .def_property_readonly(
+          "estimate", [](const Estimate& e) { return e.result.estimate; },
+          "the StateEstimate (configuration, base wrench, covariances, ...)")
+      .def_property_readonly(
+          "explained", [](const Estimate& e) { return e.result.explained(); },
+          "the model explains the cloud (the CLI's exit 0)")
+      .def_property_readonly(
+          "unexplained", [](const Estimate& e) { return e.result.unexplained; },
+          "why not (\"\" when explained)")
+      .def("to_json", &Estimate::to_json, "The JSON document `rodshape estimate` writes.");
   py::class_<Equilibrium>(m, "Equilibrium", "What `rodshape equilibrium` computes for a task.")
       .def_readonly("analysis", &Equilibrium::analysis)
       .def_property_readonly("configuration",
@@ -208,6 +270,10 @@ void bind_io(py::module_& m) {
   m.def("solve", &solve_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),
         "Solves an equilibrium task as `rodshape equilibrium` does (a stable equilibrium sought "
         "when the solve's is unstable).");
+  m.def("estimate", &estimate_task, py::arg("task"), py::arg("points"),
+        "Estimates the rod's equilibrium from one depth camera cloud, as `rodshape estimate` "
+        "does: `points` an (n, 3) array of x, y, z in the frame of the task's sensor.camera (at "
+        "most 10^6, finite).");
   m.def("plan", &plan_task, py::arg("task"), py::call_guard<py::gil_scoped_release>(),
         "Plans a plan task as `rodshape plan` does.");
   m.def("validate", &validate_task, py::arg("task"), py::arg("runs") = 1, py::arg("seed") = 1,

@@ -111,9 +111,15 @@ void bind_closed_loop(py::module_& m) {
                     "posterior standard deviation of log(stiffness scale); 0 if not estimated")
       .def_readonly("load_factor_sigma", &StateEstimate::load_factor_sigma,
                     "posterior standard deviation of λ; 0 if not estimated")
-      .def_readonly(
-          "tip_covariance", &StateEstimate::tip_covariance,
-          "6×6 posterior covariance of the tip pose (position m, world; angle rad, body)");
+      .def_readonly("tip_covariance", &StateEstimate::tip_covariance,
+                    "6×6 posterior covariance of the tip pose (position m, world; angle rad, body)")
+      .def_readonly("base_wrench_covariance", &StateEstimate::base_wrench_covariance,
+                    "6×6 posterior covariance of the base wrench (N, N·m)")
+      .def_readonly("points", &StateEstimate::points, "the cloud's points fitted (0: markers)")
+      .def_readonly("outliers", &StateEstimate::outliers,
+                    "of those, the points the robust loss discounts at the estimate")
+      .def_readonly("configuration", &StateEstimate::configuration)
+      .def_readonly("message", &StateEstimate::message);
   py::class_<Checkpoint>(m, "Checkpoint", "One checkpoint of a closed-loop run.")
       .def_readonly("t", &Checkpoint::t, "s")
       .def_readonly("waypoint", &Checkpoint::waypoint)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cloud_rows.hpp"
+#include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
 #include "state_fit.hpp"
 
@@ -24,6 +25,29 @@ void validate_cloud(const CloudFrame& seen) {
       throw InputError("CloudFrame.points[" + std::to_string(k) + "]", " is not finite");
   if (seen.frames < 1)
     throw InputError("CloudFrame.frames", " = " + std::to_string(seen.frames) + " must be >= 1");
+}
+
+/// Where the fit starts when the prior's rod is far from the cloud (more than kFarStart of the
+/// points outliers of its surface, as a cold start may be; a warm start's are the cloud's own
+/// outliers): a first fit with the loss kWideScale times as wide, which follows the cloud's bulk
+/// instead of discounting it; else the prior's mean (nullopt).
+std::optional<StateHypothesis> wide_start(const ClampedRod& model,
+                                          const CloudFrame& seen,
+                                          double radius,
+                                          const DepthSensorModel& sensor,
+                                          const feedback_detail::HeldGrasp& grasp,
+                                          const StatePrior& prior,
+                                          const EstimationOptions& options) {
+  constexpr double kWideScale = 10.0, kFarStart = 0.25;
+  const feedback_detail::CloudRows wide(seen, radius, sensor, options, kWideScale * kCauchyScale);
+  const RodConfiguration at_prior =
+      integrate(estimated_rod(model, prior.stiffness_scale, prior.load_factor, options.gravity),
+                prior.base_wrench);
+  if (wide.outlier_fraction(at_prior) <= kFarStart) return std::nullopt;
+  const StateEstimate first =
+      feedback_detail::fit_state(model, wide, grasp, prior, options, std::nullopt);
+  if (!first.converged() && first.status != SolveStatus::IterationLimit) return std::nullopt;
+  return StateHypothesis{first.base_wrench, first.stiffness_scale, first.load_factor};
 }
 
 }  // namespace
@@ -51,9 +75,10 @@ StateEstimate estimate_state_from_cloud(const ClampedRod& model,
   if (seen.points.empty() && !grasp.wrist)
     return feedback_detail::nothing_measured(
         "nothing was measured: the cloud has no point and there is no wrist wrench");
-  const feedback_detail::CloudRows cloud(seen, model.properties.section->circumscribed_radius(),
-                                         sensor, options);
-  return feedback_detail::fit_state(model, cloud, grasp, prior, options, hypothesis);
+  const double radius = model.properties.section->circumscribed_radius();
+  const feedback_detail::CloudRows cloud(seen, radius, sensor, options);
+  return feedback_detail::fit_state(model, cloud, grasp, prior, options, hypothesis,
+                                    wide_start(model, seen, radius, sensor, grasp, prior, options));
 }
 
 std::string unexplained(const StateEstimate& estimate, double max_residual) {

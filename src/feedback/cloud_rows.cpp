@@ -33,8 +33,8 @@ SurfaceDistance surface_distance(double radius,
 
 }  // namespace
 
-CauchyRow cauchy_row(double z) {
-  constexpr double c = kCauchyScale;
+CauchyRow cauchy_row(double z, double scale) {
+  const double c = scale;
   const double q = z * z / (c * c);
   if (q < 1e-12) return {z, 1.0};  // r = z (1 - q/4 + …): the loss is quadratic here
   const double value = std::copysign(c * std::sqrt(std::log1p(q)), z);
@@ -68,8 +68,12 @@ double PointNoise::along(const Eigen::Vector3d& x, const Eigen::Vector3d& direct
 CloudRows::CloudRows(const CloudFrame& seen,
                      double radius,
                      const DepthSensorModel& sensor,
-                     const EstimationOptions& options)
-    : points_(seen.points), radius_(radius), noise_(sensor, options.min_cloud_sigma) {}
+                     const EstimationOptions& options,
+                     double scale)
+    : points_(seen.points),
+      radius_(radius),
+      noise_(sensor, options.min_cloud_sigma),
+      scale_(scale) {}
 
 void CloudRows::evaluate(const ClampedRod& rod,
                          const RodConfiguration& configuration,
@@ -80,7 +84,7 @@ void CloudRows::evaluate(const ClampedRod& rod,
   for (const Eigen::Vector3d& x : points_) {
     const SurfaceDistance s = surface_distance(radius_, index, x);
     const double sigma = noise_.along(x, s.direction);
-    const CauchyRow row_of = cauchy_row(s.d / sigma);
+    const CauchyRow row_of = cauchy_row(s.d / sigma, scale_);
     r(row) = row_of.value;
     if (J)  // dd/dw = -n̂ᵀ dΓ(s_k)/dw (envelope), σ and ρ held
       J->block<1, 6>(row, 0) =
@@ -100,6 +104,14 @@ std::vector<double> CloudRows::weighted_distances(const RodConfiguration& config
   return z;
 }
 
+double CloudRows::outlier_fraction(const RodConfiguration& configuration) const {
+  if (points_.empty()) return 0.0;
+  int outliers = 0;
+  for (const double z : weighted_distances(configuration))
+    if (cauchy_weight(z) < kOutlierWeight) ++outliers;
+  return static_cast<double>(outliers) / static_cast<double>(points_.size());
+}
+
 void CloudRows::finish(const ClampedRod& /*rod*/,
                        const RodConfiguration& configuration,
                        int total_rows,
@@ -109,7 +121,7 @@ void CloudRows::finish(const ClampedRod& /*rod*/,
   double robust = 0.0, plain = 0.0;
   int outliers = 0;
   for (const double z : weighted_distances(configuration)) {
-    robust += std::pow(cauchy_row(z).value, 2);
+    robust += std::pow(cauchy_row(z, scale_).value, 2);
     if (cauchy_weight(z) < kOutlierWeight)
       ++outliers;
     else

@@ -6,18 +6,19 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "rodshape/feedback/cloud_estimator.hpp"
 #include "rodshape/feedback/cloud_measurement.hpp"
 #include "state_fit.hpp"
 
 namespace rodshape::feedback_detail {
 
-/// The Cauchy row r = sign(z) c √log(1 + z²/c²) (r² = 2 ρ_c(z), c = kCauchyScale) and its slope
-/// dr/dz = z / ((1 + z²/c²) r).
+/// The Cauchy row r = sign(z) c √log(1 + z²/c²) (r² = 2 ρ_c(z), c = `scale`, kCauchyScale in the
+/// fit proper) and its slope dr/dz = z / ((1 + z²/c²) r).
 struct CauchyRow {
   double value = 0.0, slope = 1.0;
 };
-CauchyRow cauchy_row(double z);
-/// The Cauchy weight 1/(1 + z²/c²) of a point z σ away.
+CauchyRow cauchy_row(double z, double scale);
+/// The Cauchy weight 1/(1 + z²/c²) of a point z σ away, c = kCauchyScale.
 double cauchy_weight(double z);
 
 /// A cloud point's σ along a direction n (cloud_measurement.hpp's model: axial σ_z(z, θ) along the
@@ -39,11 +40,15 @@ class PointNoise {
 class CloudRows final : public MeasurementBlock {
  public:
   /// The points of `seen` (which must outlive the rows) against the tube of `radius` about the
-  /// centreline.
+  /// centreline, with the Cauchy loss of scale `scale` (in σ).
   CloudRows(const CloudFrame& seen,
             double radius,
             const DepthSensorModel& sensor,
-            const EstimationOptions& options);
+            const EstimationOptions& options,
+            double scale = kCauchyScale);
+  /// The fraction of the points that are outliers (Cauchy weight below kOutlierWeight) at
+  /// `configuration`.
+  double outlier_fraction(const RodConfiguration& configuration) const;
   int rows() const override { return static_cast<int>(points_.size()); }
   void evaluate(const ClampedRod& rod,
                 const RodConfiguration& configuration,
@@ -63,6 +68,7 @@ class CloudRows final : public MeasurementBlock {
   const std::vector<Eigen::Vector3d>& points_;
   double radius_;
   PointNoise noise_;
+  double scale_;
 };
 
 }  // namespace rodshape::feedback_detail

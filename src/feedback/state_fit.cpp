@@ -238,7 +238,8 @@ StateEstimate fit_state(const ClampedRod& model,
                         const HeldGrasp& grasp,
                         const StatePrior& prior,
                         const EstimationOptions& options,
-                        const std::optional<StateHypothesis>& hypothesis) {
+                        const std::optional<StateHypothesis>& hypothesis,
+                        const std::optional<StateHypothesis>& start) {
   EstimationProblem problem(model, block, grasp, prior, options);
   Eigen::LevenbergMarquardt<EstimationProblem> lm(problem);
   lm.setMaxfev(10 * options.max_iterations);
@@ -247,7 +248,7 @@ StateEstimate fit_state(const ClampedRod& model,
   StateEstimate estimate;
   estimate.prior_chi2 = r.squaredNorm();
   estimate.parameters = problem.inputs();
-  Eigen::VectorXd x = problem.start();
+  Eigen::VectorXd x = start ? problem.at(*start) : problem.start();
   const auto status = lm.minimize(x);
   problem.residual(x, r, nullptr);
   estimate.chi2 = r.squaredNorm();

@@ -55,13 +55,15 @@ void validate_fit_input(const ClampedRod& model,
 /// The estimate that was not run: residual, χ² NaN, status NotRun, `why` its message.
 StateEstimate nothing_measured(const std::string& why);
 
-/// Fits x to `block`'s rows and the shared blocks, starting from `prior`; its χ² is also evaluated
-/// at `hypothesis` (else the prior's mean). Inputs must have passed validate_fit_input.
+/// Fits x to `block`'s rows and the shared blocks, pulled to `prior` and starting from `start`
+/// (else the prior's mean); its χ² is also evaluated at `hypothesis` (else the prior's mean).
+/// Inputs must have passed validate_fit_input.
 StateEstimate fit_state(const ClampedRod& model,
                         const MeasurementBlock& block,
                         const HeldGrasp& grasp,
                         const StatePrior& prior,
                         const EstimationOptions& options,
-                        const std::optional<StateHypothesis>& hypothesis);
+                        const std::optional<StateHypothesis>& hypothesis,
+                        const std::optional<StateHypothesis>& start = std::nullopt);
 
 }  // namespace rodshape::feedback_detail

@@ -112,11 +112,10 @@ void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field) {
 
 }  // namespace
 
-EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
-                                       const std::string& source_name) {
-  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
-  root.expect_mapping(equilibrium_sections(), equilibrium_hints());
+namespace {
 
+/// An equilibrium task's sections, read from `root` (whose keys were checked).
+EquilibriumTask read_equilibrium_sections(const YamlField& root, const std::string& source_name) {
   EquilibriumTask task;
   task.source = source_name;
   task.rod = read_clamped_rod(root);
@@ -131,6 +130,53 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
     check_solve_cost(task.rod, task.options);
   });
   return task;
+}
+
+/// An estimate task's sections: an equilibrium task's and `sensor`, which must be a depth camera.
+const std::vector<std::string_view>& estimate_sections() {
+  static const std::vector<std::string_view> sections = [] {
+    std::vector<std::string_view> all = equilibrium_sections();
+    all.push_back("sensor");
+    return all;
+  }();
+  return sections;
+}
+
+}  // namespace
+
+EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
+                                       const std::string& source_name) {
+  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
+  root.expect_mapping(equilibrium_sections(), equilibrium_hints());
+  return read_equilibrium_sections(root, source_name);
+}
+
+EstimateTask parse_estimate_task(const std::string& yaml_text, const std::string& source_name) {
+  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
+  root.expect_mapping(estimate_sections(), equilibrium_hints());
+  EstimateTask task;
+  task.equilibrium = read_equilibrium_sections(root, source_name);
+  const YamlField sensor = root.require("sensor");
+  SensorModel model = io_detail::read_sensor_section(sensor);
+  const auto* depth = std::get_if<DepthSensorModel>(&model);
+  if (!depth)
+    sensor.fail(
+        "sensor: rodshape estimate reads a depth camera's cloud: give sensor.kind: depth (and "
+        "sensor.camera, the frame of the cloud's points)");
+  task.sensor = *depth;
+  if (std::holds_alternative<FreeTip>(task.equilibrium.tip))
+    root.require("tip").fail(
+        "tip: rodshape estimate needs where the gripper holds the rod (tip.pose, a clamped or "
+        "grasped tip): the fit's prior");
+  if (!task.equilibrium.rod.properties.section)
+    root.require("rod").fail(
+        "rod: rodshape estimate needs rod.section: the cloud is of the rod's surface (its "
+        "centreline inflated by the section's circumscribed radius)");
+  return task;
+}
+
+EstimateTask read_estimate_task(const std::string& path) {
+  return parse_estimate_task(read_text_file(path), path);
 }
 
 PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name) {

@@ -191,10 +191,9 @@ TEST_F(CliIo, MisspelledCommandGetsDidYouMean) {
             "--help')\n");
   EXPECT_EQ(run("paln x.yaml").err,
             "error: unknown command 'paln'; did you mean 'plan'? (run 'rodshape --help')\n");
-  EXPECT_EQ(
-      run("frobnicate x.yaml").err,
-      "error: unknown command 'frobnicate'; the commands are equilibrium, plan, validate, fk, ik "
-      "(run 'rodshape --help')\n");
+  EXPECT_EQ(run("frobnicate x.yaml").err,
+            "error: unknown command 'frobnicate'; the commands are equilibrium, estimate, plan, "
+            "validate, fk, ik (run 'rodshape --help')\n");
 }
 
 }  // namespace

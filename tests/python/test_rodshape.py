@@ -77,7 +77,7 @@ def test_a_non_finite_number_names_its_field(tmp_path):
 
 def equilibrium_examples():
     return [p for p in sorted(glob.glob(str(EXAMPLES / "*.yaml")))
-            if not Path(p).name.startswith(("plan_", "validate_"))]
+            if not Path(p).name.startswith(("plan_", "validate_", "estimate_"))]
 
 
 def plan_examples():

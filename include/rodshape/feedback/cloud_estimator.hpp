@@ -18,7 +18,9 @@
 // sensitivities), times the loss' slope over σ_k. σ_k is re-evaluated at every residual but held
 // in the Jacobian (it changes with the fit only through the direction n_k; with the floor or
 // equal axial and lateral noise the Jacobian is exact, and tests/feedback/test_cloud_estimator.cpp
-// checks it against finite differences).
+// checks it against finite differences). A start far from the cloud (more than a quarter of the
+// points outliers of its surface) is first fitted with the loss ten times as wide, which follows
+// the cloud's bulk; the fit proper starts where that one ends.
 #pragma once
 
 #include <optional>

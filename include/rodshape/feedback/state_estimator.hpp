@@ -6,7 +6,8 @@
 //       + |(W(w) - W_meas)/σ_W|² + |(w - w_prior)/σ_prior|²,
 // solved by Levenberg–Marquardt with the integrator's exact derivatives in w (a forward difference
 // in the stiffness scale). The shape controller estimates the rod this way at each checkpoint
-// (shape_controller.hpp).
+// (shape_controller.hpp). From a depth camera's cloud instead of markers: cloud_estimator.hpp (the
+// same Levenberg–Marquardt core and tip, wrist and prior rows).
 #pragma once
 
 #include <optional>
@@ -84,7 +85,8 @@ struct StateEstimate {
   /// Converged: the fit stopped at a finite point within Levenberg–Marquardt's tolerances.
   /// IterationLimit: it ran out of evaluations (EstimationOptions::max_iterations); NonFinite: its
   /// residual is not finite; NotRun: nothing was measured (no marker seen, no wrist wrench), or
-  /// the fit could not start. Only a converged estimate is acted on.
+  /// the fit could not start (a cloud with no point and no wrist wrench too). Only a converged
+  /// estimate is acted on.
   SolveStatus status = SolveStatus::NotRun;
   bool converged() const { return status == SolveStatus::Converged; }
   BaseWrench base_wrench;

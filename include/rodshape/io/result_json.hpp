@@ -6,6 +6,7 @@
 #include <string>
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/io/estimate_task.hpp"
 #include "rodshape/solvers/equilibrium_analysis.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
@@ -21,5 +22,13 @@ std::string equilibrium_result_json(const ShootingResult& solution,
 /// `stable_search`: null when no search was made, else {found, solves, message, solved_energy}
 /// (the energy of the solve's own, unstable equilibrium, J).
 std::string equilibrium_result_json(const EquilibriumAnalysis& analysis);
+
+/// The document `rodshape estimate` writes (docs/estimate.md): the estimated equilibrium in the
+/// equilibrium document's keys (status and message the fit's; residual, integration_error and
+/// stability null: no shooting solve and no stability test), plus `fit`: explained, why not,
+/// the fit's residual, chi2, prior_chi2, parameters, iterations, points, used, rejected, the robust
+/// loss, the base wrench's covariance and sigmas, the tip's covariance and the estimated tip's
+/// offset from the task's held tip.
+std::string estimate_result_json(const EstimateTask& task, const CloudEstimate& result);
 
 }  // namespace rodshape

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "rodshape/io/equilibrium_task.hpp"
+#include "rodshape/io/estimate_task.hpp"
 #include "rodshape/io/plan_task.hpp"
 
 namespace rodshape {
@@ -27,5 +28,14 @@ PlanTask read_plan_task(const std::string& path);
 
 /// The same for a plan task already in memory; `source_name` stands for the file in messages.
 PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name);
+
+/// Reads and checks an estimate task file (`rodshape estimate`, docs/estimate.md): an equilibrium
+/// task whose tip is held (the fit's prior), whose rod has a section, with a `sensor` section of
+/// kind depth (its camera: the frame of the cloud). Throws InputError as read_equilibrium_task
+/// does.
+EstimateTask read_estimate_task(const std::string& path);
+
+/// The same for an estimate task already in memory; `source_name` stands for the file in messages.
+EstimateTask parse_estimate_task(const std::string& yaml_text, const std::string& source_name);
 
 }  // namespace rodshape
