@@ -34,7 +34,9 @@ void store_node_tangent(const NodeState& state, int i, RodConfiguration& out) {
 }
 
 template <bool WithTangent>
-void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& out) {
+RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
+                                                   NodeState& state,
+                                                   RodConfiguration& out) {
   const detail::CosseratOde ode(rod);
   const int N = rod.intervals;
   const double h = rod.step();
@@ -77,6 +79,24 @@ void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& 
   }
 }
 
+// Runtime dispatch (GCC's function multiversioning): integrate_with_tangent is compiled for the
+// x86-64 baseline and for AVX2, and the loader picks the clone for the CPU it runs on, so the
+// portable build puts four of the six tangent directions in one 256-bit register where AVX2
+// exists. The clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise the
+// baseline's (tests/core/test_integrator_dispatch.cpp). A build for one CPU (RODSHAPE_NATIVE) has
+// no clones.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__)
+#define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "avx2")))
+#else
+#define RODSHAPE_DISPATCHED
+#endif
+
+RODSHAPE_DISPATCHED void integrate_with_tangent(const ClampedRod& rod,
+                                                NodeState& state,
+                                                RodConfiguration& out) {
+  integrate_nodes<true>(rod, state, out);
+}
+
 }  // namespace
 
 void integrate(const ClampedRod& rod,
@@ -88,7 +108,7 @@ void integrate(const ClampedRod& rod,
   if (derivatives == Derivatives::None) {
     integrate_nodes<false>(rod, state, out);
   } else {
-    integrate_nodes<true>(rod, state, out);
+    integrate_with_tangent(rod, state, out);
   }
 }
 
