@@ -1,8 +1,9 @@
-// test_integrator_dispatch.cpp: integrate()'s tangent path runs in a clone chosen at load time
-// (AVX2 where the CPU has it, the x86-64 baseline elsewhere: src/core/rod_integrator.cpp). Its
-// results must be bitwise those of the same Runge–Kutta steps compiled here, for the baseline
-// target (this file has no target attribute): the clone fuses no multiply-add and its lanes never
-// mix, so there is no tolerance. White-box: the steps are those of src/core/rk4_step.hpp.
+// test_integrator_dispatch.cpp: integrate() runs in a clone chosen at load time (AVX2 where the
+// CPU has it, the x86-64 baseline elsewhere: src/core/rod_integrator.cpp). Its results, with and
+// without the tangent, must be bitwise those of the same Runge–Kutta steps compiled here for the
+// baseline target (this file has no target attribute): the clone fuses no multiply-add and the
+// tangent's lanes never mix, so there is no tolerance. White-box: the steps are those of
+// src/core/rk4_step.hpp.
 #include <gtest/gtest.h>
 
 #include "core/rk4_step.hpp"
@@ -61,6 +62,16 @@ void expect_dispatched_equals_reference(const ClampedRod& rod, const BaseWrench&
   expect_bitwise(out.tip_dm_dw, Y.middleCols<3>(Slot::m).transpose(), "dm/dw");
   expect_bitwise(out.tip_dtheta_dw, ref.tip_theta.transpose(), "dtheta/dw");
   expect_bitwise(out.denergy_dw, Y.col(Slot::e).transpose(), "de/dw");
+
+  // Without the tangent: the shape's own path (its own clone), every node.
+  const RodConfiguration shape = integrate(rod, w, Derivatives::None);
+  expect_bitwise(shape.p.back(), out.p.back(), "p(L) without the tangent");
+  expect_bitwise(shape.m.back(), out.m.back(), "m(L) without the tangent");
+  EXPECT_EQ(shape.energy, out.energy);
+  for (int i = 0; i < shape.nodes(); ++i) {
+    expect_bitwise(shape.R[i], out.R[i], "R_i");
+    expect_bitwise(shape.u[i], out.u[i], "u_i");
+  }
 }
 
 TEST(IntegratorDispatch, TangentPathIsBitwiseTheBaselineSteps) {
