@@ -14,8 +14,13 @@
 
 #include <Eigen/Core>
 #include <cstring>
+#include <type_traits>
 
 #include "rodshape/core/clamped_rod.hpp"
+
+/// Inlined into every caller, so that it is compiled for the caller's target (the integrator's
+/// dispatched clones compile the ODE for AVX2 as well as for the baseline).
+#define RODSHAPE_ALWAYS_INLINE __attribute__((always_inline))
 
 namespace rodshape::detail {
 
@@ -66,7 +71,10 @@ inline Eigen::Matrix3d rotation_of(const Eigen::Vector4d& q, double q_scale) {
 
 /// y' = F(y); fills `point` with R, n̄, m̄, v, u, p'. Written in scalars: on 3-vectors this is about
 /// half the instructions of Eigen's packet code.
-inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, OdePoint& point) {
+RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
+                                            const OdeState& y,
+                                            OdeState& dy,
+                                            OdePoint& point) {
   const double w = y[0], x = y[1], yq = y[2], z = y[3];
   const double nx = y[Slot::n], ny = y[Slot::n + 1], nz = y[Slot::n + 2];
   const double mx = y[Slot::m], my = y[Slot::m + 1], mz = y[Slot::m + 2];
@@ -130,18 +138,24 @@ inline void evaluate(const CosseratOde& ode, const OdeState& y, OdeState& dy, Od
   dy[Slot::e] = e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2);
 }
 
-/// Two doubles in one SIMD register (GCC and Clang vector extension; a scalar operand is
-/// broadcast). The tangent's six directions go through the same arithmetic two at a time.
-typedef double Lanes __attribute__((vector_size(16)));
+/// Four and two doubles side by side (GCC and Clang vector extensions; a scalar operand is
+/// broadcast). The tangent's six directions go through the same arithmetic, four in one vector and
+/// two in another: a 32-byte vector is one AVX register where the code is compiled for AVX2 (the
+/// integrator's dispatched clone, rod_integrator.cpp) and two SSE2 registers elsewhere. The lanes
+/// never mix, so every direction's result is bitwise that of scalar code in the same order.
+typedef double Lanes4 __attribute__((vector_size(32)));
+typedef double Lanes2 __attribute__((vector_size(16)));
 
-inline Lanes load(const double* column, int j) {
-  Lanes lanes;
-  std::memcpy(&lanes, column + j, sizeof(Lanes));
-  return lanes;
+/// lanes = column[j, j + lanes' width) (an out-parameter: returning a 32-byte vector from a
+/// function compiled without AVX would change the ABI, which GCC warns about).
+template <class V>
+RODSHAPE_ALWAYS_INLINE inline void load(V& lanes, const double* column, int j) {
+  std::memcpy(&lanes, column + j, sizeof(V));
 }
 
-inline void store(double* column, int j, const Lanes& lanes) {
-  std::memcpy(column + j, &lanes, sizeof(Lanes));
+template <class V>
+RODSHAPE_ALWAYS_INLINE inline void store(double* column, int j, const V& lanes) {
+  std::memcpy(column + j, &lanes, sizeof(V));
 }
 
 /// θ: the body-frame rotation of each direction, δR = R θ̂, from the quaternion tangent:
@@ -161,15 +175,15 @@ inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
   return theta;
 }
 
-/// Y' = dF(y)[Y]: the variational equations. Each direction j (row of Y) is independent; the loop
-/// body runs two directions at a time in SIMD lanes.
+/// Y' = dF(y)[Y]: the variational equations. Each direction j (row of Y) is independent; the
+/// directions run four and two at a time in SIMD lanes.
 /// Since f is constant, δn = e_j for the force directions j < 3 and 0 for the moment directions at
 /// every s; that is used rather than read from Y. Returns θ (see above).
-inline Matrix63d evaluate_tangent(const CosseratOde& ode,
-                                  const OdeState& y,
-                                  const OdePoint& point,
-                                  const OdeTangent& Y,
-                                  OdeTangent& dY) {
+RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
+                                                         const OdeState& y,
+                                                         const OdePoint& point,
+                                                         const OdeTangent& Y,
+                                                         OdeTangent& dY) {
   const double w = y[0], x0 = y[1], x1 = y[2], x2 = y[3];
   const double n0 = y[Slot::n], n1 = y[Slot::n + 1], n2 = y[Slot::n + 2];
   const double s = point.q_scale;
@@ -208,36 +222,37 @@ inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   double* const out = dY.data();
   Matrix63d theta;
 
-  // Two directions per iteration, one per SIMD lane.
-  for (int j = 0; j < 6; j += 2) {
+  // Directions j, j + 1, ... side by side, one per lane of V (Lanes4 or Lanes2).
+  const auto directions = [&](auto lanes_tag, int j) RODSHAPE_ALWAYS_INLINE {
+    using V = typename decltype(lanes_tag)::type;
+    V qw, q0, q1, q2, m0, m1, m2, rt_dn0, rt_dn1, rt_dn2, pp_dn0, pp_dn1, pp_dn2;
+    load(qw, dw, j), load(q0, dx0, j), load(q1, dx1, j), load(q2, dx2, j);
+    load(m0, dm0, j), load(m1, dm1, j), load(m2, dm2, j);
+    load(rt_dn0, Rt_dn0, j), load(rt_dn1, Rt_dn1, j), load(rt_dn2, Rt_dn2, j);
+    load(pp_dn0, pp_x_dn0, j), load(pp_dn1, pp_x_dn1, j), load(pp_dn2, pp_x_dn2, j);
     // θ = (2/|q|²)(w δx - δw x - x × δx)
-    const Lanes t0 =
-        s * (w * load(dx0, j) - x0 * load(dw, j) - x1 * load(dx2, j) + x2 * load(dx1, j));
-    const Lanes t1 =
-        s * (w * load(dx1, j) - x1 * load(dw, j) - x2 * load(dx0, j) + x0 * load(dx2, j));
-    const Lanes t2 =
-        s * (w * load(dx2, j) - x2 * load(dw, j) - x0 * load(dx1, j) + x1 * load(dx0, j));
+    const V t0 = s * (w * q0 - x0 * qw - x1 * q2 + x2 * q1);
+    const V t1 = s * (w * q1 - x1 * qw - x2 * q0 + x0 * q2);
+    const V t2 = s * (w * q2 - x2 * qw - x0 * q1 + x1 * q0);
     store(theta.data(), j, t0);
     store(theta.data() + 6, j, t1);
     store(theta.data() + 12, j, t2);
     // δn̄ = n̄ × θ + Rᵀδn,  δm̄ = m̄ × θ + Rᵀδm
-    const Lanes dnb0 = nb1 * t2 - nb2 * t1 + load(Rt_dn0, j);
-    const Lanes dnb1 = nb2 * t0 - nb0 * t2 + load(Rt_dn1, j);
-    const Lanes dnb2 = nb0 * t1 - nb1 * t0 + load(Rt_dn2, j);
-    const Lanes m0 = load(dm0, j), m1 = load(dm1, j), m2 = load(dm2, j);
-    const Lanes dmb0 = mb1 * t2 - mb2 * t1 + r00 * m0 + r10 * m1 + r20 * m2;
-    const Lanes dmb1 = mb2 * t0 - mb0 * t2 + r01 * m0 + r11 * m1 + r21 * m2;
-    const Lanes dmb2 = mb0 * t1 - mb1 * t0 + r02 * m0 + r12 * m1 + r22 * m2;
+    const V dnb0 = nb1 * t2 - nb2 * t1 + rt_dn0;
+    const V dnb1 = nb2 * t0 - nb0 * t2 + rt_dn1;
+    const V dnb2 = nb0 * t1 - nb1 * t0 + rt_dn2;
+    const V dmb0 = mb1 * t2 - mb2 * t1 + r00 * m0 + r10 * m1 + r20 * m2;
+    const V dmb1 = mb2 * t0 - mb0 * t2 + r01 * m0 + r11 * m1 + r21 * m2;
+    const V dmb2 = mb0 * t1 - mb1 * t0 + r02 * m0 + r12 * m1 + r22 * m2;
     // δu = K_rot⁻¹ δm̄;  a = δv - v × θ with δv = K_tra⁻¹ δn̄;  δp' = R a
-    const Lanes du0 = cr0 * dmb0, du1 = cr1 * dmb1, du2 = cr2 * dmb2;
-    const Lanes a0 = ct0 * dnb0 + v2 * t1 - v1 * t2;
-    const Lanes a1 = ct1 * dnb1 + v0 * t2 - v2 * t0;
-    const Lanes a2 = ct2 * dnb2 + v1 * t0 - v0 * t1;
-    const Lanes dp0 = r00 * a0 + r01 * a1 + r02 * a2;
-    const Lanes dp1 = r10 * a0 + r11 * a1 + r12 * a2;
-    const Lanes dp2 = r20 * a0 + r21 * a1 + r22 * a2;
+    const V du0 = cr0 * dmb0, du1 = cr1 * dmb1, du2 = cr2 * dmb2;
+    const V a0 = ct0 * dnb0 + v2 * t1 - v1 * t2;
+    const V a1 = ct1 * dnb1 + v0 * t2 - v2 * t0;
+    const V a2 = ct2 * dnb2 + v1 * t0 - v0 * t1;
+    const V dp0 = r00 * a0 + r01 * a1 + r02 * a2;
+    const V dp1 = r10 * a0 + r11 * a1 + r12 * a2;
+    const V dp2 = r20 * a0 + r21 * a1 + r22 * a2;
     // δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu))
-    const Lanes qw = load(dw, j), q0 = load(dx0, j), q1 = load(dx1, j), q2 = load(dx2, j);
     store(out + 6 * Slot::q, j,
           -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du0 + x1 * du1 + x2 * du2));
     store(out + 6 * (Slot::q + 1), j,
@@ -250,14 +265,16 @@ inline Matrix63d evaluate_tangent(const CosseratOde& ode,
     store(out + 6 * (Slot::p + 1), j, dp1);
     store(out + 6 * (Slot::p + 2), j, dp2);
     // δm' = n × δp' - p' × δn
-    store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - load(pp_x_dn0, j));
-    store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - load(pp_x_dn1, j));
-    store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - load(pp_x_dn2, j));
+    store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0);
+    store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1);
+    store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2);
     // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
     store(out + 6 * Slot::e, j,
           ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
-  }
-  dY.middleCols<3>(Slot::n).setZero();  // f is constant
+  };
+  directions(std::type_identity<Lanes4>{}, 0);  // directions 0–3
+  directions(std::type_identity<Lanes2>{}, 4);  // directions 4–5
+  dY.middleCols<3>(Slot::n).setZero();          // f is constant
   return theta;
 }
 

@@ -13,10 +13,30 @@ struct NodeState {
   OdeTangent Y;
 };
 
+/// out = Y + a K, element by element (a plain loop, so that it vectorises for the caller's target).
+RODSHAPE_ALWAYS_INLINE inline void tangent_stage(const OdeTangent& Y,
+                                                 double a,
+                                                 const OdeTangent& K,
+                                                 OdeTangent& out) {
+  for (int k = 0; k < OdeTangent::SizeAtCompileTime; ++k)
+    out.data()[k] = Y.data()[k] + a * K.data()[k];
+}
+
+/// Y += (h/6)(K1 + 2 (K2 + K3) + K4), element by element in that order (as Eigen's expression was).
+RODSHAPE_ALWAYS_INLINE inline void tangent_update(double sixth,
+                                                  const OdeTangent& K1,
+                                                  const OdeTangent& K2,
+                                                  const OdeTangent& K3,
+                                                  const OdeTangent& K4,
+                                                  OdeTangent& Y) {
+  for (int k = 0; k < OdeTangent::SizeAtCompileTime; ++k)
+    Y.data()[k] += sixth * (K1.data()[k] + 2.0 * (K2.data()[k] + K3.data()[k]) + K4.data()[k]);
+}
+
 /// Advances `state` by h. `start` receives the first stage's evaluation, i.e. R, v, u, ... at the
 /// node the step starts from, and `start_theta` the body rotation tangent there (with tangents).
 template <bool WithTangent>
-inline void rk4_step(
+RODSHAPE_ALWAYS_INLINE inline void rk4_step(
     const CosseratOde& ode, double h, NodeState& state, OdePoint& start, Matrix63d& start_theta) {
   OdeState k1, k2, k3, k4, y_stage;
   OdeTangent K1, K2, K3, K4, Y_stage;
@@ -29,27 +49,27 @@ inline void rk4_step(
   y_stage = state.y + half * k1;
   evaluate(ode, y_stage, k2, point);
   if constexpr (WithTangent) {
-    Y_stage = state.Y + half * K1;
+    tangent_stage(state.Y, half, K1, Y_stage);
     evaluate_tangent(ode, y_stage, point, Y_stage, K2);
   }
 
   y_stage = state.y + half * k2;
   evaluate(ode, y_stage, k3, point);
   if constexpr (WithTangent) {
-    Y_stage = state.Y + half * K2;
+    tangent_stage(state.Y, half, K2, Y_stage);
     evaluate_tangent(ode, y_stage, point, Y_stage, K3);
   }
 
   y_stage = state.y + h * k3;
   evaluate(ode, y_stage, k4, point);
   if constexpr (WithTangent) {
-    Y_stage = state.Y + h * K3;
+    tangent_stage(state.Y, h, K3, Y_stage);
     evaluate_tangent(ode, y_stage, point, Y_stage, K4);
   }
 
   const double sixth = h / 6.0;
   state.y += sixth * (k1 + 2.0 * (k2 + k3) + k4);
-  if constexpr (WithTangent) state.Y += sixth * (K1 + 2.0 * (K2 + K3) + K4);
+  if constexpr (WithTangent) tangent_update(sixth, K1, K2, K3, K4, state.Y);
 }
 
 /// The node state at s = 0: q from the clamp rotation, p(0), and w = (n(0), m(0)); the tangent is

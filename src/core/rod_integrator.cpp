@@ -34,7 +34,9 @@ void store_node_tangent(const NodeState& state, int i, RodConfiguration& out) {
 }
 
 template <bool WithTangent>
-void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& out) {
+RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
+                                                   NodeState& state,
+                                                   RodConfiguration& out) {
   const detail::CosseratOde ode(rod);
   const int N = rod.intervals;
   const double h = rod.step();
@@ -77,6 +79,33 @@ void integrate_nodes(const ClampedRod& rod, NodeState& state, RodConfiguration& 
   }
 }
 
+// Runtime dispatch (GCC's function multiversioning): both paths are compiled for the x86-64
+// baseline and for AVX2, and the loader picks the clone for the CPU it runs on, so the portable
+// build puts four of the six tangent directions in one 256-bit register where AVX2 exists (the
+// path without the tangent gains a few per cent from the wider scalar code's vectorisation). The
+// clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise the baseline's
+// (tests/core/test_integrator_dispatch.cpp). A build for one CPU (RODSHAPE_NATIVE) has no clones.
+// Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's run time is
+// set up and the program crashes at load (segfault, seen with a 5-line program).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
+    !defined(__SANITIZE_THREAD__)
+#define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "avx2")))
+#else
+#define RODSHAPE_DISPATCHED
+#endif
+
+RODSHAPE_DISPATCHED void integrate_with_tangent(const ClampedRod& rod,
+                                                NodeState& state,
+                                                RodConfiguration& out) {
+  integrate_nodes<true>(rod, state, out);
+}
+
+RODSHAPE_DISPATCHED void integrate_without_tangent(const ClampedRod& rod,
+                                                   NodeState& state,
+                                                   RodConfiguration& out) {
+  integrate_nodes<false>(rod, state, out);
+}
+
 }  // namespace
 
 void integrate(const ClampedRod& rod,
@@ -86,9 +115,9 @@ void integrate(const ClampedRod& rod,
   out.resize(rod.nodes(), derivatives);
   NodeState state = detail::initial_node_state(rod, base_wrench.force, base_wrench.moment);
   if (derivatives == Derivatives::None) {
-    integrate_nodes<false>(rod, state, out);
+    integrate_without_tangent(rod, state, out);
   } else {
-    integrate_nodes<true>(rod, state, out);
+    integrate_with_tangent(rod, state, out);
   }
 }
 

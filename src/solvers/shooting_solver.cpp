@@ -136,10 +136,19 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
     w_cached_ = snap.w, residual_ = snap.r, jacobian_ = snap.J, has_cache_ = snap.valid;
   }
   int jacobian_evaluations() const { return jacobian_evaluations_; }
+  /// True when the work configuration holds integrate(rod, w, derivatives)'s values, bit for bit:
+  /// the last integration was at w, with that level or with Tip when None is asked (the shape's
+  /// arithmetic is the same with and without the tangent).
+  bool work_holds(const Vector6d& w, Derivatives derivatives) const {
+    const bool level = work_derivatives_ == derivatives ||
+                       (derivatives == Derivatives::None && work_derivatives_ == Derivatives::Tip);
+    return integrations_ > 0 && level && work_w_ == w;
+  }
 
   /// The residual at w from a forward integration without derivatives (a chord step's check).
   const Vector6d& residual_without_jacobian(const Vector6d& w) {
     integrate(rod_, Wrench::from_vector(w), work_, Derivatives::None);
+    work_w_ = w, work_derivatives_ = Derivatives::None;
     residual_ = shooting_residual(tip_, work_);
     has_cache_ = false;  // residual_ is at w, jacobian_ is not
     ++integrations_;
@@ -149,6 +158,7 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
  private:
   void evaluate(const Vector6d& w) {
     integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip);
+    work_w_ = w, work_derivatives_ = Derivatives::Tip;
     shooting_residual(tip_, work_, residual_, jacobian_);
     w_cached_ = w;
     has_cache_ = true;
@@ -163,6 +173,8 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   Vector6d w_cached_ = Vector6d::Zero();
   Vector6d residual_ = Vector6d::Zero();
   Matrix6d jacobian_ = Matrix6d::Zero();
+  Vector6d work_w_ = Vector6d::Zero();  // where work_ was last integrated, and with what
+  Derivatives work_derivatives_ = Derivatives::None;
   bool has_cache_ = false;
   int integrations_ = 0;
   int jacobian_evaluations_ = 0;
@@ -207,11 +219,15 @@ bool chord_endgame(ShootingProblem& problem,
 }
 
 /// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame.
+/// `work_is_output`: true when `work` ends as integrate(rod, w, options.output_derivatives) (the
+/// last integration was at the last iterate, with that level), so the caller need not integrate
+/// again.
 ShootingSummary solve_direct(const ClampedRod& rod,
                              const TipCondition& tip,
                              const ShootingOptions& options,
                              RodConfiguration& work,
-                             Vector6d& w) {
+                             Vector6d& w,
+                             bool& work_is_output) {
   ShootingProblem problem(rod, tip, work);
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
   // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
@@ -287,6 +303,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     }
   }
   w = x;
+  work_is_output = problem.work_holds(w, options.output_derivatives);
   result.integrations = problem.integrations();
   result.jacobian_evaluations = problem.jacobian_evaluations();
   return result;
@@ -364,6 +381,20 @@ void continue_from_rest(const ClampedRod& rod,
   }
 }
 
+/// out = work, which holds integrate(rod, w, derivatives)'s values (ShootingProblem::work_holds):
+/// what integrate() into a fresh configuration gives, bit for bit (tip derivatives that an
+/// integration with them left in `work` are zeroed when none are asked for).
+void take_as_output(RodConfiguration& work, Derivatives derivatives, RodConfiguration& out) {
+  out = std::move(work);
+  out.derivatives = derivatives;
+  if (derivatives != Derivatives::None) return;
+  out.tip_dp_dw.setZero();
+  out.tip_dtheta_dw.setZero();
+  out.tip_dn_dw.setZero();
+  out.tip_dm_dw.setZero();
+  out.denergy_dw.setZero();
+}
+
 }  // namespace
 
 namespace {
@@ -420,13 +451,21 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
   work.resize(rod.nodes(), Derivatives::Tip);
 
   Vector6d w = guess.to_vector();
-  summary = solve_direct(rod, tip, options, work, w);
+  bool work_is_output = false;
+  summary = solve_direct(rod, tip, options, work, w, work_is_output);
 
-  if (!summary.converged() && options.continuation)
+  if (!summary.converged() && options.continuation) {
     continue_from_rest(rod, tip, options, summary, w);
+    work_is_output = false;
+  }
 
   solution.base_wrench = Wrench::from_vector(w);
-  integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
+  // The last integration is usually the output asked for (a chord step's, without derivatives):
+  // then it is the result, else one more integration makes it.
+  if (work_is_output)
+    take_as_output(work, options.output_derivatives, solution.configuration);
+  else
+    integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
   detail::confirm_converged(rod, tip, options, solution);  // finite, accurate, or a status
   return solution;
 }
