@@ -30,7 +30,8 @@ void validate_cloud(const CloudFrame& seen) {
 /// Where the fit starts when the prior's rod is far from the cloud (more than kFarStart of the
 /// points outliers of its surface, as a cold start may be; a warm start's are the cloud's own
 /// outliers): a first fit with the loss kWideScale times as wide, which follows the cloud's bulk
-/// instead of discounting it; else the prior's mean (nullopt).
+/// instead of discounting it, then one with the plain distances (no noise bias); else the prior's
+/// mean (nullopt).
 std::optional<StateHypothesis> wide_start(const ClampedRod& model,
                                           const CloudFrame& seen,
                                           double radius,
@@ -39,7 +40,8 @@ std::optional<StateHypothesis> wide_start(const ClampedRod& model,
                                           const StatePrior& prior,
                                           const EstimationOptions& options) {
   constexpr double kWideScale = 10.0, kFarStart = 0.25;
-  const feedback_detail::CloudRows wide(seen, radius, sensor, options, kWideScale * kCauchyScale);
+  const feedback_detail::CloudRows wide(seen, radius, sensor, options, kWideScale * kCauchyScale,
+                                        false);
   const RodConfiguration at_prior =
       integrate(estimated_rod(model, prior.stiffness_scale, prior.load_factor, options.gravity),
                 prior.base_wrench);
@@ -47,7 +49,14 @@ std::optional<StateHypothesis> wide_start(const ClampedRod& model,
   const StateEstimate first =
       feedback_detail::fit_state(model, wide, grasp, prior, options, std::nullopt);
   if (!first.converged() && first.status != SolveStatus::IterationLimit) return std::nullopt;
-  return StateHypothesis{first.base_wrench, first.stiffness_scale, first.load_factor};
+  // then the plain distances at the loss's own scale: near the rod, where the noise's outward
+  // bias (cloud_rows.cpp) can be weighed
+  const feedback_detail::CloudRows plain(seen, radius, sensor, options, kCauchyScale, false);
+  const StateEstimate second = feedback_detail::fit_state(
+      model, plain, grasp, prior, options, std::nullopt,
+      StateHypothesis{first.base_wrench, first.stiffness_scale, first.load_factor});
+  const StateEstimate& near = second.converged() ? second : first;
+  return StateHypothesis{near.base_wrench, near.stiffness_scale, near.load_factor};
 }
 
 }  // namespace

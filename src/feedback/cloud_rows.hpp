@@ -29,6 +29,11 @@ class PointNoise {
  public:
   PointNoise(const DepthSensorModel& sensor, double floor);
   double along(const Eigen::Vector3d& x, const Eigen::Vector3d& direction) const;
+  /// The noise's variance along the unit vector `u` of a point on a surface of normal `normal`:
+  /// uᵀΣu, Σ = σ_z² e eᵀ + σ_lat² (I - e eᵀ), e the ray (no floor).
+  double variance(const Eigen::Vector3d& x,
+                  const Eigen::Vector3d& normal,
+                  const Eigen::Vector3d& u) const;
 
  private:
   Pose camera_;
@@ -40,12 +45,15 @@ class PointNoise {
 class CloudRows final : public MeasurementBlock {
  public:
   /// The points of `seen` (which must outlive the rows) against the tube of `radius` about the
-  /// centreline, with the Cauchy loss of scale `scale` (in σ).
+  /// centreline, with the Cauchy loss of scale `scale` (in σ); `noise_bias` false: the plain
+  /// distance |x - Γ| - ρ at the normal's σ (the wide first fit of a far start, whose directions
+  /// to a wrong centreline make the bias's estimate meaningless).
   CloudRows(const CloudFrame& seen,
             double radius,
             const DepthSensorModel& sensor,
             const EstimationOptions& options,
-            double scale = kCauchyScale);
+            double scale = kCauchyScale,
+            bool noise_bias = true);
   /// The fraction of the points that are outliers (Cauchy weight below kOutlierWeight) at
   /// `configuration`.
   double outlier_fraction(const RodConfiguration& configuration) const;
@@ -69,6 +77,7 @@ class CloudRows final : public MeasurementBlock {
   double radius_;
   PointNoise noise_;
   double scale_;
+  bool noise_bias_;
 };
 
 }  // namespace rodshape::feedback_detail

@@ -73,14 +73,15 @@ TEST(CloudEstimator, RecoversTheCentrelineFromAKinectLikeCloudWithOcclusionAndOu
 
 TEST(CloudEstimator, ANoiseFreeCloudGivesTheCentrelineMuchCloser) {
   const RodConfiguration truth = integrate(band(), kTrue);
-  const DepthSensorModel sensor;
+  DepthSensorModel sensor;  // a perfect camera: no noise, so no outward bias to correct
+  sensor.noise = {0.0, 0.0, 0.0, 0.0, 0.0};
   const CloudRecipe recipe{500, 0.35, 0.65, 0.0, false, 3};
   const CloudFrame cloud = surface_cloud(truth, kRadius, sensor, recipe);
   const StateEstimate e = estimate_band(cloud, sensor);
   ASSERT_TRUE(e.converged()) << e.message;
-  // Every point is weighed at the sensor's σ (1–2 mm), not at zero: what is left is the pull of
-  // the weak prior and of the tip's prior 2 mm off (measured 0.03–0.04 mm), far below the noisy
-  // case's 0.15–0.4 mm.
+  // Every point is weighed at the floor EstimationOptions::min_cloud_sigma (0.2 mm), not at zero:
+  // what is left is the pull of the weak prior and of the tip's prior 2 mm off, far below the
+  // noisy case's 0.15–0.4 mm.
   EXPECT_LT(centreline_rms(e.configuration, truth), 1e-4);
   EXPECT_EQ(e.outliers, 0);
   EXPECT_LT(e.residual, 0.05);

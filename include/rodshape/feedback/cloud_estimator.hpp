@@ -2,7 +2,10 @@
 // unknowns as estimate_state (state_estimator.hpp: the base wrench w, optionally the stiffness
 // scale and the weight's factor λ, the held tip within its prior, the wrist wrench, a weak prior)
 // with the markers' rows replaced by one point-to-surface row per cloud point x_k:
-//   d_k(w) = |x_k - Γ(s_k; w)| - ρ,  s_k = argmin_s |x_k - Γ(s; w)|,
+//   d_k(w) = |x_k - Γ(s_k; w)| - √(ρ² + v_t),  s_k = argmin_s |x_k - Γ(s; w)|,
+// v_t the point's noise variance along the section's circle (across the normal: it moves a point
+// away from the axis by v_t/(2ρ) on average, most where the ray grazes the tube; zero noise: the
+// plain distance to the tube; src/feedback/cloud_rows.cpp),
 // Γ the model's centreline (cubic Hermite between nodes, optimisation/curve_distance.hpp), s_k
 // found by a k-d tree (nanoflann) over the nodes, then on the intervals next to the nearest one,
 // and ρ the section's circumscribed radius: the rod's surface as the library knows it (the tube
@@ -10,7 +13,7 @@
 // measured to the end node, the capsule's cap). Each d_k is divided by the point's noise along
 // n_k = (x_k - Γ)/|x_k - Γ|, the surface's normal (cloud_measurement.hpp's model: axial σ_z(z, θ)
 // along the camera's ray e, θ its angle to n_k; lateral σ = px z / f across it):
-//   σ_k² = σ_z² (n_k·e)² + σ_lat² (1 - (n_k·e)²),  σ_k ≥ EstimationOptions::min_cloud_sigma,
+//   σ_k² = σ_z² (n_k·e)² + σ_lat² (1 - (n_k·e)²) + v_t²/(2ρ²),  σ_k ≥ min_cloud_sigma,
 // and passed through the Cauchy loss ρ_c(z) = (c²/2) log(1 + z²/c²), c = kCauchyScale (in σ),
 // as the row r_k = sign(z_k) √(2 ρ_c(z_k)) (Σ r_k² = 2 Σ ρ_c; r ≈ z near 0): a point 10 σ away
 // weighs 1/18 of an inlier in the fit, so outliers do not drag it. Derivatives: dd_k/dw =
