@@ -13,7 +13,7 @@ namespace rodshape::feedback_detail {
 namespace {
 
 /// One point's distance to the model's surface and its σ along the surface's normal n:
-///   d = |x - Γ(s)| - √(ρ² + v_t),
+///   d = |x - Γ(s)| - √(ρ² + v_t)  (√(ρ² + v_t) and σ frozen where the fit starts: PointWeight),
 /// v_t the noise's variance along the section's circle (t_c = T × n, T the centreline's chord
 /// there). A point on the surface moved by ε_n along n and ε_t along t_c lies
 /// √((ρ + ε_n)² + ε_t²) ≈ ρ + ε_n + ε_t²/(2ρ) from the axis: the noise across the normal pushes
@@ -30,29 +30,33 @@ struct SurfaceDistance {
   CurveProjection projection;
 };
 
-SurfaceDistance surface_distance(double radius,
-                                 const PointNoise& noise,
-                                 bool noise_bias,
-                                 const RodConfiguration& configuration,
-                                 const CentrelineIndex& index,
-                                 const Eigen::Vector3d& x) {
+/// The projection of x on the centreline and the direction from it (the surface's normal).
+SurfaceDistance project(const CentrelineIndex& index, const Eigen::Vector3d& x) {
   SurfaceDistance out;
   out.projection = index.project(x);
   const CurveProjection& p = out.projection;
   if (p.distance > 0.0) out.direction = (x - p.closest) / p.distance;
-  const std::size_t i = static_cast<std::size_t>(p.interval);
-  const Eigen::Vector3d chord = configuration.p[std::min(i + 1, configuration.p.size() - 1)] -
-                                configuration.p[std::min(i, configuration.p.size() - 1)];
-  const Eigen::Vector3d around = chord.cross(out.direction);
-  const double v_t = noise_bias && around.norm() > 0.0
-                         ? noise.variance(x, out.direction, around.normalized())
-                         : 0.0;
-  out.d = p.distance - std::sqrt(radius * radius + v_t);
-  // σ of d: the normal noise's, and the spread of ε_t²/(2ρ) (Var ε² = 2 v_t²): v_t²/(2ρ²)
-  const double sigma_n = noise.along(x, out.direction);
-  out.sigma =
-      radius > 0.0 ? std::sqrt(sigma_n * sigma_n + v_t * v_t / (2.0 * radius * radius)) : sigma_n;
   return out;
+}
+
+/// x's √(ρ² + v_t) and σ at the projection `s` on `configuration`.
+PointWeight weigh(double radius,
+                  const PointNoise& noise,
+                  bool noise_bias,
+                  const RodConfiguration& configuration,
+                  const SurfaceDistance& s,
+                  const Eigen::Vector3d& x) {
+  const std::size_t last = configuration.p.size() - 1;
+  const std::size_t i = std::min(static_cast<std::size_t>(s.projection.interval), last);
+  const Eigen::Vector3d chord = configuration.p[std::min(i + 1, last)] - configuration.p[i];
+  const Eigen::Vector3d around = chord.cross(s.direction);
+  const double v_t =
+      noise_bias && around.norm() > 0.0 ? noise.variance(x, s.direction, around.normalized()) : 0.0;
+  // σ of d: the normal noise's, and the spread of ε_t²/(2ρ) (Var ε² = 2 v_t²): v_t²/(2ρ²)
+  const double sigma_n = noise.along(x, s.direction);
+  return {
+      std::sqrt(radius * radius + v_t),
+      radius > 0.0 ? std::sqrt(sigma_n * sigma_n + v_t * v_t / (2.0 * radius * radius)) : sigma_n};
 }
 
 }  // namespace
@@ -108,20 +112,29 @@ CloudRows::CloudRows(const CloudFrame& seen,
       scale_(scale),
       noise_bias_(noise_bias) {}
 
+void CloudRows::freeze(const RodConfiguration& configuration) const {
+  if (!weights_.empty()) return;
+  const CentrelineIndex index(configuration);
+  weights_.reserve(points_.size());
+  for (const Eigen::Vector3d& x : points_)
+    weights_.push_back(weigh(radius_, noise_, noise_bias_, configuration, project(index, x), x));
+}
+
 void CloudRows::evaluate(const ClampedRod& rod,
                          const RodConfiguration& configuration,
                          Eigen::VectorXd& r,
                          Eigen::MatrixXd* J,
                          int row) const {
+  freeze(configuration);
   const CentrelineIndex index(configuration);
-  for (const Eigen::Vector3d& x : points_) {
-    const SurfaceDistance s =
-        surface_distance(radius_, noise_, noise_bias_, configuration, index, x);
-    const CauchyRow row_of = cauchy_row(s.d / s.sigma, scale_);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const SurfaceDistance s = project(index, points_[k]);
+    const PointWeight& w = weights_[k];
+    const CauchyRow row_of = cauchy_row((s.projection.distance - w.offset) / w.sigma, scale_);
     r(row) = row_of.value;
-    if (J)  // dd/dw = -n̂ᵀ dΓ(s_k)/dw (envelope), σ and √(ρ² + v_t) held
-      J->block<1, 6>(row, 0) =
-          (row_of.slope / s.sigma) * distance_gradient(rod, configuration, s.projection, x);
+    if (J)  // dd/dw = -n̂ᵀ dΓ(s_k)/dw (envelope), σ and √(ρ² + v_t) frozen
+      J->block<1, 6>(row, 0) = (row_of.slope / w.sigma) *
+                               distance_gradient(rod, configuration, s.projection, points_[k]);
     ++row;
   }
 }
@@ -130,10 +143,12 @@ std::vector<double> CloudRows::weighted_distances(const RodConfiguration& config
   const CentrelineIndex index(configuration);
   std::vector<double> z;
   z.reserve(points_.size());
-  for (const Eigen::Vector3d& x : points_) {
-    const SurfaceDistance s =
-        surface_distance(radius_, noise_, noise_bias_, configuration, index, x);
-    z.push_back(s.d / s.sigma);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    const SurfaceDistance s = project(index, points_[k]);
+    const PointWeight w = weights_.empty()
+                              ? weigh(radius_, noise_, noise_bias_, configuration, s, points_[k])
+                              : weights_[k];
+    z.push_back((s.projection.distance - w.offset) / w.sigma);
   }
   return z;
 }

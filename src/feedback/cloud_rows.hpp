@@ -41,7 +41,15 @@ class PointNoise {
   double min_range_, max_range_, focal_, floor_;
 };
 
-/// One row per cloud point: the Cauchy row of z_k = d_k / σ_k.
+/// A point's offset √(ρ² + v_t) from the axis and σ (cloud_rows.cpp).
+struct PointWeight {
+  double offset = 0.0, sigma = 0.0;
+};
+
+/// One row per cloud point: the Cauchy row of z_k = d_k / σ_k, d_k = |x_k - Γ| - √(ρ² + v_t,k);
+/// each point's √(ρ² + v_t) and σ_k are frozen at the first configuration evaluated (the fit's
+/// start: the previous estimate, or a far start's plain fits), so the fit is a fixed weighted
+/// least squares and its Jacobian exact.
 class CloudRows final : public MeasurementBlock {
  public:
   /// The points of `seen` (which must outlive the rows) against the tube of `radius` about the
@@ -73,11 +81,14 @@ class CloudRows final : public MeasurementBlock {
   std::vector<double> weighted_distances(const RodConfiguration& configuration) const;
 
  private:
+  void freeze(const RodConfiguration& configuration) const;
+
   const std::vector<Eigen::Vector3d>& points_;
   double radius_;
   PointNoise noise_;
   double scale_;
   bool noise_bias_;
+  mutable std::vector<PointWeight> weights_;  // frozen at the first evaluate()
 };
 
 }  // namespace rodshape::feedback_detail

@@ -18,9 +18,9 @@
 // as the row r_k = sign(z_k) √(2 ρ_c(z_k)) (Σ r_k² = 2 Σ ρ_c; r ≈ z near 0): a point 10 σ away
 // weighs 1/18 of an inlier in the fit, so outliers do not drag it. Derivatives: dd_k/dw =
 // -n_kᵀ dΓ(s_k)/dw exactly (the envelope argument: s_k is a minimiser; the integrator's node
-// sensitivities), times the loss' slope over σ_k. σ_k is re-evaluated at every residual but held
-// in the Jacobian (it changes with the fit only through the direction n_k; with the floor or
-// equal axial and lateral noise the Jacobian is exact, and tests/feedback/test_cloud_estimator.cpp
+// sensitivities), times the loss' slope over σ_k. Each point's √(ρ² + v_t) and σ_k are frozen
+// at the fit's start (the previous estimate, or a far start's plain fits): the fit is then a
+// fixed weighted least squares, its Jacobian exact (tests/feedback/test_cloud_estimator.cpp
 // checks it against finite differences). A start far from the cloud (more than a quarter of the
 // points outliers of its surface) is first fitted with the loss ten times as wide, which follows
 // the cloud's bulk; the fit proper starts where that one ends.
