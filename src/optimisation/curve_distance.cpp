@@ -144,6 +144,28 @@ CurveProjection nearest_node(const RodConfiguration& c, const Eigen::Vector3d& p
   return result;
 }
 
+/// `result` replaced by the nearest point of interval i when that is nearer.
+void closer_on_segment(const RodConfiguration& c,
+                       int i,
+                       const Eigen::Vector3d& point,
+                       CurveProjection& result) {
+  const HermiteSegment H = segment_of(c, i);
+  const LocalMinimum local = minimise_on_segment(H, point);
+  const double d = std::sqrt(local.squared);
+  if (d < result.distance) {
+    result.distance = d;
+    result.interval = i;
+    result.t = local.t;
+    result.closest = H.value(local.t);
+  }
+}
+
+/// s of the projection from its interval and t.
+void set_arc_length(const RodConfiguration& c, CurveProjection& result) {
+  const int i = result.interval;
+  result.s = c.s[i] + result.t * (c.s[i + 1] - c.s[i]);
+}
+
 /// Every interval whose ball (from `ball_at`) comes closer than the best distance so far is
 /// searched.
 template <typename BallAt>
@@ -153,18 +175,9 @@ CurveProjection project(const RodConfiguration& c, const Eigen::Vector3d& point,
   if (intervals < 1) return result;
   for (int i = 0; i < intervals; ++i) {
     if (distance_lower_bound(ball_at(i), point) >= result.distance) continue;
-    const HermiteSegment H = segment_of(c, i);
-    const LocalMinimum local = minimise_on_segment(H, point);
-    const double d = std::sqrt(local.squared);
-    if (d < result.distance) {
-      result.distance = d;
-      result.interval = i;
-      result.t = local.t;
-      result.closest = H.value(local.t);
-    }
+    closer_on_segment(c, i, point, result);
   }
-  const int i = result.interval;
-  result.s = c.s[i] + result.t * (c.s[i + 1] - c.s[i]);
+  set_arc_length(c, result);
   return result;
 }
 
@@ -195,19 +208,9 @@ CurveProjection project_near_node(const RodConfiguration& configuration,
   if (intervals < 1) return result;
   result.interval = std::min(node, intervals - 1);
   result.t = node > result.interval ? 1.0 : 0.0;
-  for (int i = std::max(node - 1, 0); i <= std::min(node, intervals - 1); ++i) {
-    const HermiteSegment H = segment_of(c, i);
-    const LocalMinimum local = minimise_on_segment(H, point);
-    const double d = std::sqrt(local.squared);
-    if (d < result.distance) {
-      result.distance = d;
-      result.interval = i;
-      result.t = local.t;
-      result.closest = H.value(local.t);
-    }
-  }
-  const int i = result.interval;
-  result.s = c.s[i] + result.t * (c.s[i + 1] - c.s[i]);
+  for (int i = std::max(node - 1, 0); i <= std::min(node, intervals - 1); ++i)
+    closer_on_segment(c, i, point, result);
+  set_arc_length(c, result);
   return result;
 }
 

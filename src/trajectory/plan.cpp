@@ -514,15 +514,6 @@ PlanResult plan_by_sets(const PlanProblem& problem,
 
 namespace {
 
-/// The tracked peak energy over the larger end energy (NaN without steps or tracking).
-double peak_ratio(const PlanResult& plan) {
-  const bool reached = plan.status != PlanStatus::Partial && plan.status != PlanStatus::Infeasible;
-  if (!reached || plan.steps.empty() || !plan.tracking.performed) return std::nan("");
-  const double larger =
-      std::max(plan.initial_configuration.energy, plan.steps.back().solution.configuration.energy);
-  return larger > 0.0 ? plan.tracking.peak_energy / larger : std::nan("");
-}
-
 /// Why a complete plan of another scheme does not replace the Shape plan.
 std::string farther_than(const PlanResult& plan, double reach) {
   return "its last step is farther from the target than allowed (" +
@@ -532,7 +523,7 @@ std::string farther_than(const PlanResult& plan, double reach) {
 
 /// Complete with a tracked peak within kGentleRatio × the larger end energy.
 bool gentle_peak(const PlanResult& plan) {
-  return plan.complete() && !(peak_ratio(plan) > PlanOptions::kGentleRatio);
+  return plan.complete() && !(plan_stages::peak_ratio(plan) > PlanOptions::kGentleRatio);
 }
 
 /// Gentle enough that Auto tries nothing else.
@@ -677,7 +668,7 @@ PlanResult plan_by_search(const PlanProblem& problem,
 }
 
 InterpolationTrial trial(const PlanResult& plan, ObjectiveInterpolation scheme) {
-  return {scheme, plan.status, peak_ratio(plan), plan.complete() ? "" : plan.message};
+  return {scheme, plan.status, plan_stages::peak_ratio(plan), plan.complete() ? "" : plan.message};
 }
 
 /// Auto: Shape, and when it is not gentle, Pose and Projection, and when none of them is within
@@ -708,7 +699,8 @@ PlanResult gentlest_plan(const PlanProblem& problem,
         continue;
       }
       const bool better =
-          others[k].complete() && (!best.complete() || peak_ratio(others[k]) < peak_ratio(best));
+          others[k].complete() &&
+          (!best.complete() || plan_stages::peak_ratio(others[k]) < plan_stages::peak_ratio(best));
       if (better) best = std::move(others[k]);
     }
     if (!gentle_peak(best)) {  // none gentle: a path searched for within the ratio, to the
@@ -718,7 +710,8 @@ PlanResult gentlest_plan(const PlanProblem& problem,
       tried.push_back(trial(searched, ObjectiveInterpolation::Search));
       if (searched.complete() && !(searched.steps.back().solution.cost.max_distance <= reach))
         tried.back().note = farther_than(searched, reach);
-      else if (searched.complete() && (!best.complete() || peak_ratio(searched) < peak_ratio(best)))
+      else if (searched.complete() && (!best.complete() || plan_stages::peak_ratio(searched) <
+                                                               plan_stages::peak_ratio(best)))
         best = std::move(searched);
     }
     for (InterpolationTrial& t : tried)

@@ -321,6 +321,14 @@ bool follows_timed_path(const PlanProblem& problem, const PlanResult& result) {
   return true;
 }
 
+double peak_ratio(const PlanResult& plan) {
+  const bool reached = plan.status != PlanStatus::Partial && plan.status != PlanStatus::Infeasible;
+  if (!reached || plan.steps.empty() || !plan.tracking.performed) return std::nan("");
+  const double larger =
+      std::max(plan.initial_configuration.energy, plan.steps.back().solution.configuration.energy);
+  return larger > 0.0 ? plan.tracking.peak_energy / larger : std::nan("");
+}
+
 double reached_within(const PlanResult& shape, const PlanProblem& problem) {
   const double length = problem.rod.properties.length;
   const bool reached =

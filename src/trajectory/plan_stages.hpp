@@ -139,6 +139,10 @@ bool follows_timed_path(const PlanProblem& problem, const PlanResult& result);
 /// and at least kNearTarget of the rod's length (a gentle path may end on the same points' optimum
 /// on another branch, a little farther); when `shape` did not reach the target, 1 % of the rod's
 /// length (an optimum 10 cm off a point is no plan for it).
+/// The tracked peak energy over the larger of the initial and final energies (NaN when the plan
+/// did not reach the target, or was not tracked).
+double peak_ratio(const PlanResult& plan);
+
 inline constexpr double kNearTarget = 0.0025;
 double reached_within(const PlanResult& shape, const PlanProblem& problem);
 

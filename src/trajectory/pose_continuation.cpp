@@ -273,13 +273,6 @@ std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
   return result;
 }
 
-/// The tracked peak energy over the larger end energy.
-double peak_ratio(const PlanResult& result) {
-  const double larger = std::max(result.initial_configuration.energy,
-                                 result.steps.back().solution.configuration.energy);
-  return larger > 0.0 ? result.tracking.peak_energy / larger : 0.0;
-}
-
 }  // namespace
 
 std::optional<PlanResult> plan(const PlanProblem& problem,
@@ -304,8 +297,9 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     }
     if (twist == 0.0) refusal = why;  // the straight path's refusal speaks for all
     if (!tried) continue;
-    if (!best || peak_ratio(*tried) < peak_ratio(*best)) best = std::move(tried);
-    if (peak_ratio(*best) <= PlanOptions::kGentleRatio) break;
+    if (!best || plan_stages::peak_ratio(*tried) < plan_stages::peak_ratio(*best))
+      best = std::move(tried);
+    if (plan_stages::peak_ratio(*best) <= PlanOptions::kGentleRatio) break;
   }
   return best;
 }
