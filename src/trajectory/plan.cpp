@@ -28,6 +28,7 @@ void PlanOptions::validate() const {
                         kMaxTrackingSubsteps);
   optimiser.validate();
   end_effector.validate();
+  base_end_effector.validate();
   arm.validate();
   detail::require_non_negative("PlanOptions.scene_margin", scene_margin);
   if (scene_margin > kMaxSceneMargin)
@@ -52,6 +53,22 @@ void PlanProblem::validate() const {
   }
   scene.validate();
   scene.check_clamp(rod.clamp.position);
+  if (moving_base) moving_base->validate();
+  if (base_arm && !moving_base)
+    throw InputError("PlanProblem.base_arm",
+                     " needs PlanProblem.moving_base (the arm moves the base)");
+}
+
+void MovingBase::validate() const {
+  workspace.validate();
+  detail::require_non_negative("PlanProblem.moving_base.motion_weight", motion_weight);
+  detail::require_pose("PlanProblem.moving_base.grasp.tip_to_end_effector",
+                       grasp.tip_to_end_effector);
+  for (int i = 0; i < 6; ++i)
+    if (std::isnan(wrench_bounds.lower[i]) || std::isnan(wrench_bounds.upper[i]) ||
+        wrench_bounds.lower[i] > wrench_bounds.upper[i])
+      throw InputError("PlanProblem.moving_base.wrench_bounds",
+                       ": component " + std::to_string(i) + " has lower > upper or NaN");
 }
 
 std::string to_string(ObjectiveInterpolation interpolation) {

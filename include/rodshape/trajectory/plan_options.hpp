@@ -91,6 +91,9 @@ struct PlanOptions {
   static constexpr double kGentleRatio = 1.1;
   ShapeOptimiserOptions optimiser;
   EndEffectorLimits end_effector;
+  /// With a moving base: the base gripper's speed and acceleration limits. The two grippers move
+  /// on one clock: each segment takes the longer of the two ends' times.
+  EndEffectorLimits base_end_effector;
   bool track_between_waypoints = true;
   int tracking_substeps = 10;  // continuation steps from one waypoint to the next (≤ kMax…)
   /// Where the tracked rod does not arrive on the planned shape (a jump), a step is inserted

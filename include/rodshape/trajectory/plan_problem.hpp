@@ -48,6 +48,28 @@ struct PlanArm {
   ArmPlacement placement;  // world_T_base, flange_T_ee
 };
 
+/// The base end (s = 0) held by a gripper that moves (issue 21), not a fixed clamp. Each step then
+/// optimises the base pose too: its variables are the base wrench in the base's frame,
+/// w_b = (R(0)ᵀ n(0), R(0)ᵀ m(0)), and the base pose, ξ = (δt, δφ) about the last step's
+/// (p(0) + δt, exp([δφ]×) R(0)): 12 in all. The rod's `clamp` is the base's initial pose.
+struct MovingBase {
+  /// The components of the base wrench, in the base's frame R(0), that the base gripper cannot
+  /// transmit (order force x, y, z, moment x, y, z: those of w_b held at 0), and base_T_ee in
+  /// `tip_to_end_effector`: the base gripper's pose is world_T_base · base_T_ee.
+  Grasp grasp;
+  /// Bounds on w_b (the base gripper's wrench, base frame); infinite: WrenchBounds::from_scale.
+  WrenchBounds wrench_bounds;
+  /// Where the base may go: the set p(0) must stay in (a reach shell bounds the point
+  /// p(0) + R(0) t, the base arm's wrist).
+  Workspace workspace;
+  /// W_b of the energy-free term W_b (|δt|² + L² |δφ|²) / L² that each step adds to the cost: the
+  /// least motion of the base from the step before, which makes a target that fixes the rod only
+  /// up to a rigid motion unique (≥ 0; relative to W2, see shape_problem.hpp).
+  double motion_weight = 1e-3;
+  /// Throws InputError naming "PlanProblem.moving_base.<field>".
+  void validate() const;
+};
+
 struct PlanProblem {
   /// Upper bound on rod.intervals for a plan (docs/limits.md, "Sizes"): every step optimises and
   /// tracks the whole rod many times, linear in the intervals; the bundled plans take 2.5–5 s with
@@ -65,7 +87,13 @@ struct PlanProblem {
   InitialState initial;
   /// The cell's obstacles, kept clear of by every step and between steps (empty: none).
   Scene scene;
-  std::optional<PlanArm> arm;
+  std::optional<PlanArm> arm;  // the arm that holds the tip (s = L)
+  /// The base end held by a moving gripper (absent: a fixed clamp at rod.clamp).
+  std::optional<MovingBase> moving_base;
+  /// The arm that holds the base end (implies moving_base; its reach shell joins
+  /// moving_base.workspace, its IK is checked at every pose of the base's path).
+  std::optional<PlanArm> base_arm;
+  bool base_moves() const { return moving_base.has_value(); }
   /// Throws InputError naming the field (rod, target, workspace, limits, wrench bounds, scene;
   /// "PlanProblem.rod.intervals" above kMaxIntervals; the clamp inside an obstacle).
   void validate() const;

@@ -41,6 +41,9 @@ struct PlanStep {
   PointSet objective_points;
   ShapeResult solution;  // the optimal shape of this step (configuration, cost, stability, IPOPT)
   Pose end_effector;     // world_T_tip · tip_T_ee
+  /// The base gripper's pose: world_T_base · base_T_ee (MovingBase::grasp); with a fixed clamp,
+  /// the clamp's pose, the same at every step.
+  Pose base_end_effector;
 };
 
 /// The equilibrium tracked along the commanded path between waypoints, against the plan.
@@ -172,10 +175,14 @@ struct PlanResult {
   PointSet initial_points;      // p_init: the objective points projected on the initial shape
   std::vector<PlanStep> steps;  // the steps that succeeded
   std::vector<TimedPose> end_effector_path;
+  /// With a moving base: the base gripper's path on the same clock (the same times as
+  /// end_effector_path, sample for sample); empty with a fixed clamp.
+  std::vector<TimedPose> base_end_effector_path;
   TrackingResult tracking;
   InterpolationResult interpolation;
-  std::optional<SceneResult> scene;  // when the problem has a scene
-  std::optional<ArmPlanResult> arm;  // when the problem has an arm
+  std::optional<SceneResult> scene;       // when the problem has a scene
+  std::optional<ArmPlanResult> arm;       // when the problem has an arm
+  std::optional<ArmPlanResult> base_arm;  // when the problem has a base arm (PlanProblem::base_arm)
 
   bool complete() const { return status == PlanStatus::Complete; }
   /// One line: "complete plan, 7 steps (7 requested), final max distance 0.37 mm, energy 0.25 J"
