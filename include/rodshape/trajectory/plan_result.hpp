@@ -43,7 +43,7 @@ struct PlanStep {
   Pose end_effector;     // world_T_tip · tip_T_ee
   /// The base gripper's pose: world_T_base · base_T_ee (MovingBase::grasp); with a fixed clamp,
   /// the clamp's pose, the same at every step.
-  Pose base_end_effector;
+  Pose base_end_effector = {};
 };
 
 /// The equilibrium tracked along the commanded path between waypoints, against the plan.
