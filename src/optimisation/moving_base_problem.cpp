@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "optimisation/blocks/constraint_blocks.hpp"
-#include "optimisation/base_pose_tangent.hpp"
+#include "rodshape/core/base_pose_derivatives.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
@@ -111,7 +111,7 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   set_clamp(x);
   const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
   integrate(rod_, world_wrench(x), configuration_, Derivatives::AllNodes);
-  detail::base_pose_tangent(rod_, configuration_, pose_tangent_);
+  base_pose_derivatives(rod_, configuration_, pose_tangent_);
   evaluate_cost();  // F, ∇_w F (world wrench), the projections
   evaluate_moving_constraints();
   const double L = rod_.properties.length;

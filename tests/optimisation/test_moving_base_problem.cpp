@@ -20,9 +20,12 @@ namespace {
 
 using testing::CompareMatrices;
 
-ClampedRod tilted_band(ConstitutiveModel model, int intervals = 20) {
+ClampedRod tilted_band(ConstitutiveModel model, int intervals = 20, bool gravity = true) {
   ClampedRod rod = testing::rubber_band(model, intervals);
   rod.properties.u_rest = Eigen::Vector3d(0.5, -0.3, 1.0);
+  if (gravity)
+    rod.load =
+        DistributedLoad::gravity(testing::kBandMassPerLength, Eigen::Vector3d(0.0, -9.81, 0.0));
   rod.clamp.position = Eigen::Vector3d(0.1, 0.2, 0.3);
   rod.clamp.rotation = exp_so3(Eigen::Vector3d(0.2, -0.5, 0.3));
   rod.validate();
