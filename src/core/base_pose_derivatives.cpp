@@ -9,44 +9,41 @@ namespace rodshape {
 
 namespace {
 
-/// [I | -[r]× + D] (with_translation) or [0 | B + D].
-Matrix36d pose_columns(const Eigen::Matrix3d& rotation_block,
-                       const Eigen::Matrix3d& load_block,
-                       bool with_translation) {
-  Matrix36d d;
-  if (with_translation) {
-    d.leftCols<3>().setIdentity();
-  } else {
-    d.leftCols<3>().setZero();
+/// Replaces a point's load derivatives d = [dx/df | dx/dl] (3 × 6, column-major) by its clamp-pose
+/// derivatives [translation·I | rigid + dx/df [f]× + dx/dl [l]×], `rigid` column-major. [f]× is
+/// spelled out: column k of dx/df [f]× is dx/df (f × e_k), with f × e_0 = (0, f2, -f1),
+/// f × e_1 = (-f2, 0, f0), f × e_2 = (f1, -f0, 0). Without a load (loaded = false) d is not read.
+/// Plain scalars: Eigen's 3 × 3 temporaries cost several times this (store-forwarding stalls).
+inline void to_pose_columns(bool translation,
+                            const double (&rigid)[9],
+                            const Eigen::Vector3d& f,
+                            const Eigen::Vector3d& l,
+                            bool loaded,
+                            Matrix36d& derivative) {
+  double* const d = derivative.data();
+  double turn[9];
+  for (int r = 0; r < 3; ++r) {
+    double t0 = rigid[r], t1 = rigid[r + 3], t2 = rigid[r + 6];
+    if (loaded) {
+      const double F0 = d[r], F1 = d[r + 3], F2 = d[r + 6];
+      const double L0 = d[r + 9], L1 = d[r + 12], L2 = d[r + 15];
+      t0 += f[2] * F1 - f[1] * F2 + l[2] * L1 - l[1] * L2;
+      t1 += f[0] * F2 - f[2] * F0 + l[0] * L2 - l[2] * L0;
+      t2 += f[1] * F0 - f[0] * F1 + l[1] * L0 - l[0] * L1;
+    }
+    turn[r] = t0, turn[r + 3] = t1, turn[r + 6] = t2;
   }
-  d.rightCols<3>() = rotation_block + load_block;
-  return d;
+  const double one = translation ? 1.0 : 0.0;
+  for (int k = 0; k < 9; ++k) d[k] = 0.0;
+  d[0] = d[4] = d[8] = one;
+  for (int k = 0; k < 9; ++k) d[9 + k] = turn[k];
 }
 
-/// D = dx/df [f]× + dx/dl [l]× from the load derivatives (columns 0–2 f, 3–5 l).
-Eigen::Matrix3d load_turn(const Matrix36d& d_load,
-                          const Eigen::Matrix3d& f_hat,
-                          const Eigen::Matrix3d& l_hat) {
-  return d_load.leftCols<3>() * f_hat + d_load.rightCols<3>() * l_hat;
-}
-
-/// Replaces the load derivatives of one point (p, θ, n, m: `d_*`) by the clamp-pose derivatives.
-void to_pose_derivatives(const Eigen::Vector3d& p_rel,
-                         const Eigen::Matrix3d& R,
-                         const Eigen::Vector3d& n,
-                         const Eigen::Vector3d& m,
-                         const Eigen::Matrix3d& f_hat,
-                         const Eigen::Matrix3d& l_hat,
-                         bool loaded,
-                         Matrix36d& dp,
-                         Matrix36d& dtheta,
-                         Matrix36d& dn,
-                         Matrix36d& dm) {
-  const Eigen::Matrix3d zero = Eigen::Matrix3d::Zero();
-  dp = pose_columns(-hat(p_rel), loaded ? load_turn(dp, f_hat, l_hat) : zero, true);
-  dtheta = pose_columns(R.transpose(), loaded ? load_turn(dtheta, f_hat, l_hat) : zero, false);
-  dn = pose_columns(-hat(n), loaded ? load_turn(dn, f_hat, l_hat) : zero, false);
-  dm = pose_columns(-hat(m), loaded ? load_turn(dm, f_hat, l_hat) : zero, false);
+/// -[a]×, column-major: the rigid part δφ × a = -[a]× δφ.
+inline void minus_hat(const Eigen::Vector3d& a, double (&out)[9]) {
+  out[0] = 0.0, out[1] = -a[2], out[2] = a[1];
+  out[3] = a[2], out[4] = 0.0, out[5] = -a[0];
+  out[6] = -a[1], out[7] = a[0], out[8] = 0.0;
 }
 
 }  // namespace
@@ -58,7 +55,7 @@ void base_pose_derivatives(const ClampedRod& rod,
   assert(c.nodes() == rod.nodes());
   const Eigen::Vector3d& f = rod.load.force;
   const Eigen::Vector3d& l = rod.load.moment;
-  const bool loaded = !f.isZero(0.0) || !l.isZero(0.0);
+  const bool loaded = f != Eigen::Vector3d::Zero() || l != Eigen::Vector3d::Zero();
   if (loaded) {
     // The derivatives with respect to (f, l) into out's derivative arrays (and its state, which
     // c's replaces below).
@@ -76,21 +73,33 @@ void base_pose_derivatives(const ClampedRod& rod,
   out.u = c.u;
   out.energy = c.energy;
 
-  const Eigen::Matrix3d f_hat = hat(f);
-  const Eigen::Matrix3d l_hat = hat(l);
   const Eigen::Vector3d& p0 = rod.clamp.position;
-  for (int i = 0; i < out.nodes(); ++i)
-    to_pose_derivatives(out.p[i] - p0, out.R[i], out.n[i], out.m[i], f_hat, l_hat, loaded,
-                        out.dp_dw[i], out.dtheta_dw[i], out.dn_dw[i], out.dm_dw[i]);
-  const int tip = out.nodes() - 1;
-  to_pose_derivatives(out.p[tip] - p0, out.R[tip], out.n[tip], out.m[tip], f_hat, l_hat, loaded,
-                      out.tip_dp_dw, out.tip_dtheta_dw, out.tip_dn_dw, out.tip_dm_dw);
-  Eigen::Matrix<double, 1, 6> denergy = Eigen::Matrix<double, 1, 6>::Zero();
-  if (loaded) {
-    denergy.rightCols<3>() =
-        out.denergy_dw.leftCols<3>() * f_hat + out.denergy_dw.rightCols<3>() * l_hat;
+  const int nodes = out.nodes();
+  for (int i = 0; i < nodes; ++i) {
+    double rigid[9];
+    minus_hat(out.p[i] - p0, rigid);
+    to_pose_columns(true, rigid, f, l, loaded, out.dp_dw[i]);
+    const double* const R = out.R[i].data();  // Rᵀ, column-major
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) rigid[r + 3 * k] = R[k + 3 * r];
+    to_pose_columns(false, rigid, f, l, loaded, out.dtheta_dw[i]);
+    minus_hat(out.n[i], rigid);
+    to_pose_columns(false, rigid, f, l, loaded, out.dn_dw[i]);
+    minus_hat(out.m[i], rigid);
+    to_pose_columns(false, rigid, f, l, loaded, out.dm_dw[i]);
   }
-  out.denergy_dw = denergy;
+  out.tip_dp_dw = out.dp_dw[nodes - 1];
+  out.tip_dtheta_dw = out.dtheta_dw[nodes - 1];
+  out.tip_dn_dw = out.dn_dw[nodes - 1];
+  out.tip_dm_dw = out.dm_dw[nodes - 1];
+  // dE/dξ = [0 | dE/df [f]× + dE/dl [l]×]
+  const Eigen::Matrix<double, 1, 6> dE = out.denergy_dw;
+  out.denergy_dw.setZero();
+  if (loaded) {
+    out.denergy_dw(3) = f[2] * dE(1) - f[1] * dE(2) + l[2] * dE(4) - l[1] * dE(5);
+    out.denergy_dw(4) = f[0] * dE(2) - f[2] * dE(0) + l[0] * dE(5) - l[2] * dE(3);
+    out.denergy_dw(5) = f[1] * dE(0) - f[0] * dE(1) + l[1] * dE(3) - l[0] * dE(4);
+  }
 }
 
 RodConfiguration base_pose_derivatives(const ClampedRod& rod, const RodConfiguration& c) {

@@ -322,5 +322,23 @@ TEST(BasePoseDerivativesReuse, ReusedOutputTakesTheNewRod) {
   EXPECT_EQ(out.energy, c_bare.energy);
 }
 
+// Only c's state is read: a configuration integrated without derivatives gives the same result.
+TEST(BasePoseDerivativesReuse, ConfigurationWithoutDerivativesGivesTheSame) {
+  const Problem problem = make_problem({ConstitutiveModel::Kirchhoff, Load::GravityAndMoment, 1});
+  const BaseWrench w = world_wrench(problem.rod, problem.body_wrench);
+  const RodConfiguration from_all =
+      base_pose_derivatives(problem.rod, integrate(problem.rod, w, Derivatives::AllNodes));
+  const RodConfiguration from_none =
+      base_pose_derivatives(problem.rod, integrate(problem.rod, w, Derivatives::None));
+  ASSERT_EQ(from_none.derivatives, Derivatives::AllNodes);
+  for (int i = 0; i < from_all.nodes(); ++i) {
+    EXPECT_TRUE(CompareMatrices(from_none.dp_dw[i], from_all.dp_dw[i], 0.0));
+    EXPECT_TRUE(CompareMatrices(from_none.dtheta_dw[i], from_all.dtheta_dw[i], 0.0));
+    EXPECT_TRUE(CompareMatrices(from_none.dn_dw[i], from_all.dn_dw[i], 0.0));
+    EXPECT_TRUE(CompareMatrices(from_none.dm_dw[i], from_all.dm_dw[i], 0.0));
+  }
+  EXPECT_TRUE(CompareMatrices(from_none.denergy_dw, from_all.denergy_dw, 0.0));
+}
+
 }  // namespace
 }  // namespace rodshape
