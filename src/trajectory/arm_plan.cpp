@@ -287,9 +287,9 @@ std::optional<Unreachable> check_reach(const PlanResult& plan,
   }
   arm.joints = joint_trajectory(side.model(), path, side.placement(), joint_options);
   if (!arm.joints.complete()) {
-    return Unreachable{"joint trajectory: " + arm.joints.message,
-                       path[static_cast<std::size_t>(arm.joints.failed_sample)].pose, false,
-                       side.base};
+    return Unreachable{
+        (side.base ? "base joint trajectory: " : "joint trajectory: ") + arm.joints.message,
+        path[static_cast<std::size_t>(arm.joints.failed_sample)].pose, false, side.base};
   }
   if (joint_options.clearance && !arm.joints.link_gap.clear()) {
     const int i = arm.joints.link_gap_sample;
