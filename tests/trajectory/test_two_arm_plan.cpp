@@ -188,9 +188,22 @@ TEST(TwoArmPlan, TwoPandasFollowBothEndsSampleBySample) {
           << "sample " << i;
     }
   }
-  // The two arms' links measured against each other: clear, named in the scene result.
+  // Each arm's links measured against the rod at every sample (the hand holding it excepted: it
+  // grips the band, and would be "too near" it), and the two arms' links against each other:
+  // all clear, the least named in the scene result.
+  for (const ArmPlanResult* arm : {&tip, &base}) {
+    EXPECT_GE(arm->joints.link_gap.capsule, 0);
+    EXPECT_EQ(arm->joints.link_gap.obstacle, -1);  // no scene: the rod
+    EXPECT_TRUE(arm->joints.link_gap.clear());
+  }
   ASSERT_TRUE(plan.scene && plan.scene->robot);
   EXPECT_TRUE(plan.scene->robot->clear()) << plan.scene->robot->note;
+  const LinkGap arms =
+      arm_arm_gap(problem.arm->model, problem.arm->placement.world_T_base, tip.joints.q.front(),
+                  problem.base_arm->model, problem.base_arm->placement.world_T_base,
+                  base.joints.q.front(), problem.scene.clearance);
+  // The least over every sample is at most the arms' gap at the first.
+  EXPECT_LE(plan.scene->robot->margin, arms.margin + 1e-12);
 }
 
 TEST(TwoArmPlan, ABaseOutsideTheBaseArmsShellIsBadInputNamingTheClamp) {
