@@ -565,7 +565,16 @@ Pose initial_tip(const PlanProblem& problem, const RodConfiguration& initial) {
 PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options) {
   check_seeds(problem, options.arm);
   const plan_stages::InitialEquilibrium initial = plan_stages::initial_equilibrium(problem);
-  Arms arms = prepare_arms(problem, options.arm, initial_tip(problem, initial.configuration));
+  return plan_with_arms(
+      problem, options, initial_tip(problem, initial.configuration),
+      [&](const PlanProblem& planned) { return plan_rod(planned, options, initial); });
+}
+
+PlanResult plan_with_arms(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          const Pose& initial_tip,
+                          const RodPlanner& planner) {
+  Arms arms = prepare_arms(problem, options.arm, initial_tip);
   PlanProblem planned = problem;
   // A complete rod plan whose links came too near, kept in case the re-plan with a tighter shell
   // does not complete (the shell can squeeze the rod's optimisation): then it is the answer.
@@ -575,7 +584,7 @@ PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options)
     if (arms.tip && arms.tip->result.shell) planned.workspace.reach = arms.tip->result.shell;
     if (arms.base && arms.base->result.shell)
       planned.moving_base->workspace.reach = arms.base->result.shell;
-    PlanResult result = plan_rod(planned, options, initial);
+    PlanResult result = planner(planned);
     if (collided && result.status != PlanStatus::Complete) {
       const ArmState& side = collided_base ? *arms.base : *arms.tip;
       collided->message += " (a re-plan with the reach shell " +
