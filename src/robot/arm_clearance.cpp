@@ -100,7 +100,15 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
       report(d, static_cast<int>(j), -1, required_gap(static_cast<int>(c), static_cast<int>(j)));
     }
     if (others != nullptr) {
+      // A pair whose bounding balls are farther apart than the prefilter is skipped: the segment
+      // lies within |b - a|/2 of its midpoint, so |m - m_j| - h - h_j - r_j bounds d from below.
+      const Eigen::Vector3d mid = 0.5 * (a + b);
+      const double half = 0.5 * (b - a).norm();
       for (std::size_t j = 0; j < others->size(); ++j) {
+        const auto& other = std::get<CapsuleObstacle>((*others)[j].shape);
+        const double bound = (0.5 * (other.from + other.to) - mid).norm() - half -
+                             0.5 * (other.to - other.from).norm() - other.radius;
+        if (bound > prefilter + capsule.radius) continue;
         const SegmentDistance d = (*others)[j].distance(a, b);
         report(d, kOtherArm, static_cast<int>(j), scene_.clearance);
       }
@@ -222,7 +230,14 @@ LinkGap arm_arm_gap(const ArmModel& a,
   const std::vector<Obstacle> theirs = world_capsules(b, world_T_b, q_b);
   for (std::size_t c = 0; c < ours.size(); ++c) {
     const auto& capsule = std::get<CapsuleObstacle>(ours[c].shape);
+    const Eigen::Vector3d mid = 0.5 * (capsule.from + capsule.to);
+    const double reach = 0.5 * (capsule.to - capsule.from).norm() + capsule.radius;
     for (std::size_t j = 0; j < theirs.size(); ++j) {
+      // The bounding balls' gap bounds the pair's from below: skip a pair that cannot be nearer.
+      const auto& other = std::get<CapsuleObstacle>(theirs[j].shape);
+      const double bound = (0.5 * (other.from + other.to) - mid).norm() - reach -
+                           0.5 * (other.to - other.from).norm() - other.radius;
+      if (bound - required >= least.margin) continue;
       const double gap = theirs[j].distance(capsule.from, capsule.to).distance - capsule.radius;
       if (gap - required < least.margin) {
         least.gap = gap;

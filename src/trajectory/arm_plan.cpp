@@ -287,9 +287,9 @@ std::optional<Unreachable> check_reach(const PlanResult& plan,
   }
   arm.joints = joint_trajectory(side.model(), path, side.placement(), joint_options);
   if (!arm.joints.complete()) {
-    return Unreachable{"joint trajectory: " + arm.joints.message,
-                       path[static_cast<std::size_t>(arm.joints.failed_sample)].pose, false,
-                       side.base};
+    return Unreachable{
+        (side.base ? "base joint trajectory: " : "joint trajectory: ") + arm.joints.message,
+        path[static_cast<std::size_t>(arm.joints.failed_sample)].pose, false, side.base};
   }
   if (joint_options.clearance && !arm.joints.link_gap.clear()) {
     const int i = arm.joints.link_gap_sample;
@@ -565,7 +565,16 @@ Pose initial_tip(const PlanProblem& problem, const RodConfiguration& initial) {
 PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options) {
   check_seeds(problem, options.arm);
   const plan_stages::InitialEquilibrium initial = plan_stages::initial_equilibrium(problem);
-  Arms arms = prepare_arms(problem, options.arm, initial_tip(problem, initial.configuration));
+  return plan_with_arms(
+      problem, options, initial_tip(problem, initial.configuration),
+      [&](const PlanProblem& planned) { return plan_rod(planned, options, initial); });
+}
+
+PlanResult plan_with_arms(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          const Pose& initial_tip,
+                          const RodPlanner& planner) {
+  Arms arms = prepare_arms(problem, options.arm, initial_tip);
   PlanProblem planned = problem;
   // A complete rod plan whose links came too near, kept in case the re-plan with a tighter shell
   // does not complete (the shell can squeeze the rod's optimisation): then it is the answer.
@@ -575,7 +584,7 @@ PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options)
     if (arms.tip && arms.tip->result.shell) planned.workspace.reach = arms.tip->result.shell;
     if (arms.base && arms.base->result.shell)
       planned.moving_base->workspace.reach = arms.base->result.shell;
-    PlanResult result = plan_rod(planned, options, initial);
+    PlanResult result = planner(planned);
     if (collided && result.status != PlanStatus::Complete) {
       const ArmState& side = collided_base ? *arms.base : *arms.tip;
       collided->message += " (a re-plan with the reach shell " +

@@ -19,6 +19,8 @@
 // joint sample; too near: both arms' status collision and the plan's, no re-plan).
 #pragma once
 
+#include <functional>
+
 #include "plan_stages.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
@@ -38,6 +40,19 @@ PlanResult plan_rod(const PlanProblem& problem,
 /// pose outside the arm's reach shell ("PlanArm") and an initial base pose outside the base
 /// arm's ("PlanProblem.rod.clamp").
 PlanResult plan_with_arm(const PlanProblem& problem, const PlanOptions& options);
+
+/// The rod's planner that plan_with_arm's loop calls with the problem and the arms' shells in
+/// its workspaces (workspace.reach, moving_base->workspace.reach): plan_rod from the initial
+/// equilibrium; a test may give its own.
+using RodPlanner = std::function<PlanResult(const PlanProblem& planned)>;
+
+/// plan_with_arm's loop after the seeds' check and the initial equilibrium: the arms prepared for
+/// `initial_tip` (the tip's pose where the rod starts; the base's is problem.rod.clamp), then
+/// plan, check, tighten and plan again.
+PlanResult plan_with_arms(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          const Pose& initial_tip,
+                          const RodPlanner& planner);
 
 /// The arms' part of a plan made elsewhere (or by hand), without re-plans: the arms prepared as
 /// by plan_with_arm (the same InputErrors), every step's and path sample's pose checked by IK,

@@ -125,6 +125,42 @@ TEST(JointTrajectoryResult, SlowsAPathThatIsTooFastForTheJoints) {
   EXPECT_NEAR(highest, 1.0, 1e-9);
 }
 
+TEST(JointTrajectoryResult, TwoArmsOnOneClockAreRetimedTogether) {
+  // A fast path for arm A (slowed alone) and a second arm B whose hand moves a short way on the
+  // same clock (not slowed alone): re-timed together, both keep the same times, which are A's
+  // own re-timing (B never needs more), and both stay within their velocity limits.
+  EndEffectorLimits fast;
+  fast.max_linear_speed *= 1000.0;
+  fast.max_angular_speed *= 1000.0;
+  fast.max_linear_acceleration *= 1000.0;
+  fast.max_angular_acceleration *= 1000.0;
+  fast.sample_rate = 10000.0;
+  std::vector<Pose> other = band_waypoints();
+  for (std::size_t k = 0; k < other.size(); ++k) other[k].position.y() = 0.002 * k;
+  other[0] = other[1] = band_waypoints()[0];  // B stays put in the first segment
+  const TwoEndPath path = time_parameterize_together(band_waypoints(), other, fast, fast);
+  JointTrajectoryResult a = joint_trajectory(panda(), path.tip, band_placement());
+  JointTrajectoryResult b = joint_trajectory(panda(), path.base, band_placement());
+  ASSERT_TRUE(a.complete() && b.complete()) << a.message << b.message;
+  ASSERT_TRUE(a.slowed);
+  std::vector<double> t;
+  for (const TimedPose& sample : path.tip) t.push_back(sample.t);
+  const std::vector<double> a_alone = a.t;
+  retime_together(panda(), a, panda(), b, t);
+  EXPECT_EQ(a.t, b.t);
+  EXPECT_TRUE(a.slowed && b.slowed);
+  EXPECT_EQ(a.slowdown, b.slowdown);
+  // Each segment takes the longer of the two arms' needs: at least A's own re-timed duration.
+  for (std::size_t i = 0; i + 1 < t.size(); ++i)
+    EXPECT_GE(a.t[i + 1] - a.t[i], (a_alone[i + 1] - a_alone[i]) * (1 - 1e-12)) << i;
+  expect_within_velocity_limits(a);
+  expect_within_velocity_limits(b);
+  expect_replays(b, path.base, band_placement());
+  // A trajectory that did not complete is refused.
+  JointTrajectoryResult failed;
+  EXPECT_THROW(retime_together(panda(), a, panda(), failed, t), InputError);
+}
+
 TEST(JointTrajectoryResult, ReportsAnUnreachablePoseWithItsTime) {
   std::vector<Pose> waypoints = band_waypoints();
   waypoints.push_back(pose({3.0, 0.0, 0.24}, 0.0));  // 3.5 m from the arm's base

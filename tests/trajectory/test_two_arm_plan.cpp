@@ -3,9 +3,10 @@
 // bundled Pandas facing each other 0.8 m apart, one holding each end. Every step's and every path
 // sample's pose has IK for both arms, the two joint trajectories share their times, and the
 // forward kinematics of both arms' joints puts each gripper on its path; a base pose outside the
-// base arm's reach shell is bad input naming PlanProblem.rod.clamp, and one the shell admits but
-// IK cannot reach is reported by the base arm; two hands brought together give a negative
-// arm–arm margin and the status collision.
+// base arm's reach shell is bad input naming PlanProblem.rod.clamp, and one IK cannot reach is
+// reported by the base arm; a planner standing in for the optimisation shows the re-plan with the
+// base arm's shell tightened by the tip's rule, and the two arms' re-plans sharing one budget; two
+// hands brought together give a negative arm–arm margin and the status collision.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -188,9 +189,22 @@ TEST(TwoArmPlan, TwoPandasFollowBothEndsSampleBySample) {
           << "sample " << i;
     }
   }
-  // The two arms' links measured against each other: clear, named in the scene result.
+  // Each arm's links measured against the rod at every sample (the hand holding it excepted: it
+  // grips the band, and would be "too near" it), and the two arms' links against each other:
+  // all clear, the least named in the scene result.
+  for (const ArmPlanResult* arm : {&tip, &base}) {
+    EXPECT_GE(arm->joints.link_gap.capsule, 0);
+    EXPECT_EQ(arm->joints.link_gap.obstacle, -1);  // no scene: the rod
+    EXPECT_TRUE(arm->joints.link_gap.clear());
+  }
   ASSERT_TRUE(plan.scene && plan.scene->robot);
   EXPECT_TRUE(plan.scene->robot->clear()) << plan.scene->robot->note;
+  const LinkGap arms =
+      arm_arm_gap(problem.arm->model, problem.arm->placement.world_T_base, tip.joints.q.front(),
+                  problem.base_arm->model, problem.base_arm->placement.world_T_base,
+                  base.joints.q.front(), problem.scene.clearance);
+  // The least over every sample is at most the arms' gap at the first.
+  EXPECT_LE(plan.scene->robot->margin, arms.margin + 1e-12);
 }
 
 TEST(TwoArmPlan, ABaseOutsideTheBaseArmsShellIsBadInputNamingTheClamp) {
@@ -201,6 +215,15 @@ TEST(TwoArmPlan, ABaseOutsideTheBaseArmsShellIsBadInputNamingTheClamp) {
       input_error_message([&] { detail::check_arms(problem, PlanOptions{}, plan); });
   EXPECT_NE(message.find("PlanProblem.rod.clamp"), std::string::npos) << message;
   EXPECT_NE(message.find("the base arm"), std::string::npos) << message;
+
+  // A base workspace that has its own reach shell while the base arm's is asked for.
+  PlanProblem doubled = two_pandas();
+  doubled.moving_base->workspace.reach =
+      Workspace::ReachShell{Eigen::Vector3d::Zero(), 0.0, 1.0, Eigen::Vector3d::Zero()};
+  PlanResult at_rest = hand_made_plan(doubled, PlanOptions{}, 1);
+  const std::string twice =
+      input_error_message([&] { detail::check_arms(doubled, PlanOptions{}, at_rest); });
+  EXPECT_EQ(twice.find("PlanProblem.moving_base.workspace.reach"), 0u) << twice;
 }
 
 TEST(TwoArmPlan, ABasePoseWithoutIkIsReportedByTheBaseArm) {
@@ -221,6 +244,106 @@ TEST(TwoArmPlan, ABasePoseWithoutIkIsReportedByTheBaseArm) {
       << plan.base_arm->message;
   EXPECT_EQ(plan.base_arm->waypoint_q.size(), 1u);  // the initial pose's only
   EXPECT_FALSE(plan.base_arm->shell);
+}
+
+/// hand_made_plan() with the grippers' poses of its steps after the first moved by `tip_shift`
+/// and `base_shift` (out of reach when large), as a planner that ignored the arms' reach would
+/// have them; both paths timed anew.
+PlanResult shifted_plan(const PlanProblem& problem,
+                        const PlanOptions& options,
+                        const Eigen::Vector3d& tip_shift,
+                        const Eigen::Vector3d& base_shift) {
+  PlanResult plan = hand_made_plan(problem, options, 3, {0.0, 0.01, 0.0});
+  std::vector<Pose> tips{plan.end_effector_path.front().pose};
+  std::vector<Pose> bases{plan.base_end_effector_path.front().pose};
+  for (std::size_t k = 0; k < plan.steps.size(); ++k) {
+    if (k > 0) {
+      plan.steps[k].end_effector.position += tip_shift;
+      plan.steps[k].base_end_effector.position += base_shift;
+    }
+    tips.push_back(plan.steps[k].end_effector);
+    bases.push_back(plan.steps[k].base_end_effector);
+  }
+  const TwoEndPath path =
+      time_parameterize_together(tips, bases, options.end_effector, options.base_end_effector);
+  plan.end_effector_path = path.tip;
+  plan.base_end_effector_path = path.base;
+  return plan;
+}
+
+/// The shells a planner was given, call by call.
+struct ShellsSeen {
+  std::vector<Workspace::ReachShell> tip, base;
+};
+
+TEST(TwoArmPlan, ABaseStepWithoutIkIsReplannedWithTheBaseArmsShellTightened) {
+  // A planner (standing in for the rod's optimisation) that puts the base's later steps 0.9 m
+  // sideways until the base arm's shell is tightened: the base arm's IK fails at step 2, the plan
+  // is made again with the base shell pulled in past that pose's wrist distance, and then both
+  // arms reach every pose. (No link clearance: the moved grippers do not hold the rod.)
+  const PlanProblem problem = two_pandas();
+  PlanOptions options;
+  options.arm.link_clearance = false;
+  ShellsSeen seen;
+  const auto planner = [&](const PlanProblem& planned) {
+    seen.tip.push_back(*planned.workspace.reach);
+    seen.base.push_back(*planned.moving_base->workspace.reach);
+    const bool tightened = seen.base.back().outer_radius < seen.base.front().outer_radius;
+    return shifted_plan(problem, options, Eigen::Vector3d::Zero(),
+                        tightened ? Eigen::Vector3d::Zero() : Eigen::Vector3d(0, 0.9, 0));
+  };
+  const Pose initial_tip = integrate(problem.rod, BaseWrench{}).tip();
+  const PlanResult plan = detail::plan_with_arms(problem, options, initial_tip, planner);
+  ASSERT_EQ(seen.base.size(), 2u);
+  ASSERT_TRUE(plan.arm && plan.base_arm);
+  const ArmPlanResult& base = *plan.base_arm;
+  EXPECT_EQ(plan.arm->status, ArmPlanStatus::Reachable) << plan.arm->message;
+  EXPECT_EQ(base.status, ArmPlanStatus::Reachable) << base.message;
+  EXPECT_TRUE(plan.arm->replans.empty());
+  ASSERT_EQ(base.replans.size(), 1u);
+  const Replan& replan = base.replans.front();
+  EXPECT_EQ(replan.reason.find("step 2's base end-effector pose has no inverse kinematics"), 0u)
+      << replan.reason;
+  // The rule: a pose in the shell's outer half pulls the outer radius in below its wrist distance.
+  EXPECT_GT(replan.wrist_distance, seen.base[0].outer_radius);
+  EXPECT_DOUBLE_EQ(replan.shell.outer_radius,
+                   seen.base[0].outer_radius - options.arm.replan_tightening);
+  EXPECT_DOUBLE_EQ(replan.shell.inner_radius, seen.base[0].inner_radius);
+  EXPECT_DOUBLE_EQ(seen.base[1].outer_radius, replan.shell.outer_radius);
+  EXPECT_DOUBLE_EQ(base.shell->outer_radius, replan.shell.outer_radius);
+  // The base arm's shell went to the base's workspace, the tip arm's (unchanged) to the tip's.
+  EXPECT_DOUBLE_EQ(seen.tip[1].outer_radius, seen.tip[0].outer_radius);
+  EXPECT_EQ(seen.base[0].tip_point, base.shell->tip_point);
+  EXPECT_NE(base.message.find("after 1 re-plan"), std::string::npos) << base.message;
+  EXPECT_EQ(plan.arm->joints.t, base.joints.t);
+}
+
+TEST(TwoArmPlan, BothArmsReplansShareTheBudget) {
+  // The tip's steps out of reach until its shell is tightened, the base's always: with one re-plan
+  // allowed, the tip's arm takes it and the base arm, failing next, has none left.
+  const PlanProblem problem = two_pandas();
+  PlanOptions options;
+  options.arm.link_clearance = false;
+  options.arm.max_replans = 1;
+  ShellsSeen seen;
+  const auto planner = [&](const PlanProblem& planned) {
+    seen.tip.push_back(*planned.workspace.reach);
+    const bool tightened = seen.tip.back().outer_radius < seen.tip.front().outer_radius;
+    return shifted_plan(problem, options,
+                        tightened ? Eigen::Vector3d::Zero() : Eigen::Vector3d(0, -0.9, 0),
+                        Eigen::Vector3d(0, 0.9, 0));
+  };
+  const Pose initial_tip = integrate(problem.rod, BaseWrench{}).tip();
+  const PlanResult plan = detail::plan_with_arms(problem, options, initial_tip, planner);
+  EXPECT_EQ(seen.tip.size(), 2u);
+  ASSERT_TRUE(plan.arm && plan.base_arm);
+  EXPECT_EQ(plan.arm->status, ArmPlanStatus::Reachable) << plan.arm->message;
+  EXPECT_EQ(plan.arm->replans.size(), 1u);
+  EXPECT_EQ(plan.base_arm->status, ArmPlanStatus::Unreachable);
+  EXPECT_TRUE(plan.base_arm->replans.empty());
+  EXPECT_NE(plan.base_arm->message.find("(after 1 re-plans with a tighter reach shell"),
+            std::string::npos)
+      << plan.base_arm->message;
 }
 
 TEST(TwoArmPlan, TwoHandsThatMeetHaveANegativeMargin) {
