@@ -298,9 +298,8 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
     Vector12d units_x;
     units_x << units, Eigen::Vector3d::Constant(problem_.rod().properties.length),
         Eigen::Vector3d::Ones();
-    return differenced_hessian<Vector12d, Eigen::Matrix<double, 12, 12>>(x, obj_factor,
-                                                                          multipliers, units_x,
-                                                                          values);
+    return differenced_hessian<Vector12d, Eigen::Matrix<double, 12, 12>>(x, obj_factor, multipliers,
+                                                                         units_x, values);
   }
   return differenced_hessian<Vector6d, Matrix6d>(x, obj_factor, multipliers, units, values);
 }

@@ -38,7 +38,7 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
 struct NlpOutcome {
   bool finalized = false;  // finalize_solution() was called
   Ipopt::SolverReturn solver_return = Ipopt::UNASSIGNED;
-  Vector6d w = Vector6d::Zero();  // the final iterate (with a moving base: its world wrench)
+  Vector6d w = Vector6d::Zero();    // the final iterate (with a moving base: its world wrench)
   Vector12d x = Vector12d::Zero();  // with a moving base: the final iterate (w_b, ξ)
   double objective = 0.0;
   /// λ, one per row of g. IPOPT's sign convention (Lagrangian F + gᵀλ): λ ≥ 0 where g presses on

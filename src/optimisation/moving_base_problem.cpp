@@ -57,8 +57,7 @@ void ShapeProblem::set_base_reference(const Pose& reference) {
 
 Pose ShapeProblem::base_pose(const Vector12d& x) const {
   const Pose& reference = base_motion_->reference;
-  return {reference.position + x.segment<3>(6),
-          exp_so3(x.segment<3>(9)) * reference.rotation};
+  return {reference.position + x.segment<3>(6), exp_so3(x.segment<3>(9)) * reference.rotation};
 }
 
 BaseWrench ShapeProblem::world_wrench(const Vector12d& x) const {
@@ -116,7 +115,8 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   evaluate_moving_constraints();
   const double L = rod_.properties.length;
   const double W1 = target_.energy_weight;
-  gradient_xi_ = (W1 / L) * pose_tangent_.denergy_dw.transpose() + distance_gradient_sum(pose_tangent_);
+  gradient_xi_ =
+      (W1 / L) * pose_tangent_.denergy_dw.transpose() + distance_gradient_sum(pose_tangent_);
   // The motion term W_b W2 (|δt|² + L² |δφ|²) / L.
   const double Wb = base_motion_->motion_weight * target_.distance_weight;
   const Eigen::Vector3d dt = x.segment<3>(6), dphi = x.segment<3>(9);

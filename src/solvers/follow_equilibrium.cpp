@@ -96,7 +96,8 @@ ClampedRod rod_at(const ClampedRod& rod, const EquilibriumPath& path, double sig
 /// moving clamp, turned by R(to) R(from)ᵀ, so that it is the same in the base's frame.
 BaseWrench carried(const EquilibriumPath& path, double from, double to, const BaseWrench& w) {
   if (!path.clamp_at) return w;
-  const Eigen::Matrix3d turn = path.clamp_at(to).rotation * path.clamp_at(from).rotation.transpose();
+  const Eigen::Matrix3d turn =
+      path.clamp_at(to).rotation * path.clamp_at(from).rotation.transpose();
   return {turn * w.force, turn * w.moment};
 }
 
@@ -198,9 +199,9 @@ void follow_adaptive(const ClampedRod& rod,
     Vector6d w_step = w_solved;
     if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
     const Derivatives derivatives = t_next >= 1.0 ? options.final_derivatives : every;
-    ShootingResult solved = solve_at(rod, path, t_next,
-                                     carried(path, t, t_next, Wrench::from_vector(w_step)),
-                                     options.shooting, derivatives);
+    ShootingResult solved =
+        solve_at(rod, path, t_next, carried(path, t, t_next, Wrench::from_vector(w_step)),
+                 options.shooting, derivatives);
     add_counts(result.total, solved.summary);
     if (solved.summary.converged()) {
       w_previous = w_solved;

@@ -9,10 +9,12 @@
 
 #include "arm_replanning.hpp"
 #include "detour_search.hpp"
+#include "moving_base_plan.hpp"
 #include "plan_stages.hpp"
 #include "pose_continuation.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/robot/arm_clearance.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "scene_stages.hpp"
 #include "target_behind_clamp.hpp"
@@ -150,7 +152,8 @@ std::string PlanResult::brief(int steps_requested) const {
   if (scene && scene->robot) {
     out << "; least gap of the arm's links " << std::setprecision(3) << scene->robot->min_gap * 1e3
         << " mm (" << scene->robot->link << ", "
-        << (scene->robot->obstacle < 0
+        << (scene->robot->obstacle == kOtherArm ? "the other arm's " + scene->robot->other_link
+            : scene->robot->obstacle < 0
                 ? std::string("the rod")
                 : "obstacle " + (scene->robot->obstacle_name.empty()
                                      ? std::to_string(scene->robot->obstacle)
@@ -744,6 +747,7 @@ PlanResult gentlest_plan(const PlanProblem& problem,
 PlanResult plan_rod(const PlanProblem& problem,
                     const PlanOptions& options,
                     const plan_stages::InitialEquilibrium& initial) {
+  if (problem.base_moves()) return plan_moving_base(problem, options, initial);
   switch (options.interpolation) {
     case ObjectiveInterpolation::Auto:
       return gentlest_plan(problem, options, initial);
@@ -805,9 +809,20 @@ PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
     throw InputError("PlanOptions.interpolation", " = " + to_string(options.interpolation) +
                                                       " plans the whole way: it cannot be used "
                                                       "with a horizon");
+  if (problem.base_moves() && (options.interpolation == ObjectiveInterpolation::Pose ||
+                               options.interpolation == ObjectiveInterpolation::Search))
+    throw InputError("PlanOptions.interpolation",
+                     " = " + to_string(options.interpolation) +
+                         " follows the tip alone: with a moving base use shape, arc_length, "
+                         "projection or auto (which is shape there)");
   check_plan_cost(problem, options);
-  if (problem.arm) return detail::plan_with_arm(problem, options);
-  return detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));
+  PlanResult result =
+      problem.arm || problem.base_arm
+          ? detail::plan_with_arm(problem, options)
+          : detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));
+  if (!problem.base_moves())  // the clamp's pose: the base end effector of every step
+    for (PlanStep& step : result.steps) step.base_end_effector = problem.rod.clamp;
+  return result;
 }
 
 TrackingResult track_plan(const PlanProblem& problem,

@@ -90,12 +90,21 @@ TipCondition held_tip(const Pose& tip, const Grasp& grasp) {
   return GraspedTip{tip, grasp.released};
 }
 
-EquilibriumPath commanded_segment(const PlanProblem& problem, const Pose& from, const Pose& to) {
+EquilibriumPath commanded_segment(const PlanProblem& problem,
+                                  const Pose& from,
+                                  const Pose& to,
+                                  const Pose* base_from,
+                                  const Pose* base_to) {
   const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
-  return {[from, to, ee_T_tip, grasp = problem.grasp](double sigma) {
-            return held_tip(compose(interpolate(from, to, sigma), ee_T_tip), grasp);
-          },
-          false};
+  EquilibriumPath path{[from, to, ee_T_tip, grasp = problem.grasp](double sigma) {
+                         return held_tip(compose(interpolate(from, to, sigma), ee_T_tip), grasp);
+                       },
+                       false};
+  if (base_from && base_to)
+    path.clamp_at = [a = *base_from, b = *base_to](double sigma) {
+      return interpolate(a, b, sigma);
+    };
+  return path;
 }
 
 InitialEquilibrium initial_equilibrium(const PlanProblem& problem) {
@@ -129,6 +138,8 @@ PointSet initial_points(const PlanProblem& problem,
 }
 
 PointSet ObjectivePath::at(double fraction) const {
+  if (interpolation == ObjectiveInterpolation::Shape && moving_base)
+    return aligned_objective_set(clamp, initial, objective, fraction);
   if (interpolation == ObjectiveInterpolation::Shape)
     return turned_objective_set(clamp, initial, objective, fraction);
   return objective_set(initial, objective, fraction);
@@ -194,7 +205,8 @@ SegmentTracking track_segment(const PlanProblem& problem,
                               const BaseWrench& w,
                               const PlanStep& step,
                               int waypoint,
-                              const std::vector<double>* required) {
+                              const std::vector<double>* required,
+                              const Pose* base_from) {
   constexpr double kJumpDeviation = 1e-3;  // m
   FollowOptions follow;
   follow.substeps = options.tracking_substeps;
@@ -202,8 +214,14 @@ SegmentTracking track_segment(const PlanProblem& problem,
   follow.arrival_stability = true;
   std::optional<SceneGap> least;
   std::optional<scene_stages::SweptGap> swept;
+  ClampedRod start_rod = problem.rod;
+  if (base_from) start_rod.clamp = *base_from;
+  const Pose base_to =
+      step.solution.configuration.nodes() > 0
+          ? Pose{step.solution.configuration.p[0], step.solution.configuration.R[0]}
+          : problem.rod.clamp;
   if (required != nullptr) {
-    swept.emplace(problem.scene, *required, integrate(problem.rod, w, Derivatives::None).p);
+    swept.emplace(problem.scene, *required, integrate(start_rod, w, Derivatives::None).p);
     follow.observer = [&](double, const RodConfiguration& c) {
       const SceneGap gap = swept->add(c.p);
       if (!least || gap.margin < least->margin) least = gap;
@@ -211,8 +229,10 @@ SegmentTracking track_segment(const PlanProblem& problem,
     };
   }
   const FollowResult followed =
-      follow_equilibrium(problem.rod, commanded_segment(problem, from, step.end_effector), w,
-                         follow, &step.solution.configuration, kJumpDeviation);
+      follow_equilibrium(start_rod,
+                         commanded_segment(problem, from, step.end_effector, base_from,
+                                           base_from ? &base_to : nullptr),
+                         w, follow, &step.solution.configuration, kJumpDeviation);
   SegmentTracking segment;
   segment.jump = !followed.followed();
   segment.gap = least;

@@ -29,7 +29,13 @@ TipCondition held_tip(const Pose& tip, const Grasp& grasp);
 /// The rod held while the end effector moves straight from `from` to `to` (σ ∈ [0, 1]: position
 /// interpolated, rotation slerped), the tip at the end effector's pose · (tip_T_ee)⁻¹: what the
 /// tracking and the detour search follow.
-EquilibriumPath commanded_segment(const PlanProblem& problem, const Pose& from, const Pose& to);
+/// With a moving base, `base_from` and `base_to` are the rod's base poses at the segment's ends:
+/// the clamp moves with them (position on the line, rotation slerped, on the same σ).
+EquilibriumPath commanded_segment(const PlanProblem& problem,
+                                  const Pose& from,
+                                  const Pose& to,
+                                  const Pose* base_from = nullptr,
+                                  const Pose* base_to = nullptr);
 
 /// 1. The equilibrium the rod starts in, with all-node derivatives. Throws InputError when no
 /// equilibrium holds the rod at the initial tip pose, when a given wrench loads a released grasp
@@ -59,6 +65,7 @@ struct ObjectivePath {
   Eigen::Vector3d clamp = Eigen::Vector3d::Zero();
   PointSet initial, objective;
   ObjectiveInterpolation interpolation = ObjectiveInterpolation::Shape;
+  bool moving_base = false;  // Shape with a moving base: aligned_objective_set from `clamp`
   /// Shape: turned_objective_set; else objective_set (straight lines).
   PointSet at(double fraction) const;
 };
@@ -104,13 +111,16 @@ struct SegmentTracking {
   std::string note;
 };
 /// With `scene` and `required` (Scene::required_gaps), the gap of every substep is measured.
+/// With a moving base, `base_from` is the rod's base pose at the start (the clamp moves from it to
+/// the step's base pose, its node 0).
 SegmentTracking track_segment(const PlanProblem& problem,
                               const PlanOptions& options,
                               const Pose& from,
                               const BaseWrench& w,
                               const PlanStep& step,
                               int waypoint,
-                              const std::vector<double>* required = nullptr);
+                              const std::vector<double>* required = nullptr,
+                              const Pose* base_from = nullptr);
 /// Adds a segment to the tracking result (its first jump is the result's).
 void record(TrackingResult& tracking, const SegmentTracking& segment, int step_index);
 

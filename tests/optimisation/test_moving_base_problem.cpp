@@ -41,7 +41,8 @@ Vector6d body_wrench(const ClampedRod& rod) {
 /// Objective points 2–4 cm beside the shape of `x`.
 ShapeTarget target_beside(const RodConfiguration& c) {
   ShapeTarget target;
-  for (int i : {4, 9, 14, 19}) target.points.push_back(c.p[i] + 0.03 * c.R[i].col(0) - 0.02 * c.R[i].col(1));
+  for (int i : {4, 9, 14, 19})
+    target.points.push_back(c.p[i] + 0.03 * c.R[i].col(0) - 0.02 * c.R[i].col(1));
   target.energy_weight = 0.7;
   target.distance_weight = 3.0;
   return target;
@@ -85,7 +86,8 @@ TEST(MovingBaseProblem, CostGradientAndEveryJacobianRowMatchCentralFiniteDiffere
     const Eigen::MatrixXd J = problem.variable_jacobian();
     ASSERT_EQ(J.cols(), 12);
     // The base pose and world wrench at x are what the variables say.
-    EXPECT_TRUE(CompareMatrices(problem.configuration().p[0], rod.clamp.position + x.segment<3>(6), 1e-15));
+    EXPECT_TRUE(
+        CompareMatrices(problem.configuration().p[0], rod.clamp.position + x.segment<3>(6), 1e-15));
     const Eigen::Matrix3d R0 = exp_so3(x.segment<3>(9)) * rod.clamp.rotation;
     EXPECT_TRUE(CompareMatrices(problem.configuration().n[0], R0 * x.head<3>(), 1e-12));
 
@@ -109,7 +111,8 @@ TEST(MovingBaseProblem, CostGradientAndEveryJacobianRowMatchCentralFiniteDiffere
     for (int r = 0; r < J.rows(); ++r) {
       const Eigen::RowVectorXd scaled = J.row(r).cwiseProduct(S.transpose());
       const double F_row = std::max(std::abs(g(r)), scaled.cwiseAbs().maxCoeff());
-      EXPECT_TRUE(CompareMatrices(scaled, fd_J.row(r).cwiseProduct(S.transpose()), fd.bound * F_row))
+      EXPECT_TRUE(
+          CompareMatrices(scaled, fd_J.row(r).cwiseProduct(S.transpose()), fd.bound * F_row))
           << "row " << r << ", " << to_string(model);
     }
   }
@@ -122,11 +125,12 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
   moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
   const Vector6d wb = 0.3 * body_wrench(rod);
-  const BaseWrench w_moved{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()};
+  const BaseWrench w_moved{moved.clamp.rotation * wb.head<3>(),
+                           moved.clamp.rotation * wb.tail<3>()};
   const RodConfiguration truth = integrate(moved, w_moved);
   ShapeTarget target;
   for (int i : {0, 2, 5, 12, 20, 28, 36, 40}) target.points.push_back(truth.p[i]);
-  target.energy_weight = 1e-9;  // the points decide: the base must move onto them
+  target.energy_weight = 1e-9;      // the points decide: the base must move onto them
   target.squared_distances = true;  // smooth where the points are reached
   target.distance_weight = 1.0;
   ShapeProblem problem(rod, target);

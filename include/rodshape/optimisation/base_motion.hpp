@@ -20,8 +20,8 @@ struct BaseMotion {
   Pose reference;  // T_ref: ξ = 0 (the last step's base pose)
   /// Components of w_b the base gripper cannot transmit (force x, y, z, moment x, y, z): held at 0.
   std::array<bool, 6> released{};
-  WrenchBounds wrench_bounds;  // on w_b (infinite: none)
-  Workspace workspace;         // the set p(0) (and, with a reach shell, p(0) + R(0) t) stays in
+  WrenchBounds wrench_bounds;   // on w_b (infinite: none)
+  Workspace workspace;          // the set p(0) (and, with a reach shell, p(0) + R(0) t) stays in
   double motion_weight = 1e-3;  // W_b ≥ 0
   /// The largest |δφ_i| a step may turn the base by (a bound of the variables, rad).
   static constexpr double kMaxTurn = 1.5;

@@ -112,7 +112,7 @@ class ShapeProblem {
   /// ∇F, g and dg/dx; a call at the same x does nothing. Does not allocate after the first call.
   void evaluate_with_base(const Vector12d& x);
   const Eigen::VectorXd& variable_gradient() const { return gradient_x_; }  // ∇_x F, 12
-  const Eigen::MatrixXd& variable_jacobian() const { return dg_dx_; }      // count × 12
+  const Eigen::MatrixXd& variable_jacobian() const { return dg_dx_; }       // count × 12
   /// Bounds of x: w_b within the base's wrench bounds (released components at 0), δt free, each
   /// |δφ_i| ≤ BaseMotion::kMaxTurn.
   Vector12d variable_lower() const;

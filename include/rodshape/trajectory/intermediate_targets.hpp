@@ -42,6 +42,26 @@ PointSet turned_objective_set(const Eigen::Vector3d& clamp,
                               const PointSet& objective,
                               double fraction);
 
+/// The rigid motion x → R (x - from_centroid) + to_centroid that best takes one point set onto
+/// another in the least-squares sense (Kabsch's SVD, a proper rotation).
+struct RigidAlignment {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d from_centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d to_centroid = Eigen::Vector3d::Zero();
+};
+RigidAlignment best_rigid_alignment(const PointSet& from, const PointSet& to);
+
+/// With a moving base (issue 21) the chain from a fixed clamp says little: the target is seen
+/// from the initial frame after the best rigid alignment (the target moved back by it), the chain
+/// `base` → p_1 → … → p_n bent there as turned_objective_set does, and the result carried by the
+/// alignment interpolated (its centroid on a line, its rotation slerped from I):
+///   q_i(f) = c_init + f (c_obj - c_init) + R(f) (s_i(f) - c_init),  R(f) = exp(f log R).
+/// Exactly `objective` when fraction is 1, `initial` when 0.
+PointSet aligned_objective_set(const Eigen::Vector3d& base,
+                               const PointSet& initial,
+                               const PointSet& objective,
+                               double fraction);
+
 /// The n_inter intermediate sets, objective_set(i / n_inter) for i = 1 … n_inter; throws InputError
 /// ("trajectory.steps") when n_inter < 1 and when the two sets differ in size.
 std::vector<PointSet> intermediate_targets(const PointSet& initial,
