@@ -115,7 +115,9 @@ ClampedRod read_clamped_rod(const YamlField& root,
       if (const YamlField weight = base.get("motion_weight"); weight.present())
         base_keys->motion_weight = weight.number();
     }
-    rod.clamp = io_detail::read_pose_fields(base);
+    // A plan's `base: {moving: true}` alone keeps the default pose (origin, identity).
+    if (base_keys == nullptr || base.has("position") || base.has("rotation"))
+      rod.clamp = io_detail::read_pose_fields(base);
   }
   rod_field.located([&] { rod.validate(); });
   return rod;

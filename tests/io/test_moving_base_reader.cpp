@@ -179,6 +179,17 @@ TEST(MovingBaseReader, BaseRobotImpliesMovingAndMayNameTheSameUrdf) {
   EXPECT_EQ(std::count(task.input_files.begin(), task.input_files.end(), kPanda), 2);
 }
 
+TEST(MovingBaseReader, MovingAloneKeepsTheDefaultPose) {
+  const PlanTask task = parse_plan_task(plan_with("  position: [0, 0, 0]\n", ""), "plan.yaml");
+  EXPECT_TRUE(task.problem.moving_base.has_value());
+  EXPECT_TRUE(task.problem.rod.clamp.position.isZero(0.0));
+  EXPECT_TRUE(task.problem.rod.clamp.rotation.isIdentity(0.0));
+  // A rotation still needs its position.
+  EXPECT_TRUE(
+      starts_with(error_of(plan_with("  position: [0, 0, 0]\n", "  rotation: [1, 0, 0, 0]\n")),
+                  "plan.yaml:5: base.position is required"));
+}
+
 TEST(MovingBaseReader, BaseRobotWithoutBaseSection) {
   const std::string text = R"(rod:
   length: 0.29

@@ -89,6 +89,7 @@ def test_the_task_files_base_keys(tmp_path):
     assert base.base_to_end_effector.position[2] == pytest.approx(-0.03)
     assert base.wrench_lower[0] == -5 and np.isinf(base.wrench_lower[3])
     assert task.problem.base_arm is not None
+    assert isinstance(task.base_arm, rodshape.ArmModel) and task.arm is None
     assert task.problem.base_world_T_base.position[0] == pytest.approx(-0.5)
     assert task.options.base_max_linear_speed == pytest.approx(0.05)
     # Left out, the base gripper's limits are the tip's (here the defaults).
