@@ -12,6 +12,7 @@
 #include <numbers>
 #include <vector>
 
+#include "rodshape/core/base_pose_derivatives.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
@@ -190,6 +191,22 @@ void BM_ForwardWithAllNodeDerivatives(benchmark::State& state) {
   report_kernel_ratio(state, static_cast<int>(state.range(0)), start);
 }
 
+/// The clamp-pose derivatives of every node (issue 21) from an all-node configuration, with gravity
+/// (so that the load tangent is integrated): compare with BM_ForwardWithAllNodeDerivatives.
+void BM_BasePoseDerivatives(benchmark::State& state) {
+  ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
+  rod.load = DistributedLoad::gravity(rod.properties.mass_per_length, {0.0, 0.0, -9.81});
+  const RodConfiguration c = integrate(rod, generic_wrench(), Derivatives::AllNodes);
+  RodConfiguration out;
+  base_pose_derivatives(rod, c, out);
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    base_pose_derivatives(rod, c, out);
+    benchmark::DoNotOptimize(out.dp_dw.back().data());
+  }
+  report_kernel_ratio(state, static_cast<int>(state.range(0)), start);
+}
+
 ShootingOptions bench_options() {
   ShootingOptions options;
   options.residual_tolerance = 1e-10;
@@ -242,6 +259,7 @@ BENCHMARK(BM_PlainRk4Kernel)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicr
 BENCHMARK(BM_Forward)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ForwardWithDerivatives)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ForwardWithAllNodeDerivatives)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BasePoseDerivatives)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolveClampedClampedCold)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolveClampedClampedWarm)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 

@@ -9,7 +9,9 @@
 //   e' = ½ ΔvᵀK_traΔv + ½ ΔuᵀK_rotΔu = ½ n̄ᵀK_tra⁻¹n̄ + ½ m̄ᵀK_rot⁻¹m̄,  n̄ = Rᵀn, m̄ = Rᵀm
 //
 // Tangents are stored transposed, one row per base-wrench direction (6 × 14), so that each state
-// component's derivative is a contiguous 6-vector and the six directions share SIMD lanes.
+// component's derivative is a contiguous 6-vector and the six directions share SIMD lanes. The same
+// layout carries the six directions of the distributed load (f, l) for the clamp-pose derivatives
+// (evaluate_tangent<true>, src/core/load_tangent.hpp).
 #pragma once
 
 #include <Eigen/Core>
@@ -177,8 +179,13 @@ inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
 
 /// Y' = dF(y)[Y]: the variational equations. Each direction j (row of Y) is independent; the
 /// directions run four and two at a time in SIMD lanes.
-/// Since f is constant, δn = e_j for the force directions j < 3 and 0 for the moment directions at
-/// every s; that is used rather than read from Y. Returns θ (see above).
+/// Base-wrench directions (LoadForcing = false): since f is constant, δn = e_j for the force
+/// directions j < 3 and 0 for the moment directions at every s; that is used rather than read from
+/// Y. Load directions (LoadForcing = true: j < 3 is δf = e_j, j ≥ 3 is δl = e_{j-3}, started from
+/// a zero tangent): δn is read from Y and the load's own terms are added, δn' = -δf and
+/// δm' = ... - δl (δe' has none). The base-wrench path's arithmetic is unchanged by the flag.
+/// Returns θ (see above).
+template <bool LoadForcing = false>
 RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
                                                          const OdeState& y,
                                                          const OdePoint& point,
@@ -228,8 +235,22 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
     V qw, q0, q1, q2, m0, m1, m2, rt_dn0, rt_dn1, rt_dn2, pp_dn0, pp_dn1, pp_dn2;
     load(qw, dw, j), load(q0, dx0, j), load(q1, dx1, j), load(q2, dx2, j);
     load(m0, dm0, j), load(m1, dm1, j), load(m2, dm2, j);
-    load(rt_dn0, Rt_dn0, j), load(rt_dn1, Rt_dn1, j), load(rt_dn2, Rt_dn2, j);
-    load(pp_dn0, pp_x_dn0, j), load(pp_dn1, pp_x_dn1, j), load(pp_dn2, pp_x_dn2, j);
+    if constexpr (LoadForcing) {
+      // δn from Y: Rᵀδn and p' × δn.
+      V dn0, dn1, dn2;
+      load(dn0, Y.data() + 6 * Slot::n, j);
+      load(dn1, Y.data() + 6 * (Slot::n + 1), j);
+      load(dn2, Y.data() + 6 * (Slot::n + 2), j);
+      rt_dn0 = r00 * dn0 + r10 * dn1 + r20 * dn2;
+      rt_dn1 = r01 * dn0 + r11 * dn1 + r21 * dn2;
+      rt_dn2 = r02 * dn0 + r12 * dn1 + r22 * dn2;
+      pp_dn0 = pp1 * dn2 - pp2 * dn1;
+      pp_dn1 = pp2 * dn0 - pp0 * dn2;
+      pp_dn2 = pp0 * dn1 - pp1 * dn0;
+    } else {
+      load(rt_dn0, Rt_dn0, j), load(rt_dn1, Rt_dn1, j), load(rt_dn2, Rt_dn2, j);
+      load(pp_dn0, pp_x_dn0, j), load(pp_dn1, pp_x_dn1, j), load(pp_dn2, pp_x_dn2, j);
+    }
     // θ = (2/|q|²)(w δx - δw x - x × δx)
     const V t0 = s * (w * q0 - x0 * qw - x1 * q2 + x2 * q1);
     const V t1 = s * (w * q1 - x1 * qw - x2 * q0 + x0 * q2);
@@ -264,10 +285,22 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
     store(out + 6 * Slot::p, j, dp0);
     store(out + 6 * (Slot::p + 1), j, dp1);
     store(out + 6 * (Slot::p + 2), j, dp2);
-    // δm' = n × δp' - p' × δn
-    store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0);
-    store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1);
-    store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2);
+    // δm' = n × δp' - p' × δn (- δl for the load directions)
+    if constexpr (LoadForcing) {
+      // The load directions' δl (j ≥ 3: e_{j-3}), as columns.
+      alignas(16) static constexpr double unit_l0[6] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0};
+      alignas(16) static constexpr double unit_l1[6] = {0.0, 0.0, 0.0, 0.0, 1.0, 0.0};
+      alignas(16) static constexpr double unit_l2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 1.0};
+      V dl0, dl1, dl2;
+      load(dl0, unit_l0, j), load(dl1, unit_l1, j), load(dl2, unit_l2, j);
+      store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0 - dl0);
+      store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1 - dl1);
+      store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2 - dl2);
+    } else {
+      store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0);
+      store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1);
+      store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2);
+    }
     // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
     store(out + 6 * Slot::e, j,
           ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
@@ -275,6 +308,9 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   directions(std::type_identity<Lanes4>{}, 0);  // directions 0–3
   directions(std::type_identity<Lanes2>{}, 4);  // directions 4–5
   dY.middleCols<3>(Slot::n).setZero();          // f is constant
+  if constexpr (LoadForcing) {
+    for (int k = 0; k < 3; ++k) dY(k, Slot::n + k) = -1.0;  // δn' = -δf
+  }
   return theta;
 }
 

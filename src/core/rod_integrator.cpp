@@ -1,5 +1,6 @@
 #include "rodshape/core/rod_integrator.hpp"
 
+#include "load_tangent.hpp"
 #include "rk4_step.hpp"
 
 namespace rodshape {
@@ -33,7 +34,8 @@ void store_node_tangent(const NodeState& state, int i, RodConfiguration& out) {
   out.dm_dw[i] = state.Y.middleCols<3>(Slot::m).transpose();
 }
 
-template <bool WithTangent>
+/// LoadForcing: the tangent is with respect to the distributed load (f, l) (load_tangent.hpp).
+template <bool WithTangent, bool LoadForcing = false>
 RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
                                                    NodeState& state,
                                                    RodConfiguration& out) {
@@ -52,7 +54,7 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
     detail::OdePoint* start = &point;
     Matrix63d* start_theta = &theta;
     for (int k = 0; k < rod.substeps; ++k) {
-      detail::rk4_step<WithTangent>(ode, h_step, state, *start, *start_theta);
+      detail::rk4_step<WithTangent, LoadForcing>(ode, h_step, state, *start, *start_theta);
       start = &inner_point;
       start_theta = &inner_theta;
     }
@@ -79,14 +81,14 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
   }
 }
 
-// Runtime dispatch (GCC's function multiversioning): both paths are compiled for the x86-64
-// baseline and for AVX2, and the loader picks the clone for the CPU it runs on, so the portable
-// build puts four of the six tangent directions in one 256-bit register where AVX2 exists (the
-// path without the tangent gains a few per cent from the wider scalar code's vectorisation). The
-// clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise the baseline's
-// (tests/core/test_integrator_dispatch.cpp). A build for one CPU (RODSHAPE_NATIVE) has no clones.
-// Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's run time is
-// set up and the program crashes at load (segfault, seen with a 5-line program).
+// Runtime dispatch (GCC's function multiversioning): every path (also the load tangent's) is
+// compiled for the x86-64 baseline and for AVX2, and the loader picks the clone for the CPU it runs
+// on, so the portable build puts four of the six tangent directions in one 256-bit register where
+// AVX2 exists (the path without the tangent gains a few per cent from the wider scalar code's
+// vectorisation). The clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise
+// the baseline's (tests/core/test_integrator_dispatch.cpp). A build for one CPU (RODSHAPE_NATIVE)
+// has no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before
+// TSan's run time is set up and the program crashes at load (segfault, seen with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
     !defined(__SANITIZE_THREAD__)
 #define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "avx2")))
@@ -106,7 +108,26 @@ RODSHAPE_DISPATCHED void integrate_without_tangent(const ClampedRod& rod,
   integrate_nodes<false>(rod, state, out);
 }
 
+RODSHAPE_DISPATCHED void integrate_with_load_tangent(const ClampedRod& rod,
+                                                     NodeState& state,
+                                                     RodConfiguration& out) {
+  integrate_nodes<true, true>(rod, state, out);
+}
+
 }  // namespace
+
+namespace detail {
+
+void integrate_load_tangent(const ClampedRod& rod,
+                            const BaseWrench& base_wrench,
+                            RodConfiguration& out) {
+  out.resize(rod.nodes(), Derivatives::AllNodes);
+  NodeState state = initial_node_state(rod, base_wrench.force, base_wrench.moment);
+  state.Y.setZero();  // the base wrench does not depend on the load
+  integrate_with_load_tangent(rod, state, out);
+}
+
+}  // namespace detail
 
 void integrate(const ClampedRod& rod,
                const BaseWrench& base_wrench,

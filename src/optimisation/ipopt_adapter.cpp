@@ -120,8 +120,17 @@ IpoptSession& IpoptSession::for_this_thread(const ShapeOptimiserOptions& options
 IpoptRun IpoptSession::run(ShapeProblem& problem,
                            const Vector6d& start,
                            const std::optional<WrenchBounds>& admissible) {
+  return solve(new ShapeNlp(problem, start, finite_difference_hessian_, admissible));
+}
+
+IpoptRun IpoptSession::run(ShapeProblem& problem,
+                           const Vector12d& start,
+                           const std::optional<WrenchBounds>& admissible) {
+  return solve(new ShapeNlp(problem, start, finite_difference_hessian_, admissible));
+}
+
+IpoptRun IpoptSession::solve(ShapeNlp* nlp) {
   Ipopt::IpoptApplication& app = *application_->app;
-  auto* nlp = new ShapeNlp(problem, start, finite_difference_hessian_, admissible);
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
   // MUMPS, IPOPT's linear solver here, is not thread-safe: its calls go one at a time through the
   // lock of mumps_lock.cpp, and the rest of the solve runs in parallel. Until a run has shown that
@@ -142,6 +151,7 @@ IpoptRun IpoptSession::run(ShapeProblem& problem,
   const NlpOutcome& outcome = nlp->outcome();
   const Ipopt::SmartPtr<Ipopt::SolveStatistics> statistics = app.Statistics();
   run.w = outcome.w;
+  run.x = outcome.x;
   run.details.iterations =
       Ipopt::IsValid(statistics) ? statistics->IterationCount() : outcome.iterations;
   run.details.objective = outcome.objective;

@@ -24,8 +24,11 @@ bool uses_finite_difference_hessian(const ShapeOptimiserOptions& options,
 struct IpoptRun {
   SolveStatus status = SolveStatus::NotRun;  // IPOPT's return status, mapped (see the .cpp)
   IpoptDetails details;                      // the raw status, iterations, multipliers
-  Vector6d w = Vector6d::Zero();             // the final iterate
+  Vector6d w = Vector6d::Zero();             // the final iterate (its world wrench)
+  Vector12d x = Vector12d::Zero();           // with a moving base: the final (w_b, ξ)
 };
+
+class ShapeNlp;
 
 class IpoptSession {
  public:
@@ -51,8 +54,13 @@ class IpoptSession {
   IpoptRun run(ShapeProblem& problem,
                const Vector6d& start,
                const std::optional<WrenchBounds>& admissible = std::nullopt);
+  /// With a moving base: from x = (w_b, ξ) (the admissible box bounds w_b).
+  IpoptRun run(ShapeProblem& problem,
+               const Vector12d& start,
+               const std::optional<WrenchBounds>& admissible = std::nullopt);
 
  private:
+  IpoptRun solve(ShapeNlp* nlp);
   struct Application;
   std::unique_ptr<Application> application_;
   bool finite_difference_hessian_;

@@ -119,16 +119,32 @@ ShapeNlp::ShapeNlp(ShapeProblem& problem,
   outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
 }
 
+ShapeNlp::ShapeNlp(ShapeProblem& problem,
+                   const Vector12d& start,
+                   bool finite_difference_hessian,
+                   const std::optional<WrenchBounds>& admissible)
+    : problem_(problem),
+      n_(12),
+      start_(start.head<6>()),
+      start_x_(start),
+      rows_(problem.constraint_count()),
+      finite_difference_hessian_(finite_difference_hessian),
+      admissible_(admissible) {
+  outcome_.x = start;
+  outcome_.w = problem.world_wrench(start).to_vector();
+  outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
+}
+
 bool ShapeNlp::get_nlp_info(Ipopt::Index& n,
                             Ipopt::Index& m,
                             Ipopt::Index& nnz_jac_g,
                             Ipopt::Index& nnz_h_lag,
                             IndexStyleEnum& index_style) {
-  n = kUnknowns;
+  n = n_;
   m = rows_;
-  nnz_jac_g = kUnknowns * rows_;  // dg/dw is dense: every row depends on every component of w
-  // The lower triangle of the dense 6 × 6 Hessian, or nothing for the limited-memory one.
-  nnz_h_lag = finite_difference_hessian_ ? kUnknowns * (kUnknowns + 1) / 2 : 0;
+  nnz_jac_g = n_ * rows_;  // dg/dw is dense: every row depends on every component of w
+  // The lower triangle of the dense n × n Hessian, or nothing for the limited-memory one.
+  nnz_h_lag = finite_difference_hessian_ ? n_ * (n_ + 1) / 2 : 0;
   index_style = C_STYLE;
   return true;
 }
@@ -139,13 +155,21 @@ bool ShapeNlp::get_bounds_info(Ipopt::Index n,
                                Ipopt::Index m,
                                Ipopt::Number* g_l,
                                Ipopt::Number* g_u) {
-  assert(n == kUnknowns && m == rows_);
+  assert(n == n_ && m == rows_);
   (void)n;
   // ±inf → ±kIpoptInfinity, which IPOPT reads as "no bound".
-  const WrenchBounds& bounds = problem_.wrench_bounds();
-  for (int j = 0; j < kUnknowns; ++j) {
-    x_l[j] = std::clamp(bounds.lower(j), -kIpoptInfinity, kIpoptInfinity);
-    x_u[j] = std::clamp(bounds.upper(j), -kIpoptInfinity, kIpoptInfinity);
+  if (n_ == 12) {
+    const Vector12d lower = problem_.variable_lower(), upper = problem_.variable_upper();
+    for (int j = 0; j < 12; ++j) {
+      x_l[j] = std::clamp(lower(j), -kIpoptInfinity, kIpoptInfinity);
+      x_u[j] = std::clamp(upper(j), -kIpoptInfinity, kIpoptInfinity);
+    }
+  } else {
+    const WrenchBounds& bounds = problem_.wrench_bounds();
+    for (int j = 0; j < kUnknowns; ++j) {
+      x_l[j] = std::clamp(bounds.lower(j), -kIpoptInfinity, kIpoptInfinity);
+      x_u[j] = std::clamp(bounds.upper(j), -kIpoptInfinity, kIpoptInfinity);
+    }
   }
   const Eigen::VectorXd& lower = problem_.constraint_lower();
   const Eigen::VectorXd& upper = problem_.constraint_upper();
@@ -165,12 +189,12 @@ bool ShapeNlp::get_starting_point(Ipopt::Index n,
                                   Ipopt::Index /*m*/,
                                   bool init_lambda,
                                   Ipopt::Number* /*lambda*/) {
-  assert(n == kUnknowns);
+  assert(n == n_);
   (void)n;
   // Only a primal start is given (warm_start_init_point stays "no"); IPOPT then initialises the
   // multipliers itself and never asks for them.
   if (!init_x || init_z || init_lambda) return false;
-  for (int j = 0; j < kUnknowns; ++j) x[j] = start_(j);
+  for (int j = 0; j < n_; ++j) x[j] = n_ == 12 ? start_x_(j) : start_(j);
   return true;
 }
 
@@ -184,6 +208,16 @@ bool ShapeNlp::evaluate_at(const Ipopt::Number* x) {
   // IPOPT's new_x says whether x changed since the last call; ShapeProblem::evaluate() is a no-op
   // at the last w anyway, so it is called every time: one 6-vector comparison buys independence
   // from the hint (the derivative checker, for one, moves x between calls).
+  if (n_ == 12) {
+    const Vector12d at = Eigen::Map<const Vector12d>(x);
+    if (!admissible(at.head<6>())) {
+      ++outcome_.refusals;
+      return false;
+    }
+    problem_.evaluate_with_base(at);
+    return std::isfinite(problem_.cost()) && problem_.variable_gradient().allFinite() &&
+           problem_.constraints().allFinite() && problem_.variable_jacobian().allFinite();
+  }
   const Vector6d w = Eigen::Map<const Vector6d>(x);
   if (!admissible(w)) {
     ++outcome_.refusals;
@@ -198,7 +232,7 @@ bool ShapeNlp::eval_f(Ipopt::Index n,
                       const Ipopt::Number* x,
                       bool /*new_x*/,
                       Ipopt::Number& obj_value) {
-  assert(n == kUnknowns);
+  assert(n == n_);
   (void)n;
   if (!evaluate_at(x)) return false;
   obj_value = problem_.cost();
@@ -209,9 +243,14 @@ bool ShapeNlp::eval_grad_f(Ipopt::Index n,
                            const Ipopt::Number* x,
                            bool /*new_x*/,
                            Ipopt::Number* grad_f) {
-  assert(n == kUnknowns);
+  assert(n == n_);
   (void)n;
   if (!evaluate_at(x)) return false;
+  if (n_ == 12) {
+    Eigen::Map<Vector12d> gradient(grad_f);
+    gradient = problem_.variable_gradient();
+    return true;
+  }
   Eigen::Map<Vector6d> gradient(grad_f);
   gradient = problem_.cost_gradient();
   return true;
@@ -219,7 +258,7 @@ bool ShapeNlp::eval_grad_f(Ipopt::Index n,
 
 bool ShapeNlp::eval_g(
     Ipopt::Index n, const Ipopt::Number* x, bool /*new_x*/, Ipopt::Index m, Ipopt::Number* g) {
-  assert(n == kUnknowns && m == rows_);
+  assert(n == n_ && m == rows_);
   (void)n;
   if (m == 0) return true;
   if (!evaluate_at(x)) return false;
@@ -238,12 +277,12 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
                       Ipopt::Index* iRow,
                       Ipopt::Index* jCol,
                       Ipopt::Number* values) {
-  assert(n == kUnknowns && m == rows_ && nele_hess == kUnknowns * (kUnknowns + 1) / 2);
+  assert(n == n_ && m == rows_ && nele_hess == n_ * (n_ + 1) / 2);
   (void)n;
   (void)nele_hess;
   if (values == nullptr) {
     Ipopt::Index k = 0;  // the lower triangle, row by row
-    for (Ipopt::Index i = 0; i < kUnknowns; ++i) {
+    for (Ipopt::Index i = 0; i < n_; ++i) {
       for (Ipopt::Index j = 0; j <= i; ++j, ++k) {
         iRow[k] = i;
         jCol[k] = j;
@@ -253,29 +292,62 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
     return true;
   }
   const Eigen::Map<const Eigen::VectorXd> multipliers(lambda, m);
-  // ∇L at w, or false when the problem is not finite there.
-  const auto lagrangian_gradient = [&](const Vector6d& w, Vector6d& gradient) {
-    problem_.evaluate(w);
-    gradient = obj_factor * problem_.cost_gradient();
-    if (m > 0) gradient.noalias() += problem_.constraint_jacobian().transpose() * multipliers;
-    return gradient.allFinite();
-  };
-  const Vector6d w = Eigen::Map<const Vector6d>(x);
   const Vector6d units = problem_.rod().properties.bending_wrench_units();
-  Vector6d at_w;
-  if (!lagrangian_gradient(w, at_w)) return false;
-  Matrix6d H;
-  for (int j = 0; j < kUnknowns; ++j) {
+  if (n_ == 12) {
+    // δt in units of the rod's length, δφ in radians.
+    Vector12d units_x;
+    units_x << units, Eigen::Vector3d::Constant(problem_.rod().properties.length),
+        Eigen::Vector3d::Ones();
+    return differenced_hessian<Vector12d, Eigen::Matrix<double, 12, 12>>(x, obj_factor,
+                                                                          multipliers, units_x,
+                                                                          values);
+  }
+  return differenced_hessian<Vector6d, Matrix6d>(x, obj_factor, multipliers, units, values);
+}
+
+template <class Vector>
+bool ShapeNlp::lagrangian_gradient(const Vector& x,
+                                   double obj_factor,
+                                   const Eigen::Map<const Eigen::VectorXd>& multipliers,
+                                   Vector& gradient) {
+  if constexpr (Vector::SizeAtCompileTime == 12)
+    problem_.evaluate_with_base(x);
+  else
+    problem_.evaluate(x);
+  if constexpr (Vector::SizeAtCompileTime == 12) {
+    gradient = obj_factor * problem_.variable_gradient();
+    if (multipliers.size() > 0)
+      gradient.noalias() += problem_.variable_jacobian().transpose() * multipliers;
+  } else {
+    gradient = obj_factor * problem_.cost_gradient();
+    if (multipliers.size() > 0)
+      gradient.noalias() += problem_.constraint_jacobian().transpose() * multipliers;
+  }
+  return gradient.allFinite();
+}
+
+template <class Vector, class Matrix>
+bool ShapeNlp::differenced_hessian(const Ipopt::Number* x,
+                                   double obj_factor,
+                                   const Eigen::Map<const Eigen::VectorXd>& multipliers,
+                                   const Vector& units,
+                                   Ipopt::Number* values) {
+  constexpr int kN = Vector::SizeAtCompileTime;
+  const Vector w = Eigen::Map<const Vector>(x);
+  Vector at_w;
+  if (!lagrangian_gradient(w, obj_factor, multipliers, at_w)) return false;
+  Matrix H;
+  for (int j = 0; j < kN; ++j) {
     const double h =
         std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(w[j]), units[j]);
-    Vector6d shifted = w, at_shifted;
+    Vector shifted = w, at_shifted;
     shifted[j] += h;
-    if (!lagrangian_gradient(shifted, at_shifted)) return false;
+    if (!lagrangian_gradient(shifted, obj_factor, multipliers, at_shifted)) return false;
     H.col(j) = (at_shifted - at_w) / h;
   }
   H = 0.5 * (H + H.transpose()).eval();
   Ipopt::Index k = 0;
-  for (int i = 0; i < kUnknowns; ++i)
+  for (int i = 0; i < kN; ++i)
     for (int j = 0; j <= i; ++j) values[k++] = H(i, j);
   return true;
 }
@@ -288,14 +360,14 @@ bool ShapeNlp::eval_jac_g(Ipopt::Index n,
                           Ipopt::Index* iRow,
                           Ipopt::Index* jCol,
                           Ipopt::Number* values) {
-  assert(n == kUnknowns && m == rows_ && nele_jac == kUnknowns * rows_);
+  assert(n == n_ && m == rows_ && nele_jac == n_ * rows_);
   (void)n;
   (void)nele_jac;
   if (values == nullptr) {
-    // The structure, declared once: the dense m × 6 Jacobian in row-major order, entry k = 6 i + j.
+    // The structure, declared once: the dense m × n Jacobian in row-major order, entry k = n i + j.
     Ipopt::Index k = 0;
     for (Ipopt::Index i = 0; i < m; ++i) {
-      for (Ipopt::Index j = 0; j < kUnknowns; ++j, ++k) {
+      for (Ipopt::Index j = 0; j < n_; ++j, ++k) {
         iRow[k] = i;
         jCol[k] = j;
       }
@@ -305,6 +377,11 @@ bool ShapeNlp::eval_jac_g(Ipopt::Index n,
   }
   if (m == 0) return true;
   if (!evaluate_at(x)) return false;
+  if (n_ == 12) {
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor>>(values, m, 12) =
+        problem_.variable_jacobian();
+    return true;
+  }
   // Same row-major order as the structure; dg/dw is stored column-major in Eigen.
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, kUnknowns, Eigen::RowMajor>>(
       values, m, kUnknowns) = problem_.constraint_jacobian();
@@ -341,12 +418,17 @@ void ShapeNlp::finalize_solution(Ipopt::SolverReturn status,
                                  Ipopt::Number obj_value,
                                  const Ipopt::IpoptData* /*ip_data*/,
                                  Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) {
-  assert(n == kUnknowns && m == rows_);
+  assert(n == n_ && m == rows_);
   (void)n;
   outcome_.finalized = true;
   outcome_.solver_return = status;
   outcome_.objective = obj_value;
-  if (x != nullptr) outcome_.w = Eigen::Map<const Vector6d>(x);
+  if (x != nullptr && n_ == 12) {
+    outcome_.x = Eigen::Map<const Vector12d>(x);
+    outcome_.w = problem_.world_wrench(outcome_.x).to_vector();
+  } else if (x != nullptr) {
+    outcome_.w = Eigen::Map<const Vector6d>(x);
+  }
   if (z_L != nullptr) outcome_.lower_bound_multipliers = Eigen::Map<const Vector6d>(z_L);
   if (z_U != nullptr) outcome_.upper_bound_multipliers = Eigen::Map<const Vector6d>(z_U);
   if (lambda != nullptr) outcome_.constraint_multipliers.assign(lambda, lambda + m);

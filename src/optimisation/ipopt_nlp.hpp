@@ -38,7 +38,8 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
 struct NlpOutcome {
   bool finalized = false;  // finalize_solution() was called
   Ipopt::SolverReturn solver_return = Ipopt::UNASSIGNED;
-  Vector6d w = Vector6d::Zero();  // the final iterate
+  Vector6d w = Vector6d::Zero();  // the final iterate (with a moving base: its world wrench)
+  Vector12d x = Vector12d::Zero();  // with a moving base: the final iterate (w_b, ξ)
   double objective = 0.0;
   /// λ, one per row of g. IPOPT's sign convention (Lagrangian F + gᵀλ): λ ≥ 0 where g presses on
   /// its upper bound, λ ≤ 0 where it presses on its lower bound, 0 where inactive.
@@ -61,6 +62,12 @@ class ShapeNlp final : public Ipopt::TNLP {
   /// back); `start` must lie inside.
   ShapeNlp(ShapeProblem& problem,
            const Vector6d& start,
+           bool finite_difference_hessian,
+           const std::optional<WrenchBounds>& admissible = std::nullopt);
+  /// With a moving base (problem.base_moves()): the 12 unknowns x = (w_b, ξ) from `start`; the
+  /// admissible box bounds w_b.
+  ShapeNlp(ShapeProblem& problem,
+           const Vector12d& start,
            bool finite_difference_hessian,
            const std::optional<WrenchBounds>& admissible = std::nullopt);
 
@@ -154,8 +161,23 @@ class ShapeNlp final : public Ipopt::TNLP {
   /// Whether w lies in the admissible box (always, without one).
   bool admissible(const Vector6d& w) const;
 
+  /// ∇L at x (n_ entries) into `gradient`; false when not finite.
+  template <class Vector>
+  bool lagrangian_gradient(const Vector& x,
+                           double obj_factor,
+                           const Eigen::Map<const Eigen::VectorXd>& multipliers,
+                           Vector& gradient);
+  template <class Vector, class Matrix>
+  bool differenced_hessian(const Ipopt::Number* x,
+                           double obj_factor,
+                           const Eigen::Map<const Eigen::VectorXd>& multipliers,
+                           const Vector& units,
+                           Ipopt::Number* values);
+
   ShapeProblem& problem_;
+  int n_ = 6;  // 6, or 12 with a moving base
   Vector6d start_;
+  Vector12d start_x_ = Vector12d::Zero();
   int rows_;  // m, fixed at construction
   bool finite_difference_hessian_;
   NlpOutcome outcome_;

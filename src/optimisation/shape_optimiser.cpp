@@ -98,14 +98,31 @@ std::optional<WrenchBounds> admissible_box(const ShapeProblem& problem,
   return box;
 }
 
+/// With a moving base, the start x = (w_b, ξ) of each start's world wrench at the reference pose.
+std::vector<Vector12d> moving_starts(const ShapeProblem& problem,
+                                     const std::vector<Vector6d>& starts) {
+  std::vector<Vector12d> x;
+  x.reserve(starts.size());
+  for (const Vector6d& w : starts)
+    x.push_back(problem.variables_at_reference(Wrench::from_vector(w)));
+  return x;
+}
+
 StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
-                      const ShapeOptimiserOptions& options) {
+                      const ShapeOptimiserOptions& options,
+                      const Vector12d* moving_start = nullptr) {
   StartResult result;
-  result.run = session.run(problem, start, admissible_box(problem, start, options));
-  // Judge the final iterate ourselves, on the problem as posed.
-  problem.evaluate(result.run.w);
+  if (moving_start) {
+    result.run = session.run(problem, *moving_start,
+                             admissible_box(problem, moving_start->head<6>(), options));
+    problem.evaluate_with_base(result.run.x);
+  } else {
+    result.run = session.run(problem, start, admissible_box(problem, start, options));
+    // Judge the final iterate ourselves, on the problem as posed.
+    problem.evaluate(result.run.w);
+  }
   result.violation = problem.constraint_violation();  // ours, not IPOPT's (scaled, relaxed)
   result.cost = problem.cost();
   result.energy = problem.breakdown().energy;
@@ -180,16 +197,24 @@ ShapeResult optimise_shape(ShapeProblem& problem,
     return solution;
   }
 
-  const std::vector<Vector6d> starts = starts_from(w0, problem.rod(), options.multi_starts);
+  ClampedRod at_start = problem.rod();
+  if (problem.base_moves()) at_start.clamp = problem.base_motion()->reference;
+  const std::vector<Vector6d> starts = starts_from(w0, at_start, options.multi_starts);
+  const std::vector<Vector12d> moving =
+      problem.base_moves() ? moving_starts(problem, starts) : std::vector<Vector12d>{};
   std::vector<StartResult> results;
   results.reserve(starts.size());
   for (std::size_t k = 0; k < starts.size(); ++k) {
-    results.push_back(run_start(session, problem, starts[k], options));
+    results.push_back(
+        run_start(session, problem, starts[k], options, moving.empty() ? nullptr : &moving[k]));
     results.back().start_index = static_cast<int>(k);
   }
   const StartResult& best = results[pick_best(results)];
 
-  problem.evaluate(best.run.w);
+  if (problem.base_moves())
+    problem.evaluate_with_base(best.run.x);  // the rod's clamp is then the optimum's base pose
+  else
+    problem.evaluate(best.run.w);
   solution.status = best.status;
   solution.message = describe(best, static_cast<int>(starts.size()), options);
   solution.base_wrench = Wrench::from_vector(best.run.w);

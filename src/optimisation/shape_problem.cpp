@@ -126,6 +126,12 @@ double ShapeProblem::constraint_violation() const {
     if (!std::isfinite(g_(i))) return std::numeric_limits<double>::infinity();
     violation = std::max({violation, g_(i) - g_upper_(i), g_lower_(i) - g_(i)});
   }
+  if (base_motion_) {
+    const Vector12d lower = variable_lower(), upper = variable_upper();
+    for (int j = 0; j < 12; ++j)
+      violation = std::max({violation, x_(j) - upper(j), lower(j) - x_(j)});
+    return violation;
+  }
   for (int j = 0; j < 6; ++j)
     violation =
         std::max({violation, w_(j) - wrench_bounds_.upper(j), wrench_bounds_.lower(j) - w_(j)});
@@ -150,22 +156,26 @@ void ShapeProblem::evaluate_cost() {
     breakdown_.max_distance = std::max(breakdown_.max_distance, d);
     if (W2 == 0.0) continue;
     const Eigen::Matrix<double, 1, 6> gradient = distance_gradient(rod_, c, projections_[k], point);
-    if (target_.squared_distances) {
-      distance_term += d * d;
-      cost_gradient_ += (2.0 * W2 * d) * gradient.transpose();
-    } else if (target_.distance_smoothing > 0.0) {
-      // pseudo-Huber: ρ(d) = sqrt(d² + δ²) - δ, ρ'(d) = d / sqrt(d² + δ²)
-      const double delta = target_.distance_smoothing;
-      const double root = std::sqrt(d * d + delta * delta);
-      distance_term += root - delta;
-      cost_gradient_ += (W2 * d / root) * gradient.transpose();
-    } else {
-      distance_term += d;
-      cost_gradient_ += W2 * gradient.transpose();
-    }
+    distance_term += distance_penalty(d);
+    cost_gradient_ += distance_term_slope(d) * gradient.transpose();
   }
   breakdown_.distance_term = W2 * distance_term;
   breakdown_.cost = breakdown_.energy_term + breakdown_.distance_term;
+}
+
+double ShapeProblem::distance_penalty(double d) const {
+  if (target_.squared_distances) return d * d;
+  const double delta = target_.distance_smoothing;
+  if (delta > 0.0) return std::sqrt(d * d + delta * delta) - delta;  // pseudo-Huber
+  return d;
+}
+
+double ShapeProblem::distance_term_slope(double d) const {
+  const double W2 = target_.distance_weight;
+  if (target_.squared_distances) return 2.0 * W2 * d;
+  const double delta = target_.distance_smoothing;
+  if (delta > 0.0) return W2 * d / std::sqrt(d * d + delta * delta);  // W2 ρ'(d)
+  return W2;
 }
 
 void ShapeProblem::evaluate_constraints() {

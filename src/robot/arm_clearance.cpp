@@ -40,7 +40,7 @@ ArmClearance::ArmClearance(const ArmModel& arm,
     checks_rod_[c] = arm_.joints_moving_frame(capsules[c].frame) < arm_.joints();
   // The mount: the gaps of the links that (almost) do not move, where the arm stands.
   LinkFrames frames;
-  for_each_pair(q_mount, {}, std::numeric_limits<double>::infinity(), frames,
+  for_each_pair(q_mount, {}, nullptr, std::numeric_limits<double>::infinity(), frames,
                 [&](const Measured& x) {
                   const int f = capsules[static_cast<std::size_t>(x.gap.capsule)].frame;
                   if (x.gap.obstacle >= 0 && arm_.joints_moving_frame(f) <= kMountJoints) {
@@ -69,6 +69,7 @@ double ArmClearance::required_gap(int c, int j) const {
 template <typename Visit>
 void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
                                  const std::vector<const RodNodes*>& rods,
+                                 const std::vector<Obstacle>* others,
                                  double prefilter,
                                  LinkFrames& frames,
                                  Visit&& visit) const {
@@ -89,7 +90,7 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
       x.gap.margin = x.gap.gap - required;
       x.gap.capsule = static_cast<int>(c);
       x.gap.obstacle = obstacle;
-      x.gap.rod_segment = segment;
+      (obstacle == kOtherArm ? x.gap.other_capsule : x.gap.rod_segment) = segment;
       x.point = a_base + d.t * (b_base - a_base);
       x.gradient = R_wb.transpose() * d.gradient;
       visit(x);
@@ -97,6 +98,12 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
     for (std::size_t j = 0; j < scene_.obstacles.size(); ++j) {
       const SegmentDistance d = scene_.obstacles[j].distance(a, b);
       report(d, static_cast<int>(j), -1, required_gap(static_cast<int>(c), static_cast<int>(j)));
+    }
+    if (others != nullptr) {
+      for (std::size_t j = 0; j < others->size(); ++j) {
+        const SegmentDistance d = (*others)[j].distance(a, b);
+        report(d, kOtherArm, static_cast<int>(j), scene_.clearance);
+      }
     }
     if (!checks_rod_[c]) continue;
     for (const RodNodes* rod : rods) {
@@ -134,25 +141,28 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
 }
 
 LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
-                                const std::vector<const RodNodes*>& rods) const {
+                                const std::vector<const RodNodes*>& rods,
+                                const std::vector<Obstacle>* others) const {
   LinkGap least;
   thread_local LinkFrames frames;  // reused: no allocation once sized
-  for_each_pair(q, rods, std::numeric_limits<double>::infinity(), frames, [&](const Measured& x) {
-    // The mount's own gap is not news: it counts only when it sinks deeper.
-    if (is_mount(x.gap) && x.gap.clear()) return;
-    if (x.gap.margin < least.margin) least = x.gap;
-  });
+  for_each_pair(q, rods, others, std::numeric_limits<double>::infinity(), frames,
+                [&](const Measured& x) {
+                  // The mount's own gap is not news: it counts only when it sinks deeper.
+                  if (is_mount(x.gap) && x.gap.clear()) return;
+                  if (x.gap.margin < least.margin) least = x.gap;
+                });
   return least;
 }
 
 void ArmClearance::near_pairs(const Eigen::VectorXd& q,
                               const std::vector<const RodNodes*>& rods,
                               double influence,
-                              std::vector<LinkGapRow>& rows) const {
+                              std::vector<LinkGapRow>& rows,
+                              const std::vector<Obstacle>* others) const {
   rows.clear();
   thread_local LinkFrames frames;  // reused: no allocation once sized
   thread_local Eigen::Matrix<double, 3, Eigen::Dynamic> J;
-  for_each_pair(q, rods, scene_.clearance + influence, frames, [&](const Measured& x) {
+  for_each_pair(q, rods, others, scene_.clearance + influence, frames, [&](const Measured& x) {
     if (x.gap.margin >= influence || is_mount(x.gap)) return;
     const int f = arm_.link_capsules()[static_cast<std::size_t>(x.gap.capsule)].frame;
     arm_.point_jacobian(frames, f, x.point, J);
@@ -160,17 +170,70 @@ void ArmClearance::near_pairs(const Eigen::VectorXd& q,
   });
 }
 
-std::string ArmClearance::describe(const LinkGap& gap) const {
+std::string ArmClearance::describe(const LinkGap& gap, const ArmModel* other) const {
   if (gap.capsule < 0) return "no link measured";
   const std::string link =
       "link " + arm_.link_capsules()[static_cast<std::size_t>(gap.capsule)].label();
-  const std::string what =
-      gap.obstacle >= 0
-          ? "obstacle " +
-                scene_.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle)
-          : std::string("the rod");
+  std::string what;
+  if (gap.obstacle >= 0)
+    what =
+        "obstacle " + scene_.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
+  else if (gap.obstacle == kOtherArm)
+    what = "the other arm's link " +
+           (other != nullptr
+                ? other->link_capsules()[static_cast<std::size_t>(gap.other_capsule)].label()
+                : std::to_string(gap.other_capsule));
+  else
+    what = "the rod";
   return link + ", " + what + ", gap " + millimetres(gap.gap) + " (required " +
          millimetres(gap.gap - gap.margin) + ")";
+}
+
+std::vector<Obstacle> world_capsules(const ArmModel& arm,
+                                     const Pose& world_T_base,
+                                     const Eigen::VectorXd& q) {
+  std::vector<Obstacle> capsules;
+  const std::vector<LinkCapsule>& links = arm.link_capsules();
+  if (links.empty()) return capsules;
+  LinkFrames frames;
+  arm.link_frames(q, frames);
+  capsules.reserve(links.size());
+  for (const LinkCapsule& link : links) {
+    const Pose world_T_link =
+        compose(world_T_base, frames.frames[static_cast<std::size_t>(link.frame)]);
+    CapsuleObstacle shape;
+    shape.from = world_T_link.rotation * link.from + world_T_link.position;
+    shape.to = world_T_link.rotation * link.to + world_T_link.position;
+    shape.radius = link.radius;
+    capsules.push_back(Obstacle{link.label(), shape});
+  }
+  return capsules;
+}
+
+LinkGap arm_arm_gap(const ArmModel& a,
+                    const Pose& world_T_a,
+                    const Eigen::VectorXd& q_a,
+                    const ArmModel& b,
+                    const Pose& world_T_b,
+                    const Eigen::VectorXd& q_b,
+                    double required) {
+  LinkGap least;
+  const std::vector<Obstacle> ours = world_capsules(a, world_T_a, q_a);
+  const std::vector<Obstacle> theirs = world_capsules(b, world_T_b, q_b);
+  for (std::size_t c = 0; c < ours.size(); ++c) {
+    const auto& capsule = std::get<CapsuleObstacle>(ours[c].shape);
+    for (std::size_t j = 0; j < theirs.size(); ++j) {
+      const double gap = theirs[j].distance(capsule.from, capsule.to).distance - capsule.radius;
+      if (gap - required < least.margin) {
+        least.gap = gap;
+        least.margin = gap - required;
+        least.capsule = static_cast<int>(c);
+        least.obstacle = kOtherArm;
+        least.other_capsule = static_cast<int>(j);
+      }
+    }
+  }
+  return least;
 }
 
 }  // namespace rodshape

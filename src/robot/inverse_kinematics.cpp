@@ -85,7 +85,8 @@ class Solver {
   int improve_clearance(Attempt& attempt, const IkClearance& clearance) const {
     std::vector<LinkGapRow> rows;
     const auto shortfall = [&](const Eigen::VectorXd& q) {
-      clearance.clearance->near_pairs(q, clearance.rods, clearance.influence, rows);
+      clearance.clearance->near_pairs(q, clearance.rods, clearance.influence, rows,
+                                      clearance.others);
       double sum = 0.0;
       for (const LinkGapRow& row : rows) sum += row.shortfall * row.shortfall;
       return sum;

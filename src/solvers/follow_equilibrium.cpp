@@ -81,14 +81,23 @@ void add_counts(ShootingSummary& total, const ShootingSummary& part) {
   total.residual_norm = part.residual_norm;
 }
 
-/// The rod at σ: with ramp_loads its distributed load scaled by σ.
+/// The rod at σ: with ramp_loads its distributed load scaled by σ; with clamp_at, its clamp there.
 ClampedRod rod_at(const ClampedRod& rod, const EquilibriumPath& path, double sigma) {
   ClampedRod scaled = rod;
   if (path.ramp_loads) {
     scaled.load.force *= sigma;
     scaled.load.moment *= sigma;
   }
+  if (path.clamp_at) scaled.clamp = path.clamp_at(sigma);
   return scaled;
+}
+
+/// The base wrench w of the equilibrium at σ = `from` as the start of the solve at `to`: with a
+/// moving clamp, turned by R(to) R(from)ᵀ, so that it is the same in the base's frame.
+BaseWrench carried(const EquilibriumPath& path, double from, double to, const BaseWrench& w) {
+  if (!path.clamp_at) return w;
+  const Eigen::Matrix3d turn = path.clamp_at(to).rotation * path.clamp_at(from).rotation.transpose();
+  return {turn * w.force, turn * w.moment};
 }
 
 /// One substep: the direct solve at σ from `guess`, with the derivatives `derivatives`.
@@ -157,8 +166,8 @@ void follow_fixed(const ClampedRod& rod,
   for (int j = 1; j <= options.substeps; ++j) {
     const double sigma = static_cast<double>(j) / options.substeps;
     const Derivatives derivatives = j == options.substeps ? options.final_derivatives : every;
-    ShootingResult solved =
-        solve_at(rod, path, sigma, result.base_wrench, options.shooting, derivatives);
+    const BaseWrench guess = carried(path, result.sigma, sigma, result.base_wrench);
+    ShootingResult solved = solve_at(rod, path, sigma, guess, options.shooting, derivatives);
     add_counts(result.total, solved.summary);
     if (!solved.summary.converged()) {
       result.event = FollowEvent::Lost;
@@ -189,8 +198,9 @@ void follow_adaptive(const ClampedRod& rod,
     Vector6d w_step = w_solved;
     if (dt_previous > 0.0) w_step += (w_solved - w_previous) * (dt / dt_previous);  // secant
     const Derivatives derivatives = t_next >= 1.0 ? options.final_derivatives : every;
-    ShootingResult solved =
-        solve_at(rod, path, t_next, Wrench::from_vector(w_step), options.shooting, derivatives);
+    ShootingResult solved = solve_at(rod, path, t_next,
+                                     carried(path, t, t_next, Wrench::from_vector(w_step)),
+                                     options.shooting, derivatives);
     add_counts(result.total, solved.summary);
     if (solved.summary.converged()) {
       w_previous = w_solved;
@@ -284,7 +294,7 @@ FollowResult follow_equilibrium(const ClampedRod& rod,
     result.message = "the followed shape is not finite (NaN or infinite values)";
   }
   if (result.followed())
-    check_arrival(rod, options, expected, branch_tolerance, result);
+    check_arrival(rod_at(rod, path, 1.0), options, expected, branch_tolerance, result);
   else
     keep_last_equilibrium(rod, path, options, result);
   return result;

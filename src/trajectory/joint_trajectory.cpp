@@ -35,6 +35,19 @@ std::vector<Eigen::VectorXd> differentiate(const std::vector<double>& t,
   return qdot;
 }
 
+/// The least time the step from q0 to q1 takes within the joint velocity limits:
+/// max_j |Δq_j| / v_lim,j (an infinite limit needs no time).
+double needed_time(const Eigen::VectorXd& limits,
+                   const Eigen::VectorXd& q0,
+                   const Eigen::VectorXd& q1) {
+  const Eigen::VectorXd step = (q1 - q0).cwiseAbs();
+  double needed = 0.0;
+  for (Eigen::Index j = 0; j < step.size(); ++j) {
+    if (std::isfinite(limits(j))) needed = std::max(needed, step(j) / limits(j));
+  }
+  return needed;
+}
+
 }  // namespace
 
 std::string to_string(JointTrajectoryStatus status) {
@@ -85,6 +98,8 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
         clearance.rods = {&options.rods[static_cast<std::size_t>(std::max(to - 1, 0))],
                           &options.rods[static_cast<std::size_t>(to)]};
       }
+      if (i < options.others.size() && !options.others[i].empty())
+        clearance.others = &options.others[i];
     }
     const IkResult ik =
         solve_ik(arm, flange_target(placement, sample.pose), seed, options.ik, clearance);
@@ -120,11 +135,7 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
   retimed[0] = result.t[0];
   for (std::size_t i = 0; i + 1 < result.t.size(); ++i) {
     const double dt = result.t[i + 1] - result.t[i];
-    const Eigen::VectorXd step = (result.q[i + 1] - result.q[i]).cwiseAbs();
-    double needed = 0.0;  // max_j |Δq_j| / v_lim,j (an infinite limit needs no time)
-    for (Eigen::Index j = 0; j < step.size(); ++j) {
-      if (std::isfinite(limits(j))) needed = std::max(needed, step(j) / limits(j));
-    }
+    const double needed = needed_time(limits, result.q[i], result.q[i + 1]);
     const bool too_fast = needed > dt;
     if (too_fast) result.slowed = true;
     retimed[i + 1] = retimed[i] + (too_fast ? needed : dt);
@@ -136,6 +147,38 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
   result.qdot = differentiate(result.t, result.q);
   result.status = JointTrajectoryStatus::Complete;
   return result;
+}
+
+void retime_together(const ArmModel& arm_a,
+                     JointTrajectoryResult& a,
+                     const ArmModel& arm_b,
+                     JointTrajectoryResult& b,
+                     const std::vector<double>& path_t) {
+  if (!a.complete() || !b.complete() || a.q.size() != path_t.size() || b.q.size() != path_t.size())
+    throw InputError("retime_together: two complete joint trajectories of " +
+                     std::to_string(path_t.size()) + " samples each are needed, got " +
+                     std::to_string(a.q.size()) + " (" + to_string(a.status) + ") and " +
+                     std::to_string(b.q.size()) + " (" + to_string(b.status) + ")");
+  const Eigen::VectorXd limits_a = arm_a.velocity_limits();
+  const Eigen::VectorXd limits_b = arm_b.velocity_limits();
+  std::vector<double> t(path_t.size());
+  t[0] = path_t[0];
+  bool slowed = false;
+  for (std::size_t i = 0; i + 1 < path_t.size(); ++i) {
+    const double dt = path_t[i + 1] - path_t[i];
+    const double needed = std::max(needed_time(limits_a, a.q[i], a.q[i + 1]),
+                                   needed_time(limits_b, b.q[i], b.q[i + 1]));
+    const bool too_fast = needed > dt;
+    if (too_fast) slowed = true;
+    t[i + 1] = t[i] + (too_fast ? needed : dt);
+  }
+  for (JointTrajectoryResult* result : {&a, &b}) {
+    result->t = t;
+    result->slowed = slowed;
+    result->slowdown =
+        slowed && result->path_duration > 0.0 ? result->duration() / result->path_duration : 1.0;
+    result->qdot = differentiate(result->t, result->q);
+  }
 }
 
 std::string JointTrajectoryResult::brief() const {

@@ -1,4 +1,5 @@
-// test_no_alloc.cpp: integrate() into an already-sized configuration allocates nothing.
+// test_no_alloc.cpp: integrate() and base_pose_derivatives() into an already-sized configuration
+// allocate nothing.
 //
 // The counters (operator new everywhere; malloc & co. on glibc without sanitizers) are
 // tests/support/allocation_counter.hpp, which explains them. Also checked: the data() pointers of
@@ -15,6 +16,7 @@
 #include <new>
 #include <vector>
 
+#include "rodshape/core/base_pose_derivatives.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "support/allocation_counter.hpp"
@@ -81,6 +83,32 @@ TEST(NoAlloc, SecondIntegrationIntoASizedConfigurationAllocatesNothing) {
     EXPECT_EQ(before.pointers, after.pointers) << "a vector of the configuration was reallocated";
     EXPECT_EQ(c.nodes(), rod.nodes());
     EXPECT_EQ(c.n.front(), other.force);  // the call did run
+  }
+}
+
+TEST(NoAlloc, SecondBasePoseDerivativesIntoASizedConfigurationAllocatesNothing) {
+  ClampedRod rod = make_rod();
+  // With the load pass (gravity and a moment load) and without it (no load).
+  for (const bool loaded : {true, false}) {
+    if (loaded) {
+      rod.load.moment = Eigen::Vector3d(0.1, -0.2, 0.05);
+    } else {
+      rod.load = DistributedLoad{};
+    }
+    const RodConfiguration c =
+        integrate(rod, {{0.3, -0.2, 0.1}, {0.05, 0.02, -0.01}}, Derivatives::AllNodes);
+    RodConfiguration out;
+    base_pose_derivatives(rod, c, out);  // sizes out
+    const DataPointers before(out);
+    const RodConfiguration other =
+        integrate(rod, {{-0.1, 0.4, 0.2}, {0.01, -0.03, 0.02}}, Derivatives::AllNodes);
+    const auto [news, mallocs] = count_allocations([&] { base_pose_derivatives(rod, other, out); });
+    EXPECT_EQ(news, 0) << "operator new calls, loaded " << loaded;
+    EXPECT_EQ(mallocs, 0) << "malloc calls, loaded " << loaded;
+    const DataPointers after(out);
+    EXPECT_EQ(before.pointers, after.pointers) << "a vector of the configuration was reallocated";
+    EXPECT_EQ(out.nodes(), rod.nodes());
+    EXPECT_EQ(out.n.front(), other.n.front());  // the call did run
   }
 }
 

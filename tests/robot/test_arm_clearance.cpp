@@ -226,3 +226,92 @@ TEST(ArmClearance, NullSpaceIkMovesTheElbowOutOfAnObstacleAndKeepsTheTip) {
 }
 
 }  // namespace
+
+namespace {
+
+// ---- Two arms (issue 21) ----
+
+/// A second Panda 0.7 m away on the x axis, facing the first.
+Pose facing_pose() {
+  return {Eigen::Vector3d(0.7, 0.05, 0.0),
+          Eigen::AngleAxisd(3.0, Eigen::Vector3d::UnitZ()).toRotationMatrix()};
+}
+
+TEST(ArmClearance, TheOtherArmsCapsulesAreMeasuredExactlyAndTheirGradientsMatch) {
+  const ArmModel arm = samples::panda();
+  Scene empty;
+  empty.clearance = 0.01;
+  const ArmClearance clearance(arm, base_pose(), empty, samples::panda_ready_pose());
+  std::mt19937 rng(21);
+  const double influence = 100.0;  // every pair is a row, in the same order at every q
+  int checked = 0, rows_seen = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const Eigen::VectorXd q = random_q(arm, rng);
+    const Eigen::VectorXd q_other = random_q(arm, rng);
+    const std::vector<Obstacle> others = world_capsules(arm, facing_pose(), q_other);
+    ASSERT_EQ(others.size(), arm.link_capsules().size());
+    // least_gap against the other arm's capsules equals arm_arm_gap over the same pairs.
+    const LinkGap gap = clearance.least_gap(q, {}, &others);
+    const LinkGap direct = arm_arm_gap(arm, base_pose(), q, arm, facing_pose(), q_other, 0.01);
+    ASSERT_EQ(gap.obstacle, kOtherArm) << "trial " << trial;  // the only pairs
+    EXPECT_EQ(gap.capsule, direct.capsule);
+    EXPECT_EQ(gap.other_capsule, direct.other_capsule);
+    EXPECT_NEAR(gap.margin, direct.margin, 1e-12);
+    EXPECT_NE(clearance.describe(gap, &arm).find("the other arm's link"), std::string::npos);
+    // Gradients of every pair against central differences.
+    std::vector<LinkGapRow> rows, plus, minus;
+    clearance.near_pairs(q, {}, influence, rows, &others);
+    ASSERT_EQ(rows.size(), arm.link_capsules().size() * others.size());
+    const double h = 1e-7;
+    Eigen::MatrixXd numeric(static_cast<Eigen::Index>(rows.size()), 7);
+    for (int j = 0; j < 7; ++j) {
+      Eigen::VectorXd qp = q, qm = q;
+      qp(j) += h;
+      qm(j) -= h;
+      clearance.near_pairs(qp, {}, influence, plus, &others);
+      clearance.near_pairs(qm, {}, influence, minus, &others);
+      ASSERT_EQ(plus.size(), rows.size());
+      ASSERT_EQ(minus.size(), rows.size());
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        numeric(static_cast<Eigen::Index>(k), j) =
+            -(plus[k].shortfall - minus[k].shortfall) / (2 * h);
+    }
+    for (std::size_t k = 0; k < rows.size(); ++k, ++rows_seen) {
+      const Eigen::VectorXd fd = numeric.row(static_cast<Eigen::Index>(k)).transpose();
+      if ((rows[k].gradient - fd).norm() < 1e-5 * std::max(1.0, fd.norm())) ++checked;
+    }
+  }
+  // Capsule–capsule distances are smooth but where the nearest points jump between ends.
+  EXPECT_GE(checked, rows_seen * 95 / 100) << checked << " of " << rows_seen;
+}
+
+TEST(ArmClearance, IkKeepsTheLinksOffTheOtherArm) {
+  // The first arm's hand held where the ready pose puts it; a second arm's capsule parked next
+  // to the elbow: the null space moves the elbow off it, the hand stays.
+  const ArmModel arm = samples::panda();
+  Scene empty;
+  empty.clearance = 0.01;
+  const ArmClearance clearance(arm, Pose{}, empty, samples::panda_ready_pose());
+  const Eigen::VectorXd ready = samples::panda_ready_pose();
+  LinkFrames frames;
+  arm.link_frames(ready, frames);
+  const Pose flange = arm.forward_kinematics(ready);
+  // The elbow: the frame of joint 4's child link.
+  const Eigen::Vector3d elbow = frames.frames[4].position;
+  const std::vector<Obstacle> others = {
+      {"other arm", CapsuleObstacle{elbow + Eigen::Vector3d(0, 0.12, -0.1),
+                                    elbow + Eigen::Vector3d(0, 0.12, 0.1), 0.04}}};
+  const LinkGap before = clearance.least_gap(ready, {}, &others);
+  ASSERT_FALSE(before.clear()) << clearance.describe(before);
+  IkClearance push;
+  push.clearance = &clearance;
+  push.others = &others;
+  const IkResult ik = solve_ik(arm, flange, ready, IkOptions{}, push);
+  ASSERT_TRUE(ik.converged()) << ik.message;
+  EXPECT_GT(ik.clearance_steps, 0);
+  const LinkGap after = clearance.least_gap(ik.q, {}, &others);
+  EXPECT_GT(after.margin, before.margin) << clearance.describe(after);
+  EXPECT_LE(ik.position_error, 1e-9);
+}
+
+}  // namespace

@@ -9,12 +9,14 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/scene.hpp"
+#include "rodshape/optimisation/base_motion.hpp"
 #include "rodshape/optimisation/constraint_block.hpp"
 #include "rodshape/optimisation/curve_distance.hpp"
 #include "rodshape/optimisation/shape_constraints.hpp"
@@ -22,6 +24,8 @@
 #include "rodshape/optimisation/workspace.hpp"
 
 namespace rodshape {
+
+using Vector12d = Eigen::Matrix<double, 12, 1>;
 
 /// The terms of F at one w.
 struct ShapeCostBreakdown {
@@ -65,7 +69,7 @@ class ShapeProblem {
   /// workspace (on the tip pose), grasp (one per released entry), curvature (one per node), axial
   /// strain (one per node, Cosserat only), clearance (one per obstacle and segment).
   struct RowBlocks {
-    int workspace = 0, grasp = 0, curvature = 0, axial = 0, clearance = 0;
+    int workspace = 0, grasp = 0, curvature = 0, axial = 0, clearance = 0, base = 0;
   };
 
   int constraint_count() const { return constraint_count_; }
@@ -87,6 +91,32 @@ class ShapeProblem {
   /// Γ); the subgradient 0 is used there. Curvature and axial rows are computed from m̄ = Rᵀm and
   /// n̄ = Rᵀn (u - ũ = K_rot⁻¹ m̄, v_z - ṽ_z = n̄_z / EA), without cancellation against ũ, ṽ.
   void evaluate(const Vector6d& w);
+
+  // ---- A moving base (issue 21, base_motion.hpp): the variables x = (w_b, ξ) ----------------
+  /// Makes the base pose a variable (12 unknowns; the rod's clamp is then the base pose at the
+  /// last evaluation). Adds the base workspace's rows after the others (RowBlocks::base). Throws
+  /// InputError for bad input.
+  void move_base(BaseMotion motion);
+  bool base_moves() const { return base_motion_.has_value(); }
+  const std::optional<BaseMotion>& base_motion() const { return base_motion_; }
+  /// Starts ξ at a new reference pose (the next step's: the base pose of the last optimum).
+  void set_base_reference(const Pose& reference);
+  /// 6, or 12 with a moving base.
+  int variables() const { return base_motion_ ? 12 : 6; }
+  /// The base pose at x (ξ about the reference) and the world wrench (R(0) n_b, R(0) m_b).
+  Pose base_pose(const Vector12d& x) const;
+  BaseWrench world_wrench(const Vector12d& x) const;
+  /// x for a world wrench w at the reference pose (ξ = 0).
+  Vector12d variables_at_reference(const BaseWrench& w) const;
+  /// Integrates at x with the derivatives of both the wrench and the base pose, and evaluates F,
+  /// ∇F, g and dg/dx; a call at the same x does nothing. Does not allocate after the first call.
+  void evaluate_with_base(const Vector12d& x);
+  const Eigen::VectorXd& variable_gradient() const { return gradient_x_; }  // ∇_x F, 12
+  const Eigen::MatrixXd& variable_jacobian() const { return dg_dx_; }      // count × 12
+  /// Bounds of x: w_b within the base's wrench bounds (released components at 0), δt free, each
+  /// |δφ_i| ≤ BaseMotion::kMaxTurn.
+  Vector12d variable_lower() const;
+  Vector12d variable_upper() const;
 
   // Results of the last evaluate().
   double cost() const { return breakdown_.cost; }
@@ -124,6 +154,20 @@ class ShapeProblem {
   Eigen::MatrixXd dg_dw_;
   void evaluate_cost();
   void evaluate_constraints();
+  /// ρ(d) of the distance term (plain, pseudo-Huber or squared), and W2 ρ'(d).
+  double distance_penalty(double d) const;
+  double distance_term_slope(double d) const;
+
+  // A moving base.
+  std::optional<BaseMotion> base_motion_;
+  Vector12d x_ = Vector12d::Zero();
+  RodConfiguration pose_tangent_;  // the configuration with d/dξ in its derivative arrays
+  Eigen::VectorXd gradient_x_;
+  Eigen::MatrixXd dg_dx_, dg_dxi_;
+  Vector6d gradient_xi_ = Vector6d::Zero();
+  void set_clamp(const Vector12d& x);
+  Vector6d distance_gradient_sum(const RodConfiguration& derivatives) const;
+  void evaluate_moving_constraints();
 };
 
 }  // namespace rodshape

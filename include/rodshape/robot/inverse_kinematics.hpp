@@ -54,8 +54,10 @@ struct IkOptions {
 struct IkClearance {
   const ArmClearance* clearance = nullptr;  // null: off
   std::vector<const RodNodes*> rods;        // the rod's centreline(s) to keep the links off
-  double influence = 0.03;                  // δ, m: gaps below required + δ are pushed out
-  int max_iterations = 20;                  // null-space steps
+  /// The other arm's link capsules (world_capsules(); null: none), kept off as the obstacles are.
+  const std::vector<Obstacle>* others = nullptr;
+  double influence = 0.03;  // δ, m: gaps below required + δ are pushed out
+  int max_iterations = 20;  // null-space steps
 };
 
 struct IkResult {

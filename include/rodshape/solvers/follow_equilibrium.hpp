@@ -27,6 +27,10 @@ namespace rodshape {
 struct EquilibriumPath {
   std::function<TipCondition(double sigma)> tip_at;
   bool ramp_loads = false;
+  /// The base end held by a moving gripper (issue 21): the clamp pose at σ (empty: the rod's
+  /// own clamp throughout). Each substep's solve starts from the last base wrench turned with
+  /// the clamp (the same wrench in the base's frame).
+  std::function<Pose(double sigma)> clamp_at = {};
 };
 
 /// The tip held (ClampedTip, or GraspedTip where `released` has a component) at the poses

@@ -5,6 +5,16 @@
 // limits are the tighter of the linear and the angular ones:
 //   σ̇_max = min(v_max / d, ω_max / φ),   σ̈_max = min(a_max / d, α_max / φ),
 // with d the segment's length and φ its rotation angle.
+//
+// Two ends on one clock (a moving base, issue 21): the tip's and the base's waypoints pair up
+// (waypoint k of each is where that end is at step k), and each segment has ONE profile σ(t) that
+// drives both ends, its limits the tighter of the two ends' own ones:
+//   σ̇_max = min over both ends of min(v_max/d, ω_max/φ),  likewise σ̈_max,
+// each end with its own EndEffectorLimits. So each segment takes at least the longer of the two
+// ends' times (more only when one end's speed and the other's acceleration bind), every sample of
+// both ends respects that end's limits, both ends start and stop together at every waypoint, and a
+// segment where neither end moves takes no time (an end that stays put puts no limit, and holds
+// its pose exactly, sample for sample).
 #pragma once
 
 #include <vector>
@@ -51,5 +61,28 @@ PathSize path_size(const std::vector<Pose>& waypoints, const EndEffectorLimits& 
 /// more than EndEffectorLimits::kMaxSamples samples.
 std::vector<TimedPose> time_parameterize(const std::vector<Pose>& waypoints,
                                          const EndEffectorLimits& limits);
+
+/// The tip's and the base's paths on one clock (see the top of this file): the same sample times,
+/// at tip_limits.sample_rate plus every waypoint's arrival exactly (the waypoints themselves).
+struct TwoEndPath {
+  std::vector<TimedPose> tip;
+  std::vector<TimedPose> base;  // base[i].t == tip[i].t for every i
+};
+
+/// path_size() of the two ends on one clock (the samples of each end's path). Throws InputError
+/// when the two lists differ in length.
+PathSize path_size_together(const std::vector<Pose>& tip_waypoints,
+                            const std::vector<Pose>& base_waypoints,
+                            const EndEffectorLimits& tip_limits,
+                            const EndEffectorLimits& base_limits);
+
+/// The two ends' paths through their waypoints (the same count, at least one each), timed
+/// together. Throws InputError for invalid limits (either), lists of different lengths, and, as
+/// time_parameterize(), a path of more than EndEffectorLimits::kMaxSamples samples. With a base
+/// that never moves, tip equals time_parameterize(tip_waypoints, tip_limits).
+TwoEndPath time_parameterize_together(const std::vector<Pose>& tip_waypoints,
+                                      const std::vector<Pose>& base_waypoints,
+                                      const EndEffectorLimits& tip_limits,
+                                      const EndEffectorLimits& base_limits);
 
 }  // namespace rodshape

@@ -18,6 +18,9 @@
 // rod: the rod at a sample between waypoints k and k+1 is taken as both planned shapes, `rods[k]`
 // and `rods[k + 1]` (the tracked rod between them is not stored). The least gap over the samples
 // is reported; the caller decides what a violation means (the planner: re-plan, then collision).
+// With two arms (`others`), each sample's IK keeps the links off the other arm's capsules at that
+// sample too; link_gap stays the gap to the scene and the rod (the arms' mutual gap is measured by
+// the planner from both trajectories, robot/arm_clearance.hpp's arm_arm_gap).
 #pragma once
 
 #include <Eigen/Core>
@@ -48,6 +51,9 @@ struct JointTrajectoryOptions {
   /// clamped to the rods given). Empty with `rods` empty.
   std::vector<int> sample_waypoint;
   double clearance_influence = 0.03;  // m, IkClearance::influence
+  /// With `clearance`: per sample, the other arm's link capsules at that sample (world_capsules();
+  /// empty: no other arm), which IK keeps the links off as it does the obstacles.
+  std::vector<std::vector<Obstacle>> others;
 };
 
 enum class JointTrajectoryStatus {
@@ -91,5 +97,17 @@ JointTrajectoryResult joint_trajectory(const ArmModel& arm,
                                        const std::vector<TimedPose>& path,
                                        const ArmPlacement& placement = {},
                                        const JointTrajectoryOptions& options = {});
+
+/// Two arms moving on one clock (their paths have the same sample times `path_t`, e.g. the
+/// tip's and the base's end-effector paths of a plan with a moving base): both complete
+/// trajectories re-timed together from `path_t`, each segment stretched to the longest either
+/// arm's velocity limits need, so both keep the same times (and their velocities are taken
+/// anew). Throws InputError when either is not complete or its sample count differs from
+/// path_t's.
+void retime_together(const ArmModel& arm_a,
+                     JointTrajectoryResult& a,
+                     const ArmModel& arm_b,
+                     JointTrajectoryResult& b,
+                     const std::vector<double>& path_t);
 
 }  // namespace rodshape

@@ -12,7 +12,8 @@
 
 namespace rodshape {
 
-/// With an arm: its reach shell in the workspace, IK checks of every pose, re-plans.
+/// With an arm: its reach shell in the workspace, IK checks of every pose, re-plans. The same
+/// options serve the base's arm (PlanProblem::base_arm), but for its seed (base_seed).
 struct ArmPlanOptions {
   bool use_reach = true;            // add the arm's reach shell to the workspace
   double reach_margin = 0.02;       // m: the shell is [r_min + margin, r_max - margin]
@@ -29,6 +30,9 @@ struct ArmPlanOptions {
   double link_influence = 0.03;
   ArmReachOptions reach;
   JointTrajectoryOptions joints;  // the first seed and the IK options, for the checks too
+  /// The base arm's first IK seed (PlanProblem::base_arm; empty: its default_seed); the IK
+  /// options in `joints` serve both arms.
+  Eigen::VectorXd base_seed;
   /// Throws InputError naming the field ("ArmPlanOptions.reach_margin" etc.).
   void validate() const;
 };

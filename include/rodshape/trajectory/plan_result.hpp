@@ -43,7 +43,7 @@ struct PlanStep {
   Pose end_effector;     // world_T_tip · tip_T_ee
   /// The base gripper's pose: world_T_base · base_T_ee (MovingBase::grasp); with a fixed clamp,
   /// the clamp's pose, the same at every step.
-  Pose base_end_effector;
+  Pose base_end_effector = {};
 };
 
 /// The equilibrium tracked along the commanded path between waypoints, against the plan.
@@ -72,15 +72,19 @@ struct TrackingResult {
 
 /// With a scene and an arm with collision geometry: the least gap between the arm's link capsules
 /// and the scene's obstacles or the rod (the hand holding it excepted) over the joint trajectory's
-/// samples, and where.
+/// samples, and where. With two arms (PlanProblem::arm and base_arm, with or without a scene): the
+/// least over both arms' links against the scene and the rod and over the pairs of one link of
+/// each arm (obstacle = kOtherArm, -2: `link` is the tip arm's, `other_link` the base arm's).
 struct RobotGapResult {
   double min_gap = std::numeric_limits<double>::infinity();  // m
   double margin = std::numeric_limits<double>::infinity();   // min_gap - its required gap
   int sample = -1;                                           // the joint trajectory's sample
   double t = 0.0;                                            // its time, s
   int step = -1;              // the waypoint it moves towards (0: the initial pose)
+  std::string arm = "tip";    // whose link: "tip" (PlanProblem::arm) or "base" (base_arm)
   std::string link;           // the capsule's label ("panda_link4", "panda_link8 (hand)")
-  int obstacle = -1;          // index into Scene::obstacles; -1: the rod
+  int obstacle = -1;          // index into Scene::obstacles; -1: the rod; -2: the other arm
+  std::string other_link;     // obstacle = -2: the base arm's capsule's label
   std::string obstacle_name;  // its name (empty: unnamed, or the rod)
   std::string note;           // "link panda_link4, obstacle 'shelf', gap 3.2 mm (required 5 mm)"
   bool clear() const { return margin >= -SceneGap::kTolerance; }

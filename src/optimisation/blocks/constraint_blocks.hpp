@@ -14,6 +14,8 @@ namespace rodshape::blocks {
 
 /// The tip pose in the workspace (box, balls, half-spaces, reach shell).
 std::unique_ptr<ConstraintBlock> workspace(const Workspace& workspace);
+/// A moving base's pose (p(0), R(0)) in its workspace (issue 21).
+std::unique_ptr<ConstraintBlock> base_workspace(const Workspace& workspace);
 /// The tip wrench components the grasp cannot transmit are zero.
 std::unique_ptr<ConstraintBlock> grasp(const Grasp& grasp);
 /// |u - ũ|² ≤ κ_max² at every node.

@@ -1,0 +1,288 @@
+// test_two_arm_plan.cpp: the rod held by two arms (issue 21), checked on plans made by hand (the
+// rod's base moved and its shape integrated from chosen base wrenches, as if optimised): two
+// bundled Pandas facing each other 0.8 m apart, one holding each end. Every step's and every path
+// sample's pose has IK for both arms, the two joint trajectories share their times, and the
+// forward kinematics of both arms' joints puts each gripper on its path; a base pose outside the
+// base arm's reach shell is bad input naming PlanProblem.rod.clamp, and one the shell admits but
+// IK cannot reach is reported by the base arm; two hands brought together give a negative
+// arm–arm margin and the status collision.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/robot/arm_clearance.hpp"
+#include "rodshape/robot/arm_placement.hpp"
+#include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/samples/panda.hpp"
+#include "rodshape/samples/rubber_band.hpp"
+#include "support/eigen_compare.hpp"
+#include "support/input_error.hpp"
+#include "trajectory/arm_replanning.hpp"
+
+namespace rodshape {
+namespace {
+
+using testing::input_error_message;
+using testing::rotation_angle;
+
+/// Rotation about `axis` by `angle`.
+Eigen::Matrix3d turn(double angle, const Eigen::Vector3d& axis) {
+  return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+}
+
+/// The rod's base frame when the band lies along +x (its tangent d3 = +x, d1 pointing down).
+Eigen::Matrix3d along_x() { return turn(std::numbers::pi / 2, Eigen::Vector3d::UnitY()); }
+
+/// The grippers hold the band from above: the end effector's z axis (the approach, the flange's
+/// z) along the band's d1 (down when the band lies along +x), its x along the tangent d3; it holds
+/// the band `inset` metres from the end, along the tangent into the band.
+Pose grasp_from_above(double inset) {
+  Eigen::Matrix3d R;
+  R.col(0) = Eigen::Vector3d::UnitZ();   // ee x = d3
+  R.col(1) = -Eigen::Vector3d::UnitY();  // ee y = -d2
+  R.col(2) = Eigen::Vector3d::UnitX();   // ee z = d1
+  return {Eigen::Vector3d(0, 0, inset), R};
+}
+
+/// Two Pandas on the floor facing each other, their bases 0.8 m apart on the x axis: the base
+/// arm at x = -0.4 facing +x, the tip arm at x = +0.4 facing -x; the band 0.35 m above the floor,
+/// from x = -0.145 to 0.145 at rest. Each hand's fingertips 0.1034 m out along the flange's z.
+PlanProblem two_pandas(const BaseWrench& initial_wrench = {}) {
+  PlanProblem problem;
+  problem.rod = samples::rubber_band(ConstitutiveModel::Cosserat, 50);
+  problem.rod.clamp = {Eigen::Vector3d(-0.145, 0, 0.35), along_x()};
+  problem.target.points = {{-0.1, 0, 0.35}, {0.0, 0, 0.35}, {0.1, 0, 0.35}};
+  problem.grasp.tip_to_end_effector = grasp_from_above(-0.01);
+  problem.initial = InitialState::equilibrium(initial_wrench);
+  MovingBase base;
+  base.grasp.tip_to_end_effector = grasp_from_above(0.01);
+  problem.moving_base = base;
+  ArmPlacement tip_placement, base_placement;
+  tip_placement.world_T_base = {Eigen::Vector3d(0.4, 0, 0),
+                                turn(std::numbers::pi, Eigen::Vector3d::UnitZ())};
+  base_placement.world_T_base = {Eigen::Vector3d(-0.4, 0, 0), Eigen::Matrix3d::Identity()};
+  tip_placement.flange_T_ee.position = Eigen::Vector3d(0, 0, 0.1034);
+  base_placement.flange_T_ee.position = Eigen::Vector3d(0, 0, 0.1034);
+  problem.arm = PlanArm{samples::panda(), tip_placement};
+  problem.base_arm = PlanArm{samples::panda(), base_placement};
+  return problem;
+}
+
+/// One step of a hand-made plan: the base moved to `base`, the shape integrated from `wrench`.
+PlanStep hand_made_step(const PlanProblem& problem, const Pose& base, const BaseWrench& wrench) {
+  ClampedRod rod = problem.rod;
+  rod.clamp = base;
+  PlanStep step;
+  step.solution.status = SolveStatus::Converged;
+  step.solution.base_wrench = wrench;
+  step.solution.configuration = integrate(rod, wrench, Derivatives::None);
+  step.end_effector = compose(step.solution.configuration.tip(), problem.grasp.tip_to_end_effector);
+  step.base_end_effector = compose(base, problem.moving_base->grasp.tip_to_end_effector);
+  return step;
+}
+
+/// A plan made by hand: `steps` steps moving the base by (0, 0.03, 0.02) m and turning it by 0.25
+/// rad about z in all, while a growing base moment bends the band; both paths timed together.
+PlanResult hand_made_plan(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          int steps = 4,
+                          const Eigen::Vector3d& base_shift = {0.0, 0.03, 0.02}) {
+  PlanResult plan;
+  plan.status = PlanStatus::Complete;
+  plan.initial_configuration = integrate(problem.rod, problem.initial.base_wrench);
+  plan.initial_wrench = problem.initial.base_wrench;
+  std::vector<Pose> tips{
+      compose(plan.initial_configuration.tip(), problem.grasp.tip_to_end_effector)};
+  std::vector<Pose> bases{
+      compose(problem.rod.clamp, problem.moving_base->grasp.tip_to_end_effector)};
+  for (int k = 1; k <= steps; ++k) {
+    const double f = static_cast<double>(k) / steps;
+    const Pose base{problem.rod.clamp.position + f * base_shift,
+                    turn(0.25 * f, Eigen::Vector3d::UnitZ()) * problem.rod.clamp.rotation};
+    const BaseWrench wrench{Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 0.03 * f)};
+    plan.steps.push_back(hand_made_step(problem, base, wrench));
+    tips.push_back(plan.steps.back().end_effector);
+    bases.push_back(plan.steps.back().base_end_effector);
+  }
+  const TwoEndPath path =
+      time_parameterize_together(tips, bases, options.end_effector, options.base_end_effector);
+  plan.end_effector_path = path.tip;
+  plan.base_end_effector_path = path.base;
+  return plan;
+}
+
+/// Both arms' FK at every joint sample on their grippers' path samples; returns the largest
+/// position error, m (and the rotation's in `angle`).
+double fk_error(const PlanArm& arm,
+                const JointTrajectoryResult& joints,
+                const std::vector<TimedPose>& path,
+                double& angle) {
+  double worst = 0.0;
+  angle = 0.0;
+  for (std::size_t i = 0; i < joints.q.size(); ++i) {
+    const Pose reached = end_effector_pose(arm.model, arm.placement, joints.q[i]);
+    worst = std::max(worst, (reached.position - path[i].pose.position).norm());
+    angle = std::max(angle, rotation_angle(reached.rotation, path[i].pose.rotation));
+  }
+  return worst;
+}
+
+TEST(TwoArmPlan, TwoPandasFollowBothEndsSampleBySample) {
+  const PlanProblem problem = two_pandas();
+  const PlanOptions options;
+  PlanResult plan = hand_made_plan(problem, options);
+  const std::size_t samples = plan.end_effector_path.size();
+  ASSERT_GT(samples, 100u);
+  detail::check_arms(problem, options, plan);
+  ASSERT_TRUE(plan.arm && plan.base_arm);
+  const ArmPlanResult& tip = *plan.arm;
+  const ArmPlanResult& base = *plan.base_arm;
+  ASSERT_EQ(tip.status, ArmPlanStatus::Reachable) << tip.message;
+  ASSERT_EQ(base.status, ArmPlanStatus::Reachable) << base.message;
+  EXPECT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  // The shells: the base arm's for its wrist point in the rod's base frame.
+  ASSERT_TRUE(base.shell && base.reach);
+  EXPECT_LE(base.shell->distance(problem.rod.clamp), base.shell->outer_radius);
+  EXPECT_GE(base.shell->distance(problem.rod.clamp), base.shell->inner_radius);
+  for (const PlanStep& step : plan.steps) {
+    const Pose rod_base = step.solution.configuration.node_pose(0);
+    EXPECT_LE(base.shell->distance(rod_base), base.shell->outer_radius);
+  }
+  // IK at every step (and the initial pose) for both arms.
+  ASSERT_EQ(tip.waypoint_q.size(), plan.steps.size() + 1);
+  ASSERT_EQ(base.waypoint_q.size(), plan.steps.size() + 1);
+  for (std::size_t k = 1; k <= plan.steps.size(); ++k) {
+    const Pose reached =
+        end_effector_pose(problem.base_arm->model, problem.base_arm->placement, base.waypoint_q[k]);
+    EXPECT_LE((reached.position - plan.steps[k - 1].base_end_effector.position).norm(), 1e-9);
+  }
+  // IK at every path sample, on one clock.
+  ASSERT_TRUE(tip.joints.complete()) << tip.joints.message;
+  ASSERT_TRUE(base.joints.complete()) << base.joints.message;
+  ASSERT_EQ(tip.joints.q.size(), samples);
+  ASSERT_EQ(base.joints.q.size(), samples);
+  EXPECT_EQ(tip.joints.t, base.joints.t);
+  double angle = 0.0;
+  EXPECT_LE(fk_error(*problem.arm, tip.joints, plan.end_effector_path, angle), 1e-6);
+  EXPECT_LE(angle, 1e-6);
+  EXPECT_LE(fk_error(*problem.base_arm, base.joints, plan.base_end_effector_path, angle), 1e-6);
+  EXPECT_LE(angle, 1e-6);
+  // The last joint samples put both grippers on their last poses.
+  const Pose tip_last =
+      end_effector_pose(problem.arm->model, problem.arm->placement, tip.joints.q.back());
+  const Pose base_last =
+      end_effector_pose(problem.base_arm->model, problem.base_arm->placement, base.joints.q.back());
+  EXPECT_LE((tip_last.position - plan.steps.back().end_effector.position).norm(), 1e-6);
+  EXPECT_LE((base_last.position - plan.steps.back().base_end_effector.position).norm(), 1e-6);
+  // Within the joints' position and velocity limits.
+  for (const auto* arm : {&*problem.arm, &*problem.base_arm}) {
+    const JointTrajectoryResult& joints = arm == &*problem.arm ? tip.joints : base.joints;
+    const Eigen::VectorXd v = arm->model.velocity_limits();
+    for (std::size_t i = 0; i < joints.q.size(); ++i) {
+      EXPECT_NO_THROW(arm->model.check_joint_positions(joints.q[i], "q"));
+      EXPECT_TRUE((joints.qdot[i].cwiseAbs().array() <= v.array() * (1 + 1e-9)).all())
+          << "sample " << i;
+    }
+  }
+  // The two arms' links measured against each other: clear, named in the scene result.
+  ASSERT_TRUE(plan.scene && plan.scene->robot);
+  EXPECT_TRUE(plan.scene->robot->clear()) << plan.scene->robot->note;
+}
+
+TEST(TwoArmPlan, ABaseOutsideTheBaseArmsShellIsBadInputNamingTheClamp) {
+  PlanProblem problem = two_pandas();
+  problem.rod.clamp.position = Eigen::Vector3d(0.6, 0, 0.35);  // 1 m from the base arm
+  PlanResult plan = hand_made_plan(problem, PlanOptions{}, 1);
+  const std::string message =
+      input_error_message([&] { detail::check_arms(problem, PlanOptions{}, plan); });
+  EXPECT_NE(message.find("PlanProblem.rod.clamp"), std::string::npos) << message;
+  EXPECT_NE(message.find("the base arm"), std::string::npos) << message;
+}
+
+TEST(TwoArmPlan, ABasePoseWithoutIkIsReportedByTheBaseArm) {
+  // A base arm and no tip arm; no reach shell, so that a step moving the base 0.9 m sideways,
+  // out of the base arm's reach, is found by IK: the base arm reports that step by name.
+  PlanProblem problem = two_pandas();
+  problem.arm.reset();
+  PlanOptions options;
+  options.arm.use_reach = false;
+  PlanResult plan = hand_made_plan(problem, options, 1, {0.0, 0.9, 0.0});
+  detail::check_arms(problem, options, plan);
+  EXPECT_FALSE(plan.arm);
+  ASSERT_TRUE(plan.base_arm);
+  EXPECT_EQ(plan.base_arm->status, ArmPlanStatus::Unreachable) << plan.base_arm->message;
+  EXPECT_NE(plan.base_arm->message.find("step 1's base end-effector pose has no inverse "
+                                        "kinematics solution"),
+            std::string::npos)
+      << plan.base_arm->message;
+  EXPECT_EQ(plan.base_arm->waypoint_q.size(), 1u);  // the initial pose's only
+  EXPECT_FALSE(plan.base_arm->shell);
+}
+
+TEST(TwoArmPlan, TwoHandsThatMeetHaveANegativeMargin) {
+  // Both Pandas' hands on the same point between them: their capsules overlap.
+  const PlanProblem problem = two_pandas();
+  const Pose meet{Eigen::Vector3d(0, 0, 0.35), along_x() * grasp_from_above(0).rotation};
+  const IkResult a = solve_ik(problem.arm->model, flange_target(problem.arm->placement, meet),
+                              samples::panda_ready_pose());
+  const Pose other{meet.position, turn(std::numbers::pi, Eigen::Vector3d::UnitZ()) * meet.rotation};
+  const IkResult b =
+      solve_ik(problem.base_arm->model, flange_target(problem.base_arm->placement, other),
+               samples::panda_ready_pose());
+  ASSERT_TRUE(a.converged() && b.converged()) << a.message << " / " << b.message;
+  const LinkGap gap =
+      arm_arm_gap(problem.arm->model, problem.arm->placement.world_T_base, a.q,
+                  problem.base_arm->model, problem.base_arm->placement.world_T_base, b.q, 0.005);
+  ASSERT_GE(gap.capsule, 0);
+  EXPECT_EQ(gap.obstacle, kOtherArm);
+  EXPECT_LT(gap.margin, 0.0);
+  EXPECT_LT(gap.gap, 0.0);
+  EXPECT_NEAR(gap.gap - gap.margin, 0.005, 1e-15);
+  // Symmetric: the same pair seen from the other arm.
+  const LinkGap back =
+      arm_arm_gap(problem.base_arm->model, problem.base_arm->placement.world_T_base, b.q,
+                  problem.arm->model, problem.arm->placement.world_T_base, a.q, 0.005);
+  EXPECT_NEAR(back.gap, gap.gap, 1e-12);
+  // Apart, at the ready pose, 0.8 m apart: clear.
+  const LinkGap ready =
+      arm_arm_gap(problem.arm->model, problem.arm->placement.world_T_base,
+                  samples::panda_ready_pose(), problem.base_arm->model,
+                  problem.base_arm->placement.world_T_base, samples::panda_ready_pose(), 0.005);
+  EXPECT_GT(ready.margin, 0.0);
+}
+
+TEST(TwoArmPlan, HandsTooNearEachOtherMakeThePlanACollision) {
+  // A short band (8 cm) held by both: the two hands 6 cm apart, their capsules overlap.
+  PlanProblem problem = two_pandas();
+  problem.rod.properties.length = 0.08;
+  problem.rod.clamp.position.x() = -0.04;
+  const PlanOptions options;
+  PlanResult plan = hand_made_plan(problem, options, 2, {0.0, 0.01, 0.0});
+  detail::check_arms(problem, options, plan);
+  ASSERT_TRUE(plan.arm && plan.base_arm);
+  EXPECT_EQ(plan.status, PlanStatus::Collision) << plan.message;
+  EXPECT_EQ(plan.arm->status, ArmPlanStatus::Collision) << plan.arm->message;
+  EXPECT_EQ(plan.base_arm->status, ArmPlanStatus::Collision);
+  EXPECT_EQ(plan.message.find("the two arms come too near each other at step "), 0u)
+      << plan.message;
+  EXPECT_NE(plan.message.find("(hand) of the base arm, gap -"), std::string::npos) << plan.message;
+  ASSERT_TRUE(plan.scene && plan.scene->robot);
+  const RobotGapResult& robot = *plan.scene->robot;
+  EXPECT_EQ(robot.obstacle, kOtherArm);
+  EXPECT_FALSE(robot.other_link.empty());
+  EXPECT_LT(robot.margin, 0.0);
+  // Measured anew at that sample.
+  const LinkGap replay = arm_arm_gap(
+      problem.arm->model, problem.arm->placement.world_T_base,
+      plan.arm->joints.q[static_cast<std::size_t>(robot.sample)], problem.base_arm->model,
+      problem.base_arm->placement.world_T_base,
+      plan.base_arm->joints.q[static_cast<std::size_t>(robot.sample)], problem.scene.clearance);
+  EXPECT_NEAR(replay.margin, robot.margin, 1e-12);
+}
+
+}  // namespace
+}  // namespace rodshape
