@@ -280,7 +280,8 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
   result["interpolation"] = interpolation_object(plan.interpolation);
-  result["scene"] = io_detail::scene_json(request.scene, plan.scene);
+  result["scene"] = io_detail::scene_json(request.scene, plan.scene,
+                                          request.arm.has_value() && request.base_arm.has_value());
   result["robot"] =
       plan.arm ? robot_object(plan, *plan.arm, task.options.arm, false) : Json(nullptr);
   result["joint_trajectory"] =
@@ -288,7 +289,7 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   // The arm that holds the base end (issue 21): only with one, so that a plan without it keeps
   // its document.
   if (plan.base_arm) {
-    result["base_robot"] = robot_object(plan, *plan.base_arm, task.base_arm_options, true);
+    result["base_robot"] = robot_object(plan, *plan.base_arm, task.options.arm, true);
     result["base_joint_trajectory"] =
         joint_trajectory_object(plan.base_arm->joints, "base_joint_trajectory.csv");
   }

@@ -260,10 +260,13 @@ void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& o
 namespace {
 
 /// The fields of `robot` and `base_robot`: the arm (its URDF read) and its options.
+/// The arm's seed goes to options.joints.seed (the tip's arm) or options.base_seed (`base_arm`);
+/// the other options are the two arms' shared ones.
 PlanArm read_arm(const YamlField& robot,
                  const std::string& task_directory,
                  PlanTask& task,
-                 ArmPlanOptions& options) {
+                 bool base_arm) {
+  ArmPlanOptions& options = task.options.arm;
   const std::string name = robot.path();
   robot.expect_mapping(
       {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach", "links"},
@@ -306,7 +309,7 @@ PlanArm read_arm(const YamlField& robot,
     for (std::size_t i = 0; i < values.size(); ++i)
       q(static_cast<Eigen::Index>(i)) = values[i].number();
     seed.located([&] { result.model.check_joint_positions(q, seed.path()); });
-    options.joints.seed = q;
+    (base_arm ? options.base_seed : options.joints.seed) = q;
   }
   if (const YamlField reach = robot.get("reach"); reach.present()) {
     reach.expect_mapping({"use", "margin", "tightening", "max_replans", "samples"});
@@ -330,13 +333,20 @@ PlanArm read_arm(const YamlField& robot,
 }  // namespace
 
 void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {
-  task.problem.arm.emplace(read_arm(robot, task_directory, task, task.options.arm));
+  task.problem.arm.emplace(read_arm(robot, task_directory, task, false));
 }
 
 void read_base_robot_section(const YamlField& robot,
+                             const YamlField& tip_robot,
                              const std::string& task_directory,
                              PlanTask& task) {
-  task.problem.base_arm.emplace(read_arm(robot, task_directory, task, task.base_arm_options));
+  // One ArmPlanOptions serves both arms (all but the seed): said once.
+  for (const char* key : {"reach", "links"})
+    if (const YamlField field = robot.get(key);
+        field.present() && tip_robot.present() && tip_robot.has(key))
+      field.fail(field.path() + ": the two arms share their " + key +
+                 " options: give them once, in robot." + key);
+  task.problem.base_arm.emplace(read_arm(robot, task_directory, task, true));
 }
 
 void located_as(const YamlField& field,

@@ -85,8 +85,11 @@ Scene read_scene_section(const YamlField& scene,
 void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task);
 
 /// `base_robot` (issue 21): the fields of `robot`, for the arm that holds the base end (s = 0).
-/// Into `task`: problem.base_arm and base_arm_options.
+/// Into `task`: problem.base_arm, its seed options.arm.base_seed; its reach and links are the
+/// options the two arms share (options.arm), given in one of the two sections (`tip_robot`, the
+/// `robot` section, absent or not).
 void read_base_robot_section(const YamlField& robot,
+                             const YamlField& tip_robot,
                              const std::string& task_directory,
                              PlanTask& task);
 

@@ -200,7 +200,8 @@ void read_moving_base(const YamlField& root,
     io_detail::located_as(workspace, "Workspace", "base_workspace",
                           [&] { moving_base.workspace.validate(); });
   }
-  if (base_robot.present()) io_detail::read_base_robot_section(base_robot, task_directory, task);
+  if (base_robot.present())
+    io_detail::read_base_robot_section(base_robot, root.get("robot"), task_directory, task);
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/robot/arm_clearance.hpp"
 #include "support/hand_made_plan.hpp"
 #include "support/input_error.hpp"
 
@@ -198,7 +199,7 @@ TEST(MovingBaseOutput, BaseArmObjectsAndFiles) {
   EXPECT_EQ(robot["status"], "reachable");
   EXPECT_EQ(robot["message"], "every pose reachable");
   EXPECT_EQ(robot["reach"]["wrist_range"], Json::parse("[0.1, 0.8]"));
-  EXPECT_EQ(robot["reach"]["margin"], task.base_arm_options.reach_margin);
+  EXPECT_EQ(robot["reach"]["margin"], task.options.arm.reach_margin);
   // |q - c| at the rod's base pose p(0), R(0): initial and each step.
   const Workspace::ReachShell& shell = *plan.base_arm->shell;
   ASSERT_EQ(robot["reach"]["wrist_distances"].size(), plan.steps.size() + 1);
@@ -252,6 +253,50 @@ TEST(MovingBaseOutput, BaseArmObjectsAndFiles) {
   EXPECT_FALSE(fs::exists(dir / "base_joint_trajectory.json"));
   EXPECT_EQ(lines_of(read_file(dir / "trajectory.csv")).front(), kTrajectoryCsvHeader);
   fs::remove_all(dir);
+}
+
+TEST(MovingBaseOutput, TwoArmsReportTheirGapWithOrWithoutAScene) {
+  const std::string panda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
+  const PlanTask task = parse_plan_task(
+      moving_task_text() + "robot:\n  urdf: " + panda + "\nbase_robot:\n  urdf: " + panda + "\n",
+      "plan.yaml");
+  ASSERT_TRUE(task.problem.arm && task.problem.base_arm && task.problem.scene.empty());
+  PlanResult plan = moving_plan(task);
+  plan.base_arm = base_arm_result(plan);
+  RobotGapResult gap;
+  gap.min_gap = 0.004;
+  gap.margin = -0.001;
+  gap.sample = 7;
+  gap.step = 2;
+  gap.arm = "tip";
+  gap.link = "panda_link7";
+  gap.obstacle = kOtherArm;
+  gap.other_link = "panda_link6";
+  plan.scene.emplace().robot = gap;
+  const Json j = Json::parse(plan_result_json(plan, task));
+  ASSERT_TRUE(j["scene"].is_object());
+  EXPECT_EQ(j["scene"]["obstacles"].size(), 0u);
+  EXPECT_EQ(j["scene"]["robot_min_gap"], 0.004);
+  EXPECT_EQ(j["scene"]["robot_clear"], false);
+  const Json& at = j["scene"]["robot_min_gap_at"];
+  EXPECT_EQ(at["obstacle"], "other_arm");
+  EXPECT_EQ(at["arm"], "tip");
+  EXPECT_EQ(at["link"], "panda_link7");
+  EXPECT_EQ(at["other_link"], "panda_link6");
+  // A gap to the rod: no other link.
+  plan.scene->robot->obstacle = -1;
+  plan.scene->robot->arm = "base";
+  const Json rod = Json::parse(plan_result_json(plan, task));
+  EXPECT_EQ(rod["scene"]["robot_min_gap_at"]["obstacle"], "rod");
+  EXPECT_EQ(rod["scene"]["robot_min_gap_at"]["arm"], "base");
+  EXPECT_TRUE(rod["scene"]["robot_min_gap_at"]["other_link"].is_null());
+
+  // One arm and no scene: no scene object, as before.
+  const PlanTask one =
+      parse_plan_task(kHandMadeTask + "robot:\n  urdf: " + panda + "\n", "plan.yaml");
+  PlanResult one_plan = make_plan(one, 3);
+  one_plan.scene.emplace().robot = gap;
+  EXPECT_TRUE(Json::parse(plan_result_json(one_plan, one))["scene"].is_null());
 }
 
 TEST(MovingBaseOutput, IncompleteBaseJointTrajectoryWritesNoFile) {

@@ -1,7 +1,8 @@
 // test_moving_base_reader.cpp: the task file's keys of a moving base (issue 21): base.moving,
 // base.motion_weight, base_grasp, base_workspace, trajectory.base_end_effector and base_robot,
 // read into PlanProblem::moving_base, base_arm, PlanOptions::base_end_effector and
-// PlanTask::base_arm_options; their defaults; and each bad value named with its file and line.
+// PlanOptions::arm (base_seed; the options the two arms share); their defaults; and each bad value
+// named with its file and line.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -164,19 +165,38 @@ TEST(MovingBaseReader, BaseRobotImpliesMovingAndMayNameTheSameUrdf) {
       task.problem.base_arm->placement.flange_T_ee.position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
   EXPECT_TRUE(
       task.problem.arm->placement.world_T_base.position.isApprox(Eigen::Vector3d(0.4, 0, 0)));
-  const ArmPlanOptions& options = task.base_arm_options;
-  ASSERT_EQ(options.joints.seed.size(), 7);
-  EXPECT_EQ(options.joints.seed(3), -2.0);
+  const ArmPlanOptions& options = task.options.arm;
+  ASSERT_EQ(options.base_seed.size(), 7);
+  EXPECT_EQ(options.base_seed(3), -2.0);
+  EXPECT_EQ(options.joints.seed.size(), 0);  // the tip arm's seed: its default
+  // Given in base_robot (robot has none), the options the two arms share.
   EXPECT_FALSE(options.use_reach);
   EXPECT_EQ(options.reach_margin, 0.05);
   EXPECT_EQ(options.max_replans, 2);
   EXPECT_FALSE(options.link_clearance);
   EXPECT_EQ(options.link_influence, 0.05);
-  // The tip arm's options keep their defaults.
-  EXPECT_TRUE(task.options.arm.use_reach);
-  EXPECT_EQ(task.options.arm.joints.seed.size(), 0);
   // Both URDFs are inputs of the run.
   EXPECT_EQ(std::count(task.input_files.begin(), task.input_files.end(), kPanda), 2);
+}
+
+TEST(MovingBaseReader, TheArmsSharedOptionsAreGivenOnce) {
+  const std::string both = kPlan + "robot:\n  urdf: " + kPanda +
+                           "\n  seed: [0, -0.7, 0, -2.3, 0, 1.6, 0.7]\n  reach: {margin: 0.03}\n"
+                           "base_robot:\n  urdf: " +
+                           kPanda + "\n  reach: {margin: 0.04}\n";
+  EXPECT_TRUE(starts_with(error_of(both), "plan.yaml:18: base_robot.reach: the two arms share"));
+  EXPECT_NE(error_of(both).find("robot.reach"), std::string::npos);
+  const std::string links = kPlan + "robot:\n  urdf: " + kPanda +
+                            "\n  links: {influence: 0.04}\nbase_robot:\n  urdf: " + kPanda +
+                            "\n  links: {influence: 0.05}\n";
+  EXPECT_TRUE(starts_with(error_of(links), "plan.yaml:17: base_robot.links: the two arms share"));
+  // Each arm keeps its own seed.
+  const PlanTask task = parse_plan_task(testing::replaced_first(both, "\n  reach: {margin: 0.04}",
+                                                                "\n  seed: [0, 0, 0, -2, 0, 2, 0]"),
+                                        "plan.yaml");
+  EXPECT_EQ(task.options.arm.joints.seed(1), -0.7);
+  EXPECT_EQ(task.options.arm.base_seed(5), 2.0);
+  EXPECT_EQ(task.options.arm.reach_margin, 0.03);
 }
 
 TEST(MovingBaseReader, MovingAloneKeepsTheDefaultPose) {

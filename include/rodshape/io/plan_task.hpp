@@ -4,7 +4,8 @@
 // docs/task-file.md for the file format. An optional robot section places an arm (URDF) in the
 // world (PlanProblem::arm, with its reach and re-plan options in PlanOptions::arm). With a moving
 // base (base.moving, issue 21) the base end is held by a gripper too (PlanProblem::moving_base),
-// optionally carried by a second arm (base_robot: PlanProblem::base_arm, base_arm_options).
+// optionally carried by a second arm (base_robot: PlanProblem::base_arm; its seed in
+// PlanOptions::arm.base_seed, its other options shared with the tip's arm).
 #pragma once
 
 #include <map>
@@ -29,10 +30,7 @@ struct PlanTask {
   /// `sensor.kind: depth`: the depth camera that sees it instead of `sensor`'s markers.
   std::optional<DepthSensorModel> depth_sensor;
   ClosedLoopOptions closed_loop;  // `rodshape validate --closed-loop`: estimation and re-plans
-  /// base_robot's seed, reach and links options (as robot's are in options.arm), for the arm that
-  /// holds the base end (problem.base_arm); the defaults without one.
-  ArmPlanOptions base_arm_options;
-  std::string source;  // the file name that messages name
+  std::string source;             // the file name that messages name
   /// The files the task was read from (the task file, robot.urdf): never an output of its run.
   std::vector<std::string> input_files;
   /// The line of each key of the file, two levels deep ("initial" → 14, "initial.tip" → 15).
