@@ -125,3 +125,17 @@ def test_a_fixed_clamp_plan_has_its_clamp_as_base_end_effector(tmp_path):
     assert not any(name.startswith("base_") for name in names)
     header = (tmp_path / "trajectory.csv").read_text().splitlines()[0]
     assert header == "t,x,y,z,qw,qx,qy,qz"
+
+
+def test_the_path_figure_draws_the_base_gripper():
+    pytest.importorskip("matplotlib")
+    from rodshape import plot
+    t = np.linspace(0.0, 1.0, 11)
+    tip = np.column_stack([t, t, 0 * t, 0.29 + 0 * t, 1 + 0 * t, 0 * t, 0 * t, 0 * t])
+    base = np.column_stack([0 * t, -t, 0 * t, 1 + 0 * t, 0 * t, 0 * t, 0 * t])
+    figure = plot.plot_path(np.hstack([tip, base]), [0, 10])
+    labels = [line.get_label() for line in figure.axes[0].get_lines()]
+    assert "base gripper y" in labels and "x" in labels
+    only_tip = plot.plot_path(tip, [0, 10])
+    assert not any(label.startswith("base") for label in
+                   [line.get_label() for line in only_tip.axes[0].get_lines()])
