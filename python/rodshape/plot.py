@@ -208,11 +208,15 @@ def plot_reach(plan):
 
 
 def plot_path(path, waypoint_rows):
-    """The end effector's x, y, z over time."""
+    """The end effector's x, y, z over time (with a moving base, the base gripper's too, dashed:
+    trajectory.csv's columns bx, by, bz)."""
     t = path[:, 0]
     fig, ax = plt.subplots(figsize=(9, 5))
     for k, axis in enumerate("xyz"):
         ax.plot(t, path[:, 1 + k], color=f"C{k}", label=axis)
+    if path.shape[1] >= 15:
+        for k, axis in enumerate("xyz"):
+            ax.plot(t, path[:, 8 + k], "--", color=f"C{k}", label=f"base gripper {axis}")
     mark_waypoints(ax, t[waypoint_rows])
     ax.set_xlabel("time (s)")
     ax.set_ylabel("end-effector position (m, world frame)")

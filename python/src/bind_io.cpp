@@ -152,6 +152,13 @@ void bind_tasks(py::module_& m) {
             return t.problem.arm->model;
           },
           "the robot section's ArmModel, or None")
+      .def_property_readonly(
+          "base_arm",
+          [](const PlanTask& t) -> std::optional<ArmModel> {
+            if (!t.problem.base_arm) return std::nullopt;
+            return t.problem.base_arm->model;
+          },
+          "the base_robot section's ArmModel (the arm holding the base end), or None")
       .def_readwrite("problem", &PlanTask::problem)
       .def_readwrite("options", &PlanTask::options)
       .def_readwrite("plant", &PlanTask::plant, "the simulated plant (PlantModel)")

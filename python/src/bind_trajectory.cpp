@@ -65,7 +65,52 @@ void bind_joint_trajectory(py::module_& m) {
       .def("brief", &JointTrajectoryResult::brief);
 }
 
+/// The arm of `p.arm` or `p.base_arm` as a property pair: the ArmModel (or None), placed by its
+/// world_T_base.
+std::optional<ArmModel> arm_model(const std::optional<PlanArm>& arm) {
+  if (!arm) return std::nullopt;
+  return arm->model;
+}
+
+void set_arm_model(std::optional<PlanArm>& arm, std::optional<ArmModel> model) {
+  if (model)
+    arm = PlanArm{std::move(*model), arm ? arm->placement : ArmPlacement{}};
+  else
+    arm.reset();
+}
+
+void bind_moving_base(py::module_& m) {
+  py::class_<MovingBase>(m, "MovingBase",
+                         "The base end (s = 0) held by a moving gripper (issue 21), not a fixed "
+                         "clamp: its grasp, wrench bounds and motion weight. Set "
+                         "PlanProblem.moving_base to one (a copy is stored: change a MovingBase, "
+                         "then assign it).")
+      .def(py::init<>())
+      .def_property(
+          "released", [](const MovingBase& b) { return b.grasp.released; },
+          [](MovingBase& b, const std::array<bool, 6>& r) { b.grasp.released = r; },
+          "base-frame base wrench components (fx, fy, fz, mx, my, mz) the base gripper cannot "
+          "transmit (base_grasp.zero_wrench)")
+      .def_property(
+          "base_to_end_effector", [](const MovingBase& b) { return b.grasp.tip_to_end_effector; },
+          [](MovingBase& b, const Pose& pose) { b.grasp.tip_to_end_effector = pose; },
+          "base_T_ee: the base gripper's pose is world_T_base · base_T_ee "
+          "(base_grasp.base_to_end_effector)")
+      .def_property(
+          "wrench_lower", [](const MovingBase& b) -> Vector6d { return b.wrench_bounds.lower; },
+          [](MovingBase& b, const Vector6d& v) { b.wrench_bounds.lower = v; },
+          "(6,) lower bounds on the base gripper's wrench, base frame (-inf: none)")
+      .def_property(
+          "wrench_upper", [](const MovingBase& b) -> Vector6d { return b.wrench_bounds.upper; },
+          [](MovingBase& b, const Vector6d& v) { b.wrench_bounds.upper = v; },
+          "(6,) upper bounds on the base gripper's wrench, base frame (inf: none)")
+      .def_readwrite("motion_weight", &MovingBase::motion_weight,
+                     "W_b, the weight of the base's least motion from the step before (>= 0)")
+      .def("validate", &MovingBase::validate);
+}
+
 void bind_problem(py::module_& m) {
+  bind_moving_base(m);
   py::class_<InitialState>(m, "InitialState",
                            "The equilibrium a plan starts from: rest(), held_at(tip pose) or "
                            "equilibrium(base wrench or configuration).")
@@ -102,17 +147,8 @@ void bind_problem(py::module_& m) {
           "max_curvature", [](const PlanProblem& p) { return p.limits.max_curvature; },
           [](PlanProblem& p, std::optional<double> k) { p.limits.max_curvature = k; }, "1/m")
       .def_property(
-          "arm",
-          [](const PlanProblem& p) -> std::optional<ArmModel> {
-            if (!p.arm) return std::nullopt;
-            return p.arm->model;
-          },
-          [](PlanProblem& p, std::optional<ArmModel> arm) {
-            if (arm)
-              p.arm = PlanArm{std::move(*arm), p.arm ? p.arm->placement : ArmPlacement{}};
-            else
-              p.arm.reset();
-          },
+          "arm", [](const PlanProblem& p) { return arm_model(p.arm); },
+          [](PlanProblem& p, std::optional<ArmModel> arm) { set_arm_model(p.arm, arm); },
           "the ArmModel holding the tip (placed by world_T_base), or None")
       .def_property(
           "world_T_base",
@@ -121,6 +157,26 @@ void bind_problem(py::module_& m) {
             if (!p.arm) throw InputError("PlanProblem.world_T_base: set PlanProblem.arm first");
             p.arm->placement.world_T_base = pose;
           })
+      .def_readwrite("moving_base", &PlanProblem::moving_base,
+                     "a MovingBase when the base end is held by a moving gripper, None for a "
+                     "fixed clamp at rod.clamp (the base's initial pose)")
+      .def_property(
+          "base_arm", [](const PlanProblem& p) { return arm_model(p.base_arm); },
+          [](PlanProblem& p, std::optional<ArmModel> arm) { set_arm_model(p.base_arm, arm); },
+          "the ArmModel holding the base end (placed by base_world_T_base; needs moving_base), "
+          "or None")
+      .def_property(
+          "base_world_T_base",
+          [](const PlanProblem& p) {
+            return p.base_arm ? p.base_arm->placement.world_T_base : Pose{};
+          },
+          [](PlanProblem& p, const Pose& pose) {
+            if (!p.base_arm)
+              throw InputError("PlanProblem.base_world_T_base: set PlanProblem.base_arm first");
+            p.base_arm->placement.world_T_base = pose;
+          },
+          "where the base arm stands")
+      .def("base_moves", &PlanProblem::base_moves)
       .def("validate", &PlanProblem::validate);
   py::class_<PlanOptions>(m, "PlanOptions")
       .def(py::init<>())
@@ -158,7 +214,21 @@ void bind_problem(py::module_& m) {
           [](PlanOptions& o, double v) { o.end_effector.max_linear_speed = v; }, "m/s")
       .def_property(
           "sample_rate", [](const PlanOptions& o) { return o.end_effector.sample_rate; },
-          [](PlanOptions& o, double r) { o.end_effector.sample_rate = r; }, "Hz")
+          [](PlanOptions& o, double r) {
+            o.end_effector.sample_rate = r;
+            o.base_end_effector.sample_rate = r;  // one clock for both grippers
+          },
+          "Hz")
+      .def_property(
+          "base_max_linear_speed",
+          [](const PlanOptions& o) { return o.base_end_effector.max_linear_speed; },
+          [](PlanOptions& o, double v) { o.base_end_effector.max_linear_speed = v; },
+          "m/s, the base gripper's (a moving base)")
+      .def_property(
+          "base_max_angular_speed",
+          [](const PlanOptions& o) { return o.base_end_effector.max_angular_speed; },
+          [](PlanOptions& o, double v) { o.base_end_effector.max_angular_speed = v; },
+          "rad/s, the base gripper's (a moving base)")
       .def("validate", &PlanOptions::validate);
 }
 
@@ -181,7 +251,16 @@ void bind_trajectory(py::module_& m) {
       .def_property_readonly("energy", [](const PlanStep& s) { return s.solution.cost.energy; })
       .def_property_readonly("max_distance",
                              [](const PlanStep& s) { return s.solution.cost.max_distance; })
-      .def_readonly("end_effector", &PlanStep::end_effector);
+      .def_readonly("end_effector", &PlanStep::end_effector)
+      .def_readonly("base_end_effector", &PlanStep::base_end_effector,
+                    "the base gripper's pose (a fixed clamp: the clamp's)")
+      .def_property_readonly(
+          "base_pose",
+          [](const PlanStep& s) {
+            const RodConfiguration& c = s.solution.configuration;
+            return c.nodes() > 0 ? Pose{c.p.front(), c.R.front()} : Pose{};
+          },
+          "the rod's base pose p(0), R(0) at this step");
   py::class_<TrackingResult>(m, "TrackingResult")
       .def_readonly("performed", &TrackingResult::performed)
       .def_readonly("jump", &TrackingResult::jump)
@@ -234,6 +313,25 @@ void bind_trajectory(py::module_& m) {
       .def_property_readonly(
           "end_effector_path", [](const PlanResult& r) { return path_arrays(r.end_effector_path); },
           "{'t': (n,) s, 'positions': (n, 3) m, 'rotations': (n, 3, 3)}")
+      .def_property_readonly(
+          "base_end_effector_path",
+          [](const PlanResult& r) { return path_arrays(r.base_end_effector_path); },
+          "the base gripper's path on the same clock, as end_effector_path (empty arrays with a "
+          "fixed clamp)")
+      .def_property_readonly(
+          "base_joints",
+          [](const PlanResult& r) -> std::optional<JointTrajectoryResult> {
+            if (!r.base_arm) return std::nullopt;
+            return r.base_arm->joints;
+          },
+          "with a base arm, its JointTrajectoryResult along the base path, else None")
+      .def_property_readonly(
+          "base_arm_status",
+          [](const PlanResult& r) -> std::optional<std::string> {
+            if (!r.base_arm) return std::nullopt;
+            return r.base_arm->brief();
+          },
+          "with a base arm, \"reachable: ...\" or why not, else None")
       .def("complete", &PlanResult::complete)
       .def("brief", &PlanResult::brief, py::arg("steps_requested"),
            "One line: status, steps (of steps_requested), final distance and energy, tracking.");

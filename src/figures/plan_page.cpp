@@ -118,12 +118,15 @@ json obstacle_json(const Obstacle& obstacle, int index) {
 /// joint's origin, the flange and the end effector, per sample (at most kPageMaxArmSamples). The
 /// samples' times are the path's when the trajectory has one sample per path sample (it was not
 /// re-timed), else its own scaled to the path's duration, so that the arm and the rod move
-/// together on the page.
-json arm_json(const PlanResult& plan, const PlanProblem& problem) {
-  if (!problem.arm || !plan.arm || plan.arm->joints.q.empty()) return nullptr;
-  const ArmModel& model = problem.arm->model;
-  const ArmPlacement& placement = problem.arm->placement;
-  const JointTrajectoryResult& joints = plan.arm->joints;
+/// together on the page. `problem_arm` and `result` are the tip's arm's (problem.arm, plan.arm)
+/// or the base's (problem.base_arm, plan.base_arm), on the same clock.
+json arm_json(const PlanResult& plan,
+              const std::optional<PlanArm>& problem_arm,
+              const std::optional<ArmPlanResult>& result) {
+  if (!problem_arm || !result || result->joints.q.empty()) return nullptr;
+  const ArmModel& model = problem_arm->model;
+  const ArmPlacement& placement = problem_arm->placement;
+  const JointTrajectoryResult& joints = result->joints;
   const auto& path = plan.end_effector_path;
   const bool same_samples = joints.q.size() <= path.size() && joints.t.size() == joints.q.size();
   const double scale = (!path.empty() && joints.duration() > 0.0)
@@ -150,7 +153,7 @@ json arm_json(const PlanResult& plan, const PlanProblem& problem) {
   return {{"name", model.robot_name()},
           {"t", times},
           {"frames", frames},
-          {"status", to_string(plan.arm->status)},
+          {"status", to_string(result->status)},
           {"joints", joints.brief()}};
 }
 
@@ -196,10 +199,22 @@ json plan_data(const PlanResult& plan, const PlanProblem& problem, const FigureC
     path_p.push_back(point(plan.end_effector_path[i].pose.position));
   }
   data["path"] = {{"t", path_t}, {"p", path_p}};
+  // A moving base (issue 21): the base gripper's path, on the same clock; null with a clamp.
+  if (problem.base_moves() && !plan.base_end_effector_path.empty()) {
+    json base_t = json::array(), base_p = json::array();
+    for (const std::size_t i : decimated(plan.base_end_effector_path.size(), kPageMaxPathSamples)) {
+      base_t.push_back(plan.base_end_effector_path[i].t);
+      base_p.push_back(point(plan.base_end_effector_path[i].pose.position));
+    }
+    data["base_path"] = {{"t", base_t}, {"p", base_p}};
+  } else {
+    data["base_path"] = nullptr;
+  }
   double duration = plan.end_effector_path.empty() ? 0.0 : plan.end_effector_path.back().t;
   if (!times.empty()) duration = std::max(duration, times.back());
   data["duration"] = duration;
-  data["arm"] = arm_json(plan, problem);
+  data["arm"] = arm_json(plan, problem.arm, plan.arm);
+  data["base_arm"] = arm_json(plan, problem.base_arm, plan.base_arm);
   json obstacles = json::array();
   for (std::size_t i = 0; i < problem.scene.obstacles.size(); ++i)
     obstacles.push_back(obstacle_json(problem.scene.obstacles[i], static_cast<int>(i)));

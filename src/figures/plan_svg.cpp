@@ -36,6 +36,7 @@ constexpr double kWidth = kLeft + 3 * kPanel + 2 * kGap + 45.0;
 constexpr double kBelowPanels = 45.0 + kLegendHeight;
 
 const char* const kInitialColour = "#9a9a9a";
+const char* const kBasePathColour = "#3b3b3b";  // the base gripper's path (a moving base)
 const char* const kTargetColour = "#d62728";
 
 /// One projection: world axes (h, v) onto a panel's plot area.
@@ -163,6 +164,14 @@ class Canvas {
          << "\" width=\"8\" height=\"8\" fill=\"#222\"/>\n";
   }
 
+  /// A moving base's pose at a step: a small square in the step's colour, outlined.
+  void base_mark(const Panel& panel, const Eigen::Vector3d& p, const std::string& colour) {
+    const double cx = x(panel, p), cy = y(panel, p);
+    out_ << "<rect x=\"" << px(cx - 3) << "\" y=\"" << px(cy - 3)
+         << "\" width=\"6\" height=\"6\" fill=\"" << colour
+         << "\" stroke=\"#222\" stroke-width=\"0.8\"/>\n";
+  }
+
   /// An obstacle's orthographic projection, grey: a disc, a stadium (a capsule: a line as thick as
   /// its diameter, round caps), a box's six faces, or a half-space's solid side where its plane is
   /// seen edge-on (a tilted plane covers the whole panel: not drawn).
@@ -258,9 +267,29 @@ std::string millimetres(double metres) {
   return out.str();
 }
 
+/// The base gripper's path (a moving base, issue 21): the timed path's positions, or, before it
+/// is timed (a partial plan), the start and each step's base gripper. Empty with a fixed clamp.
+std::vector<Eigen::Vector3d> base_path_points(const PlanResult& plan, const PlanProblem& request) {
+  std::vector<Eigen::Vector3d> points;
+  if (!request.base_moves()) return points;
+  if (!plan.base_end_effector_path.empty()) {
+    for (const TimedPose& sample : plan.base_end_effector_path)
+      points.push_back(sample.pose.position);
+    return points;
+  }
+  if (plan.initial_configuration.nodes() > 0)
+    points.push_back(compose(Pose{plan.initial_configuration.p[0], plan.initial_configuration.R[0]},
+                             request.moving_base->grasp.tip_to_end_effector)
+                         .position);
+  for (const PlanStep& step : plan.steps) points.push_back(step.base_end_effector.position);
+  return points;
+}
+
 /// Everything drawn decides the view.
 std::vector<Eigen::Vector3d> drawn_points(const PlanResult& plan, const PlanProblem& request) {
   std::vector<Eigen::Vector3d> all = request.target.points;
+  const std::vector<Eigen::Vector3d> base_path = base_path_points(plan, request);
+  all.insert(all.end(), base_path.begin(), base_path.end());
   all.push_back(request.rod.clamp.position);
   all.insert(all.end(), plan.initial_configuration.p.begin(), plan.initial_configuration.p.end());
   for (const PlanStep& step : plan.steps) {
@@ -311,10 +340,12 @@ double draw_title(std::ostringstream& out, const PlanResult& plan, const FigureC
 }
 
 /// Three orthographic projections: the initial rod, every step's rod and objective points, the
-/// target points and the clamp.
+/// target points and the clamp (with a moving base: where the base starts, the base gripper's
+/// path and the base at each step).
 void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& request, double top) {
   std::ostringstream& out = canvas.out();
   const int n = static_cast<int>(plan.steps.size());
+  const std::vector<Eigen::Vector3d> base_path = base_path_points(plan, request);
   const std::array<Panel, 3> panels = {{
       {0, 2, kLeft, top, "front: x\u2013z"},
       {1, 2, kLeft + kPanel + kGap, top, "side: y\u2013z"},
@@ -336,11 +367,16 @@ void draw_panels(Canvas& canvas, const PlanResult& plan, const PlanProblem& requ
       canvas.dots(panel, plan.steps[i].objective_points, step_colour(i, n), 1.8);
     canvas.crosses(panel, request.target.points);
     canvas.clamp(panel, request.rod.clamp.position);
+    if (request.base_moves()) {
+      canvas.polyline(panel, base_path, kBasePathColour, 1.5, " stroke-dasharray=\"2 3\"");
+      for (int i = 0; i < n; ++i)
+        canvas.base_mark(panel, plan.steps[i].solution.configuration.p.front(), step_colour(i, n));
+    }
     out << "</g>\n";
   }
 }
 
-void draw_legend(Canvas& canvas, int n, bool scene, double panels_top) {
+void draw_legend(Canvas& canvas, int n, bool scene, bool base_moves, double panels_top) {
   std::ostringstream& out = canvas.out();
   const double top = panels_top + kPanel + 52;
   const double left = kLeft;
@@ -374,8 +410,16 @@ void draw_legend(Canvas& canvas, int n, bool scene, double panels_top) {
   out << "<text x=\"" << px(ramp_left + 20) << "\" y=\"" << px(row2 + 4)
       << "\">target points p_obj</text>\n";
   canvas.square(ramp_left + 187, row2);
-  out << "<text x=\"" << px(ramp_left + 200) << "\" y=\"" << px(row2 + 4)
-      << "\">clamp p(0)</text>\n";
+  out << "<text x=\"" << px(ramp_left + 200) << "\" y=\"" << px(row2 + 4) << "\">"
+      << (base_moves ? "base p(0) at the start" : "clamp p(0)") << "</text>\n";
+  if (base_moves) {
+    const double base_left = ramp_left + 360;
+    out << "<line x1=\"" << px(base_left) << "\" y1=\"" << px(row2) << "\" x2=\""
+        << px(base_left + 30) << "\" y2=\"" << px(row2) << "\" stroke=\"" << kBasePathColour
+        << "\" stroke-width=\"1.5\" stroke-dasharray=\"2 3\"/>\n";
+    out << "<text x=\"" << px(base_left + 38) << "\" y=\"" << px(row2 + 4)
+        << "\">base gripper's path; the base p(0) at each step (small squares)</text>\n";
+  }
   const double row3 = row2 + 24;
   out << "<text x=\"" << px(left) << "\" y=\"" << px(row3 + 4) << "\" fill=\"#555\">"
       << "Orthographic projections, one scale in all panels; grid and labels in metres"
@@ -402,7 +446,8 @@ std::string plan_svg(const PlanResult& plan,
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   out << title.str();
   draw_panels(canvas, plan, problem, top);
-  draw_legend(canvas, static_cast<int>(plan.steps.size()), !problem.scene.empty(), top);
+  draw_legend(canvas, static_cast<int>(plan.steps.size()), !problem.scene.empty(),
+              problem.base_moves(), top);
   out << "</svg>\n";
   return out.str();
 }

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "rodshape/error.hpp"
+#include "rodshape/io/plan_output.hpp"
 #include "rodshape/version.hpp"
 
 namespace rodshape {
@@ -72,10 +73,12 @@ bool is_rodshape_output(const std::string& path) {
   if (extension == ".svg" || extension == ".html")
     return head.find("<!-- generator: rodshape") != std::string::npos;
   const std::string_view header = first_line(head);
-  if (name == "trajectory.csv") return header == "t,x,y,z,qw,qx,qy,qz";
+  if (name == "trajectory.csv")
+    return header == kTrajectoryCsvHeader || header == kTrajectoryCsvHeaderWithBase;
   if (name == "validation.csv")
     return header == "run,seed,t,error_3d,error_2d,true_error,visible_markers";
-  if (name == "joint_trajectory.csv") return is_joint_header(header);
+  if (name == "joint_trajectory.csv" || name == "base_joint_trajectory.csv")
+    return is_joint_header(header);
   return false;
 }
 

@@ -8,6 +8,7 @@
 
 #include "io/json_format.hpp"
 #include "io/scene_json.hpp"
+#include "rodshape/error.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
@@ -79,6 +80,7 @@ Json step_object(const PlanStep& step, int number, const RodProperties& properti
   result["configuration"] = io_detail::configuration_json(
       solution.configuration, solution.base_wrench, solution.stability, properties);
   result["end_effector"] = json_pose(step.end_effector);
+  result["base_end_effector"] = json_pose(step.base_end_effector);
   result["energy"] = json_number(cost.energy);
   result["cost"] = {
       {"total", json_number(cost.cost)},
@@ -139,12 +141,13 @@ Json tracking_object(const TrackingResult& tracking) {
   };
 }
 
-Json joint_trajectory_object(const JointTrajectoryResult& joints) {
+/// `file`: joint_trajectory.csv (the tip's arm) or base_joint_trajectory.csv (the base's).
+Json joint_trajectory_object(const JointTrajectoryResult& joints, const char* file) {
   const bool complete = joints.complete();
   return {
       {"status", to_string(joints.status)},
       {"message", fields_in_task_names(joints.message)},
-      {"file", complete ? Json("joint_trajectory.csv") : Json(nullptr)},
+      {"file", complete ? Json(file) : Json(nullptr)},
       {"samples", static_cast<int>(joints.t.size())},
       {"duration", complete ? json_number(joints.duration()) : Json(nullptr)},
       {"path_duration", json_number(joints.path_duration)},
@@ -182,8 +185,20 @@ Json shell_object(const Workspace::ReachShell& shell) {
           {"tip_point", json_vector(shell.tip_point)}};
 }
 
-Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
-  const ArmPlanResult& arm = *plan.arm;
+/// The rod's base pose of a configuration: p(0), R(0), the pose the base arm's shell bounds.
+Pose base_pose(const RodConfiguration& configuration) {
+  return {configuration.p[0], configuration.R[0]};
+}
+
+/// `robot` (the tip's arm, its shell's distances at the rod's tip) or `base_robot` (the base's, at
+/// the rod's base pose).
+Json robot_object(const PlanResult& plan,
+                  const ArmPlanResult& arm,
+                  const ArmPlanOptions& options,
+                  bool base_end) {
+  const auto end_pose = [&](const RodConfiguration& configuration) {
+    return base_end ? base_pose(configuration) : configuration.tip();
+  };
   Json reach = nullptr;
   if (arm.reach && arm.shell) {
     reach = shell_object(*arm.shell);
@@ -193,9 +208,9 @@ Json robot_object(const PlanResult& plan, const ArmPlanOptions& options) {
     // |w - c| where the rod starts and at each step: how close the plan came to the shell.
     Json distances = Json::array();
     const auto distance = [&](const Pose& tip) { return json_number(arm.shell->distance(tip)); };
-    distances.push_back(distance(plan.initial_configuration.tip()));
+    distances.push_back(distance(end_pose(plan.initial_configuration)));
     for (const PlanStep& step : plan.steps)
-      distances.push_back(distance(step.solution.configuration.tip()));
+      distances.push_back(distance(end_pose(step.solution.configuration)));
     reach["wrist_distances"] = std::move(distances);
   }
   Json replans = Json::array();
@@ -265,9 +280,19 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["end_effector_path"] = path_object(plan);
   result["tracking"] = tracking_object(plan.tracking);
   result["interpolation"] = interpolation_object(plan.interpolation);
-  result["scene"] = io_detail::scene_json(request.scene, plan.scene);
-  result["robot"] = plan.arm ? robot_object(plan, task.options.arm) : Json(nullptr);
-  result["joint_trajectory"] = plan.arm ? joint_trajectory_object(plan.arm->joints) : Json(nullptr);
+  result["scene"] = io_detail::scene_json(request.scene, plan.scene,
+                                          request.arm.has_value() && request.base_arm.has_value());
+  result["robot"] =
+      plan.arm ? robot_object(plan, *plan.arm, task.options.arm, false) : Json(nullptr);
+  result["joint_trajectory"] =
+      plan.arm ? joint_trajectory_object(plan.arm->joints, "joint_trajectory.csv") : Json(nullptr);
+  // The arm that holds the base end (issue 21): only with one, so that a plan without it keeps
+  // its document.
+  if (plan.base_arm) {
+    result["base_robot"] = robot_object(plan, *plan.base_arm, task.options.arm, true);
+    result["base_joint_trajectory"] =
+        joint_trajectory_object(plan.base_arm->joints, "base_joint_trajectory.csv");
+  }
   return io_detail::format_json(result);
 }
 
@@ -301,18 +326,38 @@ std::string joint_trajectory_json(const JointTrajectoryResult& trajectory) {
   return io_detail::format_json(result);
 }
 
-std::string trajectory_csv(const std::vector<TimedPose>& path) {
+namespace {
+
+/// ",x,y,z,qw,qx,qy,qz" of `pose`, its quaternion in the hemisphere of `previous` (then updated).
+void write_pose_columns(std::ostream& out, const Pose& pose, Eigen::Vector4d& previous) {
+  Eigen::Vector4d q = pose.quaternion_wxyz();  // w ≥ 0 for the first
+  if (previous.dot(q) < 0.0) q = -q;           // stay in the previous hemisphere
+  previous = q;
+  const Eigen::Vector3d& p = pose.position;
+  out << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << q[0] << ',' << q[1] << ',' << q[2]
+      << ',' << q[3];
+}
+
+}  // namespace
+
+std::string trajectory_csv(const std::vector<TimedPose>& path,
+                           const std::vector<TimedPose>& base_path) {
+  const bool base = !base_path.empty();
+  if (base && base_path.size() != path.size())
+    throw InputError("PlanResult.base_end_effector_path",
+                     " has " + std::to_string(base_path.size()) +
+                         " samples, the end-effector path " + std::to_string(path.size()) +
+                         ": the two grippers' paths share one clock, sample for sample");
   std::ostringstream out;
-  out << "t,x,y,z,qw,qx,qy,qz\n";
+  out << (base ? kTrajectoryCsvHeaderWithBase : kTrajectoryCsvHeader) << '\n';
   out << std::setprecision(12);
   Eigen::Vector4d previous = Eigen::Vector4d::Zero();
-  for (const TimedPose& sample : path) {
-    Eigen::Vector4d q = sample.pose.quaternion_wxyz();  // w ≥ 0 for the first
-    if (previous.dot(q) < 0.0) q = -q;                  // stay in the previous hemisphere
-    previous = q;
-    const Eigen::Vector3d& p = sample.pose.position;
-    out << sample.t << ',' << p.x() << ',' << p.y() << ',' << p.z() << ',' << q[0] << ',' << q[1]
-        << ',' << q[2] << ',' << q[3] << '\n';
+  Eigen::Vector4d previous_base = Eigen::Vector4d::Zero();
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    out << path[i].t;
+    write_pose_columns(out, path[i].pose, previous);
+    if (base) write_pose_columns(out, base_path[i].pose, previous_base);
+    out << '\n';
   }
   return out.str();
 }

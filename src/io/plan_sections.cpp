@@ -2,12 +2,14 @@
 #include "io/plan_sections.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "io/task_sections.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/io/field_names.hpp"
 #include "validation.hpp"
 
 namespace rodshape::io_detail {
@@ -95,16 +97,46 @@ Workspace read_workspace_section(const YamlField& workspace) {
 }
 
 Grasp read_grasp_section(const YamlField& grasp) {
-  grasp.expect_mapping({"zero_wrench", "tip_to_end_effector"},
-                       {{"released",
-                         "a plan's grasp names the wrench it cannot transmit as "
-                         "zero_wrench (axes fx, fy, fz, mx, my, mz)"}});
+  grasp.expect_mapping(
+      {"zero_wrench", "tip_to_end_effector"},
+      {{"released",
+        "a plan's grasp names the wrench it cannot transmit as "
+        "zero_wrench (axes fx, fy, fz, mx, my, mz)"},
+       {"base_to_end_effector", "the base gripper's offset is base_grasp.base_to_end_effector"},
+       {"wrench_bounds", "the tip's wrench bounds are the top-level section wrench_bounds"}});
   Grasp result;
   if (const YamlField axes = grasp.get("zero_wrench"); axes.present())
     result.released = read_wrench_axes(axes);
   if (const YamlField offset = grasp.get("tip_to_end_effector"); offset.present())
     result.tip_to_end_effector = read_pose(offset);
   return result;
+}
+
+void read_base_grasp_section(const YamlField& grasp, MovingBase& base) {
+  grasp.expect_mapping({"zero_wrench", "base_to_end_effector", "wrench_bounds"},
+                       {{"released",
+                         "the base grasp names the wrench it cannot transmit as "
+                         "zero_wrench (axes fx, fy, fz, mx, my, mz)"},
+                        {"tip_to_end_effector",
+                         "the base gripper's offset is base_grasp.base_to_end_effector "
+                         "(base_T_ee)"}});
+  if (const YamlField axes = grasp.get("zero_wrench"); axes.present())
+    base.grasp.released = read_wrench_axes(axes);
+  if (const YamlField offset = grasp.get("base_to_end_effector"); offset.present())
+    base.grasp.tip_to_end_effector = read_pose(offset);
+  if (const YamlField bounds = grasp.get("wrench_bounds"); bounds.present()) {
+    base.wrench_bounds = read_wrench_bounds_section(bounds);
+    check_wrench_bounds(base.wrench_bounds, bounds);
+  }
+}
+
+void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field) {
+  static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
+                                        "moment[0]", "moment[1]", "moment[2]"};
+  for (int k = 0; k < 6; ++k) {
+    if (bounds.lower(k) > bounds.upper(k))
+      field.fail(field.path() + ": lower." + kNames[k] + " is above upper." + kNames[k]);
+  }
 }
 
 InitialState read_initial_section(const YamlField& initial) {
@@ -166,10 +198,13 @@ ObjectiveInterpolation read_interpolation(const YamlField& field) {
 }  // namespace
 
 void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) {
-  trajectory.expect_mapping({"steps", "max_linear_speed", "max_angular_speed",
-                             "max_linear_acceleration", "max_angular_acceleration", "rate", "track",
-                             "tracking_substeps", "max_refinements", "interpolation"},
-                            {{"n_inter", "the number of intermediate steps is trajectory.steps"}});
+  trajectory.expect_mapping(
+      {"steps", "max_linear_speed", "max_angular_speed", "max_linear_acceleration",
+       "max_angular_acceleration", "rate", "track", "tracking_substeps", "max_refinements",
+       "interpolation", "base_end_effector"},
+      {{"n_inter", "the number of intermediate steps is trajectory.steps"},
+       {"base_max_linear_speed",
+        "the base gripper's limits are trajectory.base_end_effector.max_linear_speed etc."}});
   read_integer(trajectory, "steps", options.steps, 1, PlanOptions::kMaxSteps);
   EndEffectorLimits& limits = options.end_effector;
   read_number(trajectory, "max_linear_speed", limits.max_linear_speed);
@@ -188,6 +223,24 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
                PlanOptions::kMaxRefinements);
   if (const YamlField interpolation = trajectory.get("interpolation"); interpolation.present())
     options.interpolation = read_interpolation(interpolation);
+
+  // The base gripper: the tip's limits (one clock, one sample rate), with its own keys over them.
+  options.base_end_effector = options.end_effector;
+  if (const YamlField base = trajectory.get("base_end_effector"); base.present()) {
+    base.expect_mapping({"max_linear_speed", "max_angular_speed", "max_linear_acceleration",
+                         "max_angular_acceleration"},
+                        {{"rate",
+                          "the two grippers move on one clock: the sample rate is "
+                          "trajectory.rate"}});
+    // The tip's first, so that a bad tip limit is not blamed on the base's copy of it.
+    trajectory.located([&] { options.end_effector.validate(); });
+    EndEffectorLimits& base_limits = options.base_end_effector;
+    read_number(base, "max_linear_speed", base_limits.max_linear_speed);
+    read_number(base, "max_angular_speed", base_limits.max_angular_speed);
+    read_number(base, "max_linear_acceleration", base_limits.max_linear_acceleration);
+    read_number(base, "max_angular_acceleration", base_limits.max_angular_acceleration);
+    located_as(base, "EndEffectorLimits", base.path(), [&] { base_limits.validate(); });
+  }
 }
 
 void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& options) {
@@ -204,12 +257,22 @@ void read_optimiser_section(const YamlField& optimizer, ShapeOptimiserOptions& o
     options.confine_to_scale = confine.boolean();
 }
 
-void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {
+namespace {
+
+/// The fields of `robot` and `base_robot`: the arm (its URDF read) and its options.
+/// The arm's seed goes to options.joints.seed (the tip's arm) or options.base_seed (`base_arm`);
+/// the other options are the two arms' shared ones.
+PlanArm read_arm(const YamlField& robot,
+                 const std::string& task_directory,
+                 PlanTask& task,
+                 bool base_arm) {
+  ArmPlanOptions& options = task.options.arm;
+  const std::string name = robot.path();
   robot.expect_mapping(
       {"urdf", "base_link", "tip_link", "base", "flange_to_end_effector", "seed", "reach", "links"},
-      {{"flange_T_ee", "the end effector on the flange is robot.flange_to_end_effector"},
-       {"tool", "the end effector on the flange is robot.flange_to_end_effector"},
-       {"world_T_base", "the arm's base in the world is robot.base"}});
+      {{"flange_T_ee", "the end effector on the flange is " + name + ".flange_to_end_effector"},
+       {"tool", "the end effector on the flange is " + name + ".flange_to_end_effector"},
+       {"world_T_base", "the arm's base in the world is " + name + ".base"}});
   const YamlField urdf = robot.require("urdf");
   std::filesystem::path path(urdf.text());
   if (path.is_relative() && !task_directory.empty())
@@ -235,8 +298,7 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
   }
 
   task.input_files.push_back(path.string());  // never an output of the run (issue 24)
-  PlanArm& result = task.problem.arm.emplace(PlanArm{std::move(*arm), {}});
-  ArmPlanOptions& options = task.options.arm;
+  PlanArm result{std::move(*arm), {}};
   if (const YamlField base = robot.get("base"); base.present())
     result.placement.world_T_base = read_pose(base);
   if (const YamlField offset = robot.get("flange_to_end_effector"); offset.present())
@@ -247,7 +309,7 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
     for (std::size_t i = 0; i < values.size(); ++i)
       q(static_cast<Eigen::Index>(i)) = values[i].number();
     seed.located([&] { result.model.check_joint_positions(q, seed.path()); });
-    options.joints.seed = q;
+    (base_arm ? options.base_seed : options.joints.seed) = q;
   }
   if (const YamlField reach = robot.get("reach"); reach.present()) {
     reach.expect_mapping({"use", "margin", "tightening", "max_replans", "samples"});
@@ -256,14 +318,56 @@ void read_robot_section(const YamlField& robot, const std::string& task_director
     read_number(reach, "tightening", options.replan_tightening);
     read_integer(reach, "max_replans", options.max_replans, 0, ArmPlanOptions::kMaxReplans);
     read_integer(reach, "samples", options.reach.samples, 1, ArmReachOptions::kMaxSamples);
-    reach.located([&] { options.validate(); });
+    located_as(reach, "ArmPlanOptions", name, [&] { options.validate(); });
   }
   if (const YamlField links = robot.get("links"); links.present()) {
     links.expect_mapping({"clearance", "influence"});
     if (const YamlField clearance = links.get("clearance"); clearance.present())
       options.link_clearance = clearance.boolean();
     read_number(links, "influence", options.link_influence);
-    links.located([&] { options.validate(); });
+    located_as(links, "ArmPlanOptions", name, [&] { options.validate(); });
+  }
+  return result;
+}
+
+}  // namespace
+
+void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task) {
+  task.problem.arm.emplace(read_arm(robot, task_directory, task, false));
+}
+
+void read_base_robot_section(const YamlField& robot,
+                             const YamlField& tip_robot,
+                             const std::string& task_directory,
+                             PlanTask& task) {
+  // One ArmPlanOptions serves both arms (all but the seed): said once.
+  for (const char* key : {"reach", "links"})
+    if (const YamlField field = robot.get(key);
+        field.present() && tip_robot.present() && tip_robot.has(key))
+      field.fail(field.path() + ": the two arms share their " + key +
+                 " options: give them once, in robot." + key);
+  task.problem.base_arm.emplace(read_arm(robot, task_directory, task, true));
+}
+
+void located_as(const YamlField& field,
+                std::string_view library,
+                std::string_view task_name,
+                const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const InputError& error) {
+    const std::string& name = error.field();
+    if (name.starts_with(library)) {
+      std::string renamed(task_name);
+      std::string rest = name.substr(library.size());
+      // ArmPlanOptions' own fields are said in the robot section's names (reach.margin, ...).
+      if (library == "ArmPlanOptions") {
+        const std::string robot_name = task_field_name(name);  // "robot.reach.margin"
+        rest = robot_name.starts_with("robot") ? robot_name.substr(5) : rest;
+      }
+      field.fail_located(renamed + rest + fields_in_task_names(error.problem()));
+    }
+    field.fail_located(in_task_names(error));
   }
 }
 

@@ -5,6 +5,7 @@
 // StrainLimits, PlanOptions), located in the file by task_reader.cpp.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -41,6 +42,11 @@ Workspace read_workspace_section(const YamlField& workspace);
 /// `grasp`: zero_wrench (axes among fx ... mz), tip_to_end_effector (a pose).
 Grasp read_grasp_section(const YamlField& grasp);
 
+/// `base_grasp` (a moving base, issue 21): zero_wrench (axes among fx ... mz, of the base wrench
+/// in the base's frame), base_to_end_effector (a pose, base_T_ee), wrench_bounds ({lower, upper}
+/// as the top-level wrench_bounds, on the base gripper's wrench). Into `base`.
+void read_base_grasp_section(const YamlField& grasp, MovingBase& base);
+
 /// `initial`: tip (a pose) or base_wrench {force, moment}; the rod at rest when both are left out.
 InitialState read_initial_section(const YamlField& initial);
 
@@ -53,7 +59,14 @@ ModelValidityLimits read_model_validity(const YamlField& limits);
 /// `wrench_bounds`: lower and upper, each {force, moment}; an omitted vector is unbounded.
 WrenchBounds read_wrench_bounds_section(const YamlField& bounds);
 
-/// `trajectory`: steps, speeds, accelerations, rate, track, tracking_substeps. Into `options`.
+/// Lower bounds above upper ones, said at `field` in its own names ("<path>: lower.force[0] is
+/// above upper.force[0]").
+void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field);
+
+/// `trajectory`: steps, speeds, accelerations, rate, track, tracking_substeps, and
+/// base_end_effector (the base gripper's speeds and accelerations, each the tip's when left out).
+/// Into `options`: options.base_end_effector is the tip's limits with base_end_effector's keys
+/// over them.
 void read_trajectory_section(const YamlField& trajectory, PlanOptions& options);
 
 /// `optimizer`: max_iterations, tolerance, constraint_tolerance, multi_starts, print_level.
@@ -70,5 +83,22 @@ Scene read_scene_section(const YamlField& scene,
 /// reported at the field they concern (robot.tip_link for an unknown tip link, else robot.urdf).
 /// Into `task`: problem.arm and options.arm.
 void read_robot_section(const YamlField& robot, const std::string& task_directory, PlanTask& task);
+
+/// `base_robot` (issue 21): the fields of `robot`, for the arm that holds the base end (s = 0).
+/// Into `task`: problem.base_arm, its seed options.arm.base_seed; its reach and links are the
+/// options the two arms share (options.arm), given in one of the two sections (`tip_robot`, the
+/// `robot` section, absent or not).
+void read_base_robot_section(const YamlField& robot,
+                             const YamlField& tip_robot,
+                             const std::string& task_directory,
+                             PlanTask& task);
+
+/// Runs `call` (a library validate()); an InputError whose field starts with `library` (for
+/// instance "Workspace") is said at `field` with that prefix replaced by `task_name`
+/// ("base_workspace"), any other as located() says it.
+void located_as(const YamlField& field,
+                std::string_view library,
+                std::string_view task_name,
+                const std::function<void()>& call);
 
 }  // namespace rodshape::io_detail

@@ -28,9 +28,14 @@ void make_directory(const std::string& directory) {
 }  // namespace
 
 const std::vector<std::string>& plan_file_names() {
-  static const std::vector<std::string> names = {
-      "plan.json", "trajectory.csv",       "plan.svg",
-      "plan.html", "joint_trajectory.csv", "joint_trajectory.json"};
+  static const std::vector<std::string> names = {"plan.json",
+                                                 "trajectory.csv",
+                                                 "plan.svg",
+                                                 "plan.html",
+                                                 "joint_trajectory.csv",
+                                                 "joint_trajectory.json",
+                                                 "base_joint_trajectory.csv",
+                                                 "base_joint_trajectory.json"};
   return names;
 }
 
@@ -71,7 +76,7 @@ std::vector<std::string> write_plan(const std::string& directory,
   };
   write("plan.json", plan_result_json(plan, task));
   if (plan.status != PlanStatus::Infeasible) {
-    write("trajectory.csv", trajectory_csv(plan.end_effector_path));
+    write("trajectory.csv", trajectory_csv(plan.end_effector_path, plan.base_end_effector_path));
     write("plan.svg", plan_svg(plan, task));
   } else {
     remove("trajectory.csv");
@@ -89,6 +94,13 @@ std::vector<std::string> write_plan(const std::string& directory,
   } else {
     remove("joint_trajectory.csv");
     remove("joint_trajectory.json");
+  }
+  if (plan.base_arm && plan.base_arm->joints.complete()) {
+    write("base_joint_trajectory.csv", joint_trajectory_csv(plan.base_arm->joints));
+    write("base_joint_trajectory.json", joint_trajectory_json(plan.base_arm->joints));
+  } else {
+    remove("base_joint_trajectory.csv");
+    remove("base_joint_trajectory.json");
   }
   return written;
 }

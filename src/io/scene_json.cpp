@@ -2,6 +2,7 @@
 #include "io/scene_json.hpp"
 
 #include "overloaded.hpp"
+#include "rodshape/robot/arm_clearance.hpp"
 
 namespace rodshape::io_detail {
 
@@ -31,8 +32,9 @@ Json obstacle_json(const Obstacle& obstacle) {
   return json;
 }
 
-Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
-  if (scene.empty()) return nullptr;
+Json scene_json(const Scene& scene, const std::optional<SceneResult>& result, bool two_arms) {
+  // Two arms keep clear of each other with or without a scene: their gap is reported then too.
+  if (scene.empty() && !(two_arms && result && result->robot)) return nullptr;
   Json json;
   json["clearance"] = json_number(scene.clearance);
   json["rod_radius"] = json_number(scene.rod_radius);
@@ -62,9 +64,15 @@ Json scene_json(const Scene& scene, const std::optional<SceneResult>& result) {
         {"t", json_number(robot.t)},
         {"step", robot.step},
         {"link", robot.link},
-        {"obstacle", robot.obstacle < 0            ? Json("rod")
+        {"obstacle", robot.obstacle == kOtherArm   ? Json("other_arm")
+                     : robot.obstacle < 0          ? Json("rod")
                      : robot.obstacle_name.empty() ? Json(robot.obstacle)
                                                    : Json(robot.obstacle_name)}};
+    if (two_arms) {  // whose link (a plan with one arm keeps its document)
+      json["robot_min_gap_at"]["arm"] = robot.arm;
+      json["robot_min_gap_at"]["other_link"] =
+          robot.obstacle == kOtherArm ? Json(robot.other_link) : Json(nullptr);
+    }
   }
   return json;
 }

@@ -47,18 +47,23 @@ const std::vector<io_detail::KeyHint>& equilibrium_hints() {
       {"optimizer", "optimizer is a section of plan tasks (rodshape plan); equilibrium has solver"},
       {"robot", "robot is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"scene", "scene is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"base_grasp", "base_grasp is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"base_workspace",
+       "base_workspace is a section of plan tasks (rodshape plan), not of equilibrium"},
+      {"base_robot", "base_robot is a section of plan tasks (rodshape plan), not of equilibrium"},
   };
   return hints;
 }
 
 const std::vector<std::string_view>& plan_sections() {
   static const std::vector<std::string_view> sections = {
-      "rod",       "gravity",       "distributed_load",
-      "base",      "target",        "weights",
-      "workspace", "grasp",         "initial",
-      "limits",    "wrench_bounds", "trajectory",
-      "optimizer", "robot",         "plant",
-      "sensor",    "closed_loop",   "scene"};
+      "rod",        "gravity",        "distributed_load",
+      "base",       "target",         "weights",
+      "workspace",  "grasp",          "initial",
+      "limits",     "wrench_bounds",  "trajectory",
+      "optimizer",  "robot",          "plant",
+      "sensor",     "closed_loop",    "scene",
+      "base_grasp", "base_workspace", "base_robot"};
   return sections;
 }
 
@@ -70,14 +75,24 @@ const std::vector<io_detail::KeyHint>& plan_hints() {
       {"solver",
        "solver is the equilibrium command's shooting solver; a plan's optimiser options are in "
        "optimizer"},
+      {"base_arm", "the arm that holds the base end is the section base_robot"},
+      {"base_wrench_bounds", "the base gripper's wrench bounds are base_grasp.wrench_bounds"},
   };
   return hints;
 }
 
+/// A plan's `base` keys besides the pose: moving and motion_weight (issue 21).
+struct BaseKeys {
+  std::optional<bool> moving;
+  std::optional<double> motion_weight;
+};
+
 /// The sections both commands share: rod, gravity, distributed_load, base. The rod's section, when
-/// given, into `section` (a scene needs it).
+/// given, into `section` (a scene needs it). With `base_keys` (a plan), `base` may also say
+/// moving and motion_weight, read into it; without (equilibrium), they are refused.
 ClampedRod read_clamped_rod(const YamlField& root,
-                            std::optional<CrossSection>* section_out = nullptr) {
+                            std::optional<CrossSection>* section_out = nullptr,
+                            BaseKeys* base_keys = nullptr) {
   ClampedRod rod;
   const YamlField rod_field = root.require("rod");
   const io_detail::RodSection section = io_detail::read_rod_section(rod_field);
@@ -85,8 +100,25 @@ ClampedRod read_clamped_rod(const YamlField& root,
   rod.properties = io_detail::build_rod_properties(section, rod_field);
   rod.intervals = section.nodes - 1;
   rod.load = io_detail::read_distributed_load(root, section);
-  if (const YamlField base = root.get("base"); base.present())
-    rod.clamp = io_detail::read_pose(base);
+  if (const YamlField base = root.get("base"); base.present()) {
+    if (base_keys == nullptr) {
+      base.expect_mapping(
+          {"position", "rotation"},
+          {{"moving",
+            "base.moving is a key of plan tasks (rodshape plan): an equilibrium's base "
+            "is a fixed clamp"},
+           {"motion_weight", "base.motion_weight is a key of plan tasks (rodshape plan)"}});
+    } else {
+      base.expect_mapping({"position", "rotation", "moving", "motion_weight"});
+      if (const YamlField moving = base.get("moving"); moving.present())
+        base_keys->moving = moving.boolean();
+      if (const YamlField weight = base.get("motion_weight"); weight.present())
+        base_keys->motion_weight = weight.number();
+    }
+    // A plan's `base: {moving: true}` alone keeps the default pose (origin, identity).
+    if (base_keys == nullptr || base.has("position") || base.has("rotation"))
+      rod.clamp = io_detail::read_pose_fields(base);
+  }
   rod_field.located([&] { rod.validate(); });
   return rod;
 }
@@ -98,16 +130,6 @@ constexpr detail::FileCap kTaskFileCap{detail::kMiB, "a task file", "cannot read
 
 std::string read_text_file(const std::string& path) {
   return detail::read_capped_file(path, kTaskFileCap);
-}
-
-/// Lower bounds above upper ones, in the section's own names.
-void check_wrench_bounds(const WrenchBounds& bounds, const YamlField& field) {
-  static const char* const kNames[6] = {"force[0]",  "force[1]",  "force[2]",
-                                        "moment[0]", "moment[1]", "moment[2]"};
-  for (int k = 0; k < 6; ++k) {
-    if (bounds.lower(k) > bounds.upper(k))
-      field.fail(std::string("wrench_bounds: lower.") + kNames[k] + " is above upper." + kNames[k]);
-  }
 }
 
 }  // namespace
@@ -140,6 +162,46 @@ const std::vector<std::string_view>& estimate_sections() {
     return all;
   }();
   return sections;
+}
+
+/// The base end held by a moving gripper (issue 21): base.moving, base.motion_weight, base_grasp,
+/// base_workspace, trajectory.base_end_effector and base_robot (which implies base.moving). With
+/// a fixed clamp (base.moving false or left out, no base_robot) the others are bad input.
+void read_moving_base(const YamlField& root,
+                      const BaseKeys& base_keys,
+                      const std::string& task_directory,
+                      PlanTask& task) {
+  const YamlField base = root.get("base");
+  const YamlField base_robot = root.get("base_robot");
+  if (base_robot.present() && base_keys.moving == false)
+    base.get("moving").fail(
+        "base.moving = false, but base_robot holds the base end: an arm moves it (leave out "
+        "base.moving, or set it true)");
+  const bool moving = base_robot.present() || base_keys.moving.value_or(false);
+  if (!moving) {
+    const std::string why =
+        " needs a moving base: set base.moving: true (or give base_robot, the arm that holds "
+        "the base end); without it the base is a fixed clamp";
+    if (base_keys.motion_weight) base.get("motion_weight").fail("base.motion_weight" + why);
+    for (const char* section : {"base_grasp", "base_workspace"})
+      if (const YamlField field = root.get(section); field.present())
+        field.fail(field.path() + why);
+    if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
+      if (const YamlField limits = trajectory.get("base_end_effector"); limits.present())
+        limits.fail(limits.path() + why);
+    return;
+  }
+  MovingBase& moving_base = task.problem.moving_base.emplace();
+  if (base_keys.motion_weight) moving_base.motion_weight = *base_keys.motion_weight;
+  if (const YamlField grasp = root.get("base_grasp"); grasp.present())
+    io_detail::read_base_grasp_section(grasp, moving_base);
+  if (const YamlField workspace = root.get("base_workspace"); workspace.present()) {
+    moving_base.workspace = io_detail::read_workspace_section(workspace);
+    io_detail::located_as(workspace, "Workspace", "base_workspace",
+                          [&] { moving_base.workspace.validate(); });
+  }
+  if (base_robot.present())
+    io_detail::read_base_robot_section(base_robot, root.get("robot"), task_directory, task);
 }
 
 }  // namespace
@@ -188,7 +250,8 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   task.lines = root.key_lines(2);
   PlanProblem& problem = task.problem;
   std::optional<CrossSection> section;
-  problem.rod = read_clamped_rod(root, &section);
+  BaseKeys base_keys;
+  problem.rod = read_clamped_rod(root, &section, &base_keys);
   if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
     root.get("rod").get("nodes").fail_value(
         "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
@@ -210,7 +273,7 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   }
   if (const YamlField bounds = root.get("wrench_bounds"); bounds.present()) {
     problem.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
-    check_wrench_bounds(problem.wrench_bounds, bounds);
+    io_detail::check_wrench_bounds(problem.wrench_bounds, bounds);
   }
   if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
     io_detail::read_trajectory_section(trajectory, task.options);
@@ -237,10 +300,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
           "rod's surface (its centreline inflated by the section's circumscribed radius)");
     problem.scene.rod_radius = section->circumscribed_radius();
   }
-  if (const YamlField robot = root.get("robot"); robot.present()) {
-    io_detail::read_robot_section(robot, std::filesystem::path(source_name).parent_path().string(),
-                                  task);
-  }
+  const std::string task_directory = std::filesystem::path(source_name).parent_path().string();
+  if (const YamlField robot = root.get("robot"); robot.present())
+    io_detail::read_robot_section(robot, task_directory, task);
+  read_moving_base(root, base_keys, task_directory, task);
 
   // Whole-task checks by the library; their messages name the field, we add file and line. (That
   // the workspace holds the initial tip is checked by plan(), which solves the initial

@@ -4,6 +4,7 @@
 // tests/figures/check_pages.py (.ci/run, step 3b).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -174,8 +175,48 @@ TEST(PlanHtml, OnePageWithTheSignatureAndTheData) {
     EXPECT_LT(nearest, 0.02);  // a sample within a chord's tenth of each point
   }
   EXPECT_TRUE(data["arm"].is_null());
+  EXPECT_TRUE(data["base_arm"].is_null());
+  EXPECT_TRUE(data["base_path"].is_null());
   EXPECT_TRUE(data["validation"].is_null());
   EXPECT_NE(html.find("window.rodshape ="), std::string::npos);  // the view's code
+}
+
+TEST(PlanHtml, AMovingBaseHasItsPathAndItsArm) {
+  const std::string panda = std::string(RODSHAPE_SOURCE_DIR) + "/data/robots/panda.urdf";
+  const PlanTask task = parse_plan_task(testing::kHandMadeTask +
+                                            "base:\n  position: [0, 0, 0]\n"
+                                            "base_robot:\n  urdf: " +
+                                            panda + "\n  base: {position: [-0.4, 0, -0.2]}\n",
+                                        "plan.yaml");
+  ASSERT_TRUE(task.problem.base_arm);
+  PlanResult plan = testing::make_plan(task, 3);
+  for (const TimedPose& sample : plan.end_effector_path)
+    plan.base_end_effector_path.push_back(
+        {sample.t, Pose{Eigen::Vector3d(0, -0.01 * sample.t, 0), Eigen::Matrix3d::Identity()}});
+  ArmPlanResult& arm = plan.base_arm.emplace();
+  arm.status = ArmPlanStatus::Reachable;
+  arm.joints.status = JointTrajectoryStatus::Complete;
+  const ArmModel& model = task.problem.base_arm->model;
+  for (const TimedPose& sample : plan.base_end_effector_path) {
+    arm.joints.t.push_back(sample.t);
+    arm.joints.q.push_back(Eigen::VectorXd::Zero(model.joints()));
+  }
+  const ScopedEnvironment three("RODSHAPE_THREE_JS_DIR", fake_three("base").string());
+  const Json data =
+      page_data(plan_html(plan, task.problem, figure_caption(task), *load_page_library()));
+  ASSERT_TRUE(data["base_path"].is_object());
+  EXPECT_EQ(data["base_path"]["t"].size(),  // decimated as the tip's path
+            std::min<std::size_t>(plan.base_end_effector_path.size(), kPageMaxPathSamples));
+  EXPECT_DOUBLE_EQ(data["base_path"]["p"].back()[1].get<double>(),
+                   std::round(plan.base_end_effector_path.back().pose.position.y() * 1e6) / 1e6);
+  ASSERT_TRUE(data["base_arm"].is_object());
+  EXPECT_EQ(data["base_arm"]["name"], "panda");
+  EXPECT_EQ(data["base_arm"]["status"], "reachable");
+  EXPECT_EQ(data["base_arm"]["frames"].size(),
+            std::min<std::size_t>(plan.base_end_effector_path.size(), kPageMaxArmSamples));
+  // The first joint frame is the base arm's base.
+  EXPECT_NEAR(data["base_arm"]["frames"][0][0][0].get<double>(), -0.4, 1e-9);
+  EXPECT_TRUE(data["arm"].is_null());  // no arm at the tip
 }
 
 TEST(PlanHtml, ManyStepsAreDecimatedToTheCap) {

@@ -13,7 +13,8 @@
 namespace rodshape {
 
 /// The first member of every JSON document rodshape writes into an output directory (plan.json,
-/// joint_trajectory.json, validation.json): {"generator": "rodshape <version>", ...}.
+/// joint_trajectory.json, base_joint_trajectory.json, validation.json): {"generator": "rodshape
+/// <version>", ...}.
 inline constexpr const char* kGeneratorKey = "generator";
 std::string generator_signature();  // "rodshape <version>"
 // svg_signature_comment(): the comment every SVG and HTML page rodshape writes begins with
@@ -21,8 +22,9 @@ std::string generator_signature();  // "rodshape <version>"
 
 /// True when the file at `path` is one rodshape writes under its name: a JSON document whose
 /// first member is kGeneratorKey with a value starting "rodshape", an SVG or an HTML page with
-/// the signature comment, trajectory.csv or validation.csv with their exact headers,
-/// joint_trajectory.csv with a header "t,<joint names>". False for anything else, including files
+/// the signature comment, trajectory.csv (with or without a moving base's columns) or
+/// validation.csv with their exact headers, joint_trajectory.csv and base_joint_trajectory.csv
+/// with a header "t,<joint names>". False for anything else, including files
 /// it cannot read.
 bool is_rodshape_output(const std::string& path);
 

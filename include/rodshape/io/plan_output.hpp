@@ -1,8 +1,10 @@
 // plan_output.hpp: what `rodshape plan` writes: the plan as JSON (plan.json), the timed
 // end-effector path as CSV (trajectory.csv), a picture of the steps as SVG (plan.svg), the 3D page
 // (plan.html, made by the figures area) and, when the task has a robot, the joint trajectory
-// (joint_trajectory.csv, joint_trajectory.json). Each function returns the whole text; write it
-// with write_file_atomically(). Schemas are in docs/task-file.md, the page in docs/figures.md.
+// (joint_trajectory.csv, joint_trajectory.json), and with a base robot the base arm's
+// (base_joint_trajectory.csv, base_joint_trajectory.json). Each function returns the whole text;
+// write it with write_file_atomically(). Schemas are in docs/task-file.md, the page in
+// docs/figures.md.
 #pragma once
 
 #include <string>
@@ -27,12 +29,26 @@ namespace rodshape {
 /// `joint_trajectory` the summary {status, message, file, samples, duration, path_duration, slowed,
 /// slowdown, failed_sample, ik_restarts, max_position_error, max_rotation_error} of arm.joints;
 /// both are null without an arm (a task without a robot).
+/// Each step has `base_end_effector` next to `end_effector` (the base gripper's pose; the clamp's,
+/// the same at every step, with a fixed clamp). With a base arm (plan.base_arm, issue 21) the
+/// document ends with `base_robot` and `base_joint_trajectory`, of the same form as `robot` and
+/// `joint_trajectory` (the reach's wrist distances at the rod's base pose p(0), R(0); the file
+/// base_joint_trajectory.csv); without one they are left out.
 std::string plan_result_json(const PlanResult& plan, const PlanTask& task);
+
+/// trajectory.csv's header: the end effector's pose; with a moving base, the base gripper's too.
+inline constexpr const char* kTrajectoryCsvHeader = "t,x,y,z,qw,qx,qy,qz";
+inline constexpr const char* kTrajectoryCsvHeaderWithBase =
+    "t,x,y,z,qw,qx,qy,qz,bx,by,bz,bqw,bqx,bqy,bqz";
 
 /// "t,x,y,z,qw,qx,qy,qz" and one line per sample of `path` (s, m, unit quaternion). Consecutive
 /// quaternions lie in the same hemisphere (q and -q are one rotation; the first has qw ≥ 0), so
-/// that a consumer may interpolate them componentwise.
-std::string trajectory_csv(const std::vector<TimedPose>& path);
+/// that a consumer may interpolate them componentwise. With `base_path` (the base gripper's path,
+/// PlanResult::base_end_effector_path, a moving base) the columns bx, by, bz, bqw, bqx, bqy, bqz
+/// follow, its pose at the same sample (its quaternions kept in one hemisphere likewise);
+/// InputError naming PlanResult.base_end_effector_path when it has not as many samples as `path`.
+std::string trajectory_csv(const std::vector<TimedPose>& path,
+                           const std::vector<TimedPose>& base_path = {});
 
 /// "t,<joint names...>" and one line per sample: time (s) and joint positions (rad or m).
 std::string joint_trajectory_csv(const JointTrajectoryResult& trajectory);
@@ -60,7 +76,8 @@ struct FigureFiles {
 void check_output_directory(const std::string& directory);
 
 /// The files write_plan() may write, in its order: plan.json, trajectory.csv, plan.svg,
-/// plan.html, joint_trajectory.csv, joint_trajectory.json.
+/// plan.html, joint_trajectory.csv, joint_trajectory.json, base_joint_trajectory.csv,
+/// base_joint_trajectory.json.
 const std::vector<std::string>& plan_file_names();
 
 /// Removes the plan files (plan_file_names()) of an earlier run from `directory`: those that are
@@ -73,11 +90,12 @@ void remove_plan_files(const std::string& directory);
 /// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
 /// plan is infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html;
 /// with a complete joint trajectory,
-/// joint_trajectory.csv and joint_trajectory.json. Each file is written whole or not at all, and
-/// the files of an earlier run that this plan does not write are removed when they are
-/// rodshape's (they would not match plan.json; check_output_files() first, to refuse others).
-/// Returns the names written, in order. Throws InputError when the directory cannot be made or a
-/// file cannot be written.
+/// joint_trajectory.csv and joint_trajectory.json; with a base arm's complete joint trajectory,
+/// base_joint_trajectory.csv and base_joint_trajectory.json (same forms). Each file is written
+/// whole or not at all, and the files of an earlier run that this plan does not write are removed
+/// when they are rodshape's (they would not match plan.json; check_output_files() first, to refuse
+/// others). Returns the names written, in order. Throws InputError when the directory cannot be
+/// made or a file cannot be written.
 std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
                                     const PlanTask& task,

@@ -2,7 +2,10 @@
 // target shape, the weights of the cost, what the shapes must respect (workspace, grasp, strain
 // limits), the initial state, and the options of the optimiser and of the trajectory. See
 // docs/task-file.md for the file format. An optional robot section places an arm (URDF) in the
-// world (PlanProblem::arm, with its reach and re-plan options in PlanOptions::arm).
+// world (PlanProblem::arm, with its reach and re-plan options in PlanOptions::arm). With a moving
+// base (base.moving, issue 21) the base end is held by a gripper too (PlanProblem::moving_base),
+// optionally carried by a second arm (base_robot: PlanProblem::base_arm; its seed in
+// PlanOptions::arm.base_seed, its other options shared with the tip's arm).
 #pragma once
 
 #include <map>

@@ -101,6 +101,8 @@
     d.steps.forEach(function (s) { s.shape.forEach(function (p) { add(p); }); });
     add(d.clamp);
     if (d.arm) d.arm.frames.forEach(function (f) { f.forEach(function (p) { add(p); }); });
+    if (d.base_arm) d.base_arm.frames.forEach(function (f) { f.forEach(function (p) { add(p); }); });
+    if (d.base_path) d.base_path.p.forEach(function (p) { add(p); });
     d.obstacles.forEach(function (o) {
       if (o.kind === 'sphere') add(o.center, o.radius);
       if (o.kind === 'capsule') { add(o.from, o.radius); add(o.to, o.radius); }
@@ -161,7 +163,7 @@
   // Looking at the rod (with an arm, the scene is the arm's size and the rod a small part of it).
   var rodBox = bounds({ initial: data.initial, target: data.target, steps: data.steps, clamp: data.clamp, arm: null, obstacles: [] });
   var centre = new THREE.Vector3(rodBox.centre[0], rodBox.centre[1], rodBox.centre[2]);
-  var reach = data.arm ? 0.65 * box.span + 0.4 * rodBox.span : box.span;
+  var reach = (data.arm || data.base_arm) ? 0.65 * box.span + 0.4 * rodBox.span : box.span;
   camera.position.set(centre.x + 0.8 * reach, centre.y - 1.9 * reach, centre.z + 0.7 * reach);
   var orbit = new THREE.OrbitControls(camera, renderer.domElement);
   orbit.target.copy(centre);
@@ -290,18 +292,32 @@
   if (data.target_curve.length > 1) line(data.target_curve, 0xd62728, 0.6);
   ball(data.clamp, Math.max(markRadius, 1.2 * drawRadius), 0x222222);
   if (data.path.p.length > 1) line(data.path.p, 0x555555, 0.6);
+  if (data.base_path && data.base_path.p.length > 1) line(data.base_path.p, 0x1b6f8a, 0.6);
 
   // Moving: the rod (an orange tube), the end effector (a ball), the arm.
   var rod = tube(data.initial, drawRadius * 1.05, 0xe4572e, 1);
   var effector = ball(data.initial[data.initial.length - 1], Math.max(markRadius, 1.2 * drawRadius), 0x333333);
-  var armLinks = [], armJoints = [];
-  if (data.arm && data.arm.frames.length > 0) {
+  // A moving base: its gripper (a ball at the rod's base end).
+  var baseEffector = data.base_path ? ball(data.initial[0], Math.max(markRadius, 1.2 * drawRadius), 0x1b6f8a) : null;
+  /** An arm's joints (balls) and links (cylinders), placed by placeArm at each time. */
+  function armMeshes(arm) {
+    var meshes = { links: [], joints: [] };
+    if (!arm || arm.frames.length === 0) return meshes;
     var armRadius = 0.012 * box.span;
-    data.arm.frames[0].forEach(function (p, k) {
-      armJoints.push(ball(p, armRadius * 1.35, 0x39424e));
-      if (k > 0) armLinks.push(cylinder(armRadius, 0x6c7a89, 1));
+    arm.frames[0].forEach(function (p, k) {
+      meshes.joints.push(ball(p, armRadius * 1.35, 0x39424e));
+      if (k > 0) meshes.links.push(cylinder(armRadius, 0x6c7a89, 1));
+    });
+    return meshes;
+  }
+  function placeArm(meshes, frame) {
+    if (!frame) return;
+    frame.forEach(function (p, k) {
+      meshes.joints[k].position.copy(v3(p));
+      if (k > 0) placeCylinder(meshes.links[k - 1], frame[k - 1], p);
     });
   }
+  var tipArm = armMeshes(data.arm), baseArm = armMeshes(data.base_arm);
 
   // A validation: the plant's last equilibrium (green) and the markers seen at the last frame.
   var runIndex = 0, plantMesh = null, markerMeshes = [];
@@ -351,7 +367,9 @@
   if (data.target_curve.length > 1) legendRow('#e88a8b', "the target's B-spline");
   legendRow('#222222', 'clamp', true);
   legendRow('#555555', 'end-effector path');
+  if (data.base_path) legendRow('#1b6f8a', "the base gripper's path (a moving base)");
   if (data.arm) legendRow('#6c7a89', 'arm (' + data.arm.name + '): links between joint frames');
+  if (data.base_arm) legendRow('#6c7a89', 'base arm (' + data.base_arm.name + '): holds the base end');
   if (data.obstacles.length) legendRow('#8a8f98', 'obstacles (' + data.obstacles.length + ')');
   if (data.workspace_box) legendRow('#2a9d4a', 'workspace box');
   if (data.validation) {
@@ -449,13 +467,10 @@
       rod.geometry = tubeGeometry(current.shape, drawRadius * 1.05);
     }
     effector.position.copy(v3(current.shape[current.shape.length - 1]));
+    if (baseEffector) baseEffector.position.copy(v3(current.shape[0]));
     currentArm = armAt(data.arm, currentTime);
-    if (currentArm) {
-      currentArm.forEach(function (p, k) {
-        armJoints[k].position.copy(v3(p));
-        if (k > 0) placeCylinder(armLinks[k - 1], currentArm[k - 1], p);
-      });
-    }
+    placeArm(tipArm, currentArm);
+    placeArm(baseArm, armAt(data.base_arm, currentTime));
     slider.value = String(duration > 0 ? Math.round(1000 * currentTime / duration) : 0);
     timeLabel.textContent = 't = ' + currentTime.toFixed(2) + ' / ' + duration.toFixed(2) + ' s, step ' + current.step + ' of ' + nSteps;
     drawPlot();
