@@ -1,0 +1,170 @@
+// Tests of the simulated experiment with a moving base (issue 21, item 6): a plan whose waypoints
+// move both ends validated by the plant driven by both ends, open and closed loop. Until plan()
+// moves the base, the plan is the band's (fixed clamp) with every waypoint moved rigidly, its two
+// paths timed on one clock by hand: each waypoint is then an equilibrium with both ends moved,
+// which the plant must reach.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/core/so3.hpp"
+#include "rodshape/sim/commanded_path.hpp"
+#include "rodshape/sim/plan_validation.hpp"
+#include "rodshape/trajectory/plan.hpp"
+#include "sim/two_end_path.hpp"
+#include "support/band_problem.hpp"
+
+namespace rodshape {
+namespace {
+
+using testing::band_problem;
+
+const PlanResult& band_plan() {
+  static const PlanResult plan = [] {
+    PlanOptions options;
+    options.steps = 3;
+    return rodshape::plan(band_problem(), options);
+  }();
+  return plan;
+}
+
+/// The rigid motion of waypoint k of n: a translation on a line and a turn about a fixed axis.
+Pose motion_at(int k, int n) {
+  const double sigma = static_cast<double>(k) / n;
+  return {sigma * Eigen::Vector3d(0.02, -0.01, 0.01),
+          exp_so3(sigma * Eigen::Vector3d(0.1, -0.05, 0.15))};
+}
+
+Eigen::Vector3d moved_point(const Pose& motion, const Eigen::Vector3d& p) {
+  return motion.position + motion.rotation * p;
+}
+
+BaseWrench turned(const Pose& motion, const BaseWrench& w) {
+  return {motion.rotation * w.force, motion.rotation * w.moment};
+}
+
+/// The rod's equilibrium of `w` with its clamp moved by `motion` and the wrench turned with it.
+RodConfiguration moved(const ClampedRod& rod, const Pose& motion, const BaseWrench& w) {
+  ClampedRod at = rod;
+  at.clamp = compose(motion, rod.clamp);
+  return integrate(at, turned(motion, w));
+}
+
+struct MovingBasePlan {
+  PlanProblem problem;
+  PlanResult plan;
+  Pose final_motion;
+};
+
+/// band_plan() with waypoint k moved by motion_at(k, n) and the base held by a gripper at
+/// base_T_ee from the clamp: the target moved with the last.
+MovingBasePlan moving_base_plan() {
+  const PlanProblem fixed = band_problem();
+  const PlanResult& original = band_plan();
+  MovingBasePlan out;
+  out.problem = fixed;
+  MovingBase base;
+  base.grasp.tip_to_end_effector = {Eigen::Vector3d(0.0, 0.0, -0.02), exp_so3({0.0, 0.0, 0.3})};
+  out.problem.moving_base = base;
+  const int n = static_cast<int>(original.steps.size());
+  out.final_motion = motion_at(n, n);
+  for (Eigen::Vector3d& p : out.problem.target.points) p = moved_point(out.final_motion, p);
+  PlanResult& plan = out.plan;
+  plan = original;
+  std::vector<Pose> tip{original.end_effector_path.front().pose};
+  std::vector<Pose> base_poses{compose(fixed.rod.clamp, base.grasp.tip_to_end_effector)};
+  for (int k = 1; k <= n; ++k) {
+    const Pose motion = motion_at(k, n);
+    PlanStep& step = plan.steps[static_cast<std::size_t>(k - 1)];
+    step.solution.configuration = moved(fixed.rod, motion, step.solution.base_wrench);
+    step.solution.base_wrench = turned(motion, step.solution.base_wrench);
+    step.end_effector = compose(motion, step.end_effector);
+    step.base_end_effector =
+        compose(compose(motion, fixed.rod.clamp), base.grasp.tip_to_end_effector);
+    for (Eigen::Vector3d& p : step.objective_points) p = moved_point(motion, p);
+    tip.push_back(step.end_effector);
+    base_poses.push_back(step.base_end_effector);
+  }
+  const PlanOptions options;
+  const sim_detail::TwoEndPath both =
+      sim_detail::time_two_ends(tip, base_poses, options.end_effector, options.base_end_effector);
+  plan.end_effector_path = both.tip;
+  plan.base_end_effector_path = both.base;
+  return out;
+}
+
+MarkerSensorModel noiseless() {
+  MarkerSensorModel sensor;
+  sensor.in_plane_noise = 0.0;
+  sensor.depth_noise = 0.0;
+  return sensor;
+}
+
+TEST(TwoEndValidation, TheCommandedBaseIsTheBasePathWithoutABaseArm) {
+  const MovingBasePlan moving = moving_base_plan();
+  EXPECT_FALSE(drives_base_joints(moving.problem, moving.plan));
+  const BaseGripperPath base = commanded_base(moving.problem, moving.plan);
+  ASSERT_EQ(base.path.size(), moving.plan.base_end_effector_path.size());
+  EXPECT_EQ(base.path.back().pose.position,
+            moving.plan.base_end_effector_path.back().pose.position);
+  // A fixed clamp has no base path, whatever the plan holds.
+  EXPECT_FALSE(commanded_base(band_problem(), moving.plan).moves());
+}
+
+TEST(TwoEndValidation, OpenLoopDrivesThePlantByBothEnds) {
+  const MovingBasePlan moving = moving_base_plan();
+  const ValidationResult fixed = validate_plan(band_problem(), band_plan(), {}, noiseless());
+  const ValidationResult result = validate_plan(moving.problem, moving.plan, {}, noiseless());
+  ASSERT_EQ(result.status, ValidationStatus::Complete) << result.brief();
+  EXPECT_TRUE(result.plant.events.empty());
+  const ValidationRun& run = result.runs.front();
+  EXPECT_TRUE(run.base_moved);
+  EXPECT_FALSE(run.base_driven_by_joints);
+  EXPECT_FALSE(fixed.runs.front().base_moved);
+  // The plant ends on the plan's last shape moved with both ends, so its true error to the moved
+  // target is the fixed plan's.
+  const RodConfiguration& last = moving.plan.steps.back().solution.configuration;
+  double distance = 0.0;
+  for (int i = 0; i < last.nodes(); ++i)
+    distance = std::max(distance, (result.plant.last.configuration.p[i] - last.p[i]).norm());
+  EXPECT_LT(distance, 1e-8);
+  EXPECT_NEAR(run.final.true_error, fixed.runs.front().final.true_error, 1e-8);
+  EXPECT_LT((result.plant.last.clamp.position - moving.final_motion.position).norm(), 1e-15);
+  EXPECT_LT((result.plant.last.base_end_effector.position -
+             moving.plan.base_end_effector_path.back().pose.position)
+                .norm(),
+            1e-15);
+}
+
+TEST(TwoEndValidation, ClosedLoopEstimatesWhereTheBaseIs) {
+  // The plant is the planner's model and the markers noise-free: at every checkpoint the estimate,
+  // made with the clamp where the base gripper is, explains the markers and finds the plan's
+  // (moved) wrench. Re-plans are off: a re-plan with a moving base is plan()'s (issue 21, item 2).
+  const MovingBasePlan moving = moving_base_plan();
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  options.loop.replan = false;
+  const ValidationResult result =
+      validate_plan(moving.problem, moving.plan, {}, noiseless(), options);
+  ASSERT_EQ(result.status, ValidationStatus::Complete) << result.brief();
+  const ValidationRun& run = result.runs.front();
+  EXPECT_TRUE(run.base_moved);
+  ASSERT_EQ(run.checkpoints.size(), 2u);
+  for (std::size_t k = 0; k < run.checkpoints.size(); ++k) {
+    const Checkpoint& c = run.checkpoints[k];
+    EXPECT_TRUE(c.consistent) << c.message;
+    const BaseWrench& planned = moving.plan.steps[k].solution.base_wrench;
+    EXPECT_LT((c.estimate.base_wrench.force - planned.force).norm(), 1e-6) << c.message;
+    EXPECT_LT((c.estimate.base_wrench.moment - planned.moment).norm(), 1e-6) << c.message;
+    EXPECT_LT(c.shape_rms, 1e-6);
+  }
+  const ValidationResult open = validate_plan(moving.problem, moving.plan, {}, noiseless());
+  EXPECT_NEAR(run.final.true_error, open.runs.front().final.true_error, 1e-8);
+  EXPECT_LT((result.plant.last.clamp.position - moving.final_motion.position).norm(), 1e-15);
+}
+
+}  // namespace
+}  // namespace rodshape
