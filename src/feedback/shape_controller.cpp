@@ -190,8 +190,15 @@ void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
       return;
     }
     // The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
-    for (std::size_t k = 0; k < again.steps.size() && k < remaining_.size(); ++k)
+    // A re-plan that did not move the base (no base path: the base held at rest.rod.clamp) keeps
+    // the base gripper where it is now.
+    const bool base_stays = rest.moving_base && again.base_end_effector_path.empty();
+    for (std::size_t k = 0; k < again.steps.size() && k < remaining_.size(); ++k) {
       remaining_[k] = planned_waypoint(again.steps[k]);
+      if (base_stays)
+        remaining_[k].base_end_effector =
+            compose(clamp_now_, rest.moving_base->grasp.tip_to_end_effector);
+    }
     fresh_ = static_cast<int>(again.steps.size());
     c.replanned = true;
   } catch (const InputError& error) {

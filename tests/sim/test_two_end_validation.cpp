@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
+#include "rodshape/io/task_reader.hpp"
+#include "rodshape/robot/arm_placement.hpp"
 #include "rodshape/sim/commanded_path.hpp"
 #include "rodshape/sim/plan_validation.hpp"
 #include "rodshape/trajectory/plan.hpp"
@@ -164,6 +167,129 @@ TEST(TwoEndValidation, ClosedLoopEstimatesWhereTheBaseIs) {
   const ValidationResult open = validate_plan(moving.problem, moving.plan, {}, noiseless());
   EXPECT_NEAR(run.final.true_error, open.runs.front().final.true_error, 1e-8);
   EXPECT_LT((result.plant.last.clamp.position - moving.final_motion.position).norm(), 1e-15);
+}
+
+/// Whether plan() moves the base of `problem` (fills base_end_effector_path).
+bool plan_moves_the_base(const PlanProblem& problem) {
+  PlanOptions options;
+  options.steps = 1;
+  return !rodshape::plan(problem, options).base_end_effector_path.empty();
+}
+
+TEST(TwoEndValidation, ARePlanThatDoesNotMoveTheBaseHoldsItWhereItIs) {
+  // While plan() plans with the clamp fixed at rod.clamp (the base where it is now), a re-plan's
+  // waypoints hold the base gripper there: every re-plan is taken here (significance < 0, no
+  // gentleness bound), and the base stays at the first checkpoint's pose to the end.
+  const MovingBasePlan moving = moving_base_plan();
+  if (plan_moves_the_base(moving.problem))
+    GTEST_SKIP() << "plan() moves the base: its re-plans say where (ClosedLoopRePlansFrom...)";
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  options.loop.significance = -1.0;
+  options.loop.max_energy_ratio = 1e6;
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  const ValidationResult closed =
+      validate_plan(moving.problem, moving.plan, plant, noiseless(), options);
+  ASSERT_EQ(closed.status, ValidationStatus::Complete) << closed.brief();
+  const ValidationRun& run = closed.runs.front();
+  ASSERT_EQ(run.checkpoints.size(), 2u);
+  for (const Checkpoint& c : run.checkpoints) EXPECT_TRUE(c.replanned) << c.message;
+  const Pose& first = moving.plan.steps.front().base_end_effector;
+  EXPECT_LT((closed.plant.last.base_end_effector.position - first.position).norm(), 1e-12);
+  EXPECT_LT((closed.plant.last.clamp.position - motion_at(1, 3).position).norm(), 1e-12);
+}
+
+TEST(TwoEndValidation, ClosedLoopRePlansFromWhereTheBaseIs) {
+  // The paper's mismatch (15 % softer, the weight the planner neglects, the tip held 2 mm off):
+  // open loop the plant misses the moved target; closed, each estimate is made and each re-plan
+  // starts with the rod's clamp where the base is. The re-plans move the base when plan() does
+  // (issue 21, item 2): until then a re-plan holds the base where it is and cannot reach the moved
+  // target gently (7 mm, refused), and this test is skipped.
+  const MovingBasePlan moving = moving_base_plan();
+  if (!plan_moves_the_base(moving.problem))
+    GTEST_SKIP() << "plan() does not move the base yet (PlanResult::base_end_effector_path empty)";
+  PlantModel plant;
+  plant.stiffness_scale = 0.85;
+  plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  plant.grasp_offset.position = {0.002, 0.0, 0.0};
+  const ValidationResult open = validate_plan(moving.problem, moving.plan, plant, noiseless());
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  options.loop.estimation.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
+  const ValidationResult closed =
+      validate_plan(moving.problem, moving.plan, plant, noiseless(), options);
+  ASSERT_EQ(closed.status, ValidationStatus::Complete) << closed.brief();
+  const ValidationRun& run = closed.runs.front();
+  ASSERT_EQ(run.checkpoints.size(), 2u);
+  for (const Checkpoint& c : run.checkpoints) {
+    EXPECT_TRUE(c.consistent) << c.message;
+    EXPECT_TRUE(c.replanned) << c.message;
+  }
+  RecordProperty("open_true_mm", std::to_string(1e3 * open.runs.front().final.true_error));
+  RecordProperty("closed_true_mm", std::to_string(1e3 * run.final.true_error));
+  EXPECT_LT(run.final.true_error, 0.5 * open.runs.front().final.true_error)
+      << "closed " << run.final.true_error << " m, open " << open.runs.front().final.true_error;
+}
+
+/// The largest distance between the nodes of two configurations of the same rod.
+double max_node_distance(const RodConfiguration& a, const RodConfiguration& b) {
+  double distance = 0.0;
+  for (int i = 0; i < a.nodes(); ++i) distance = std::max(distance, (a.p[i] - b.p[i]).norm());
+  return distance;
+}
+
+TEST(TwoEndValidation, TheBaseArmsJointsDriveTheBaseThroughItsForwardKinematics) {
+  // A Panda (the bundled example's) holds the base, standing where its default seed puts its hand
+  // on the base gripper's first pose; its joints along the base path by IK (re-timed where its
+  // velocity limits ask: the plant then takes each end at its own time).
+  MovingBasePlan moving = moving_base_plan();
+  const PlanTask task =
+      read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_s_curve.yaml");
+  ASSERT_TRUE(task.problem.arm.has_value());
+  PlanArm arm{task.problem.arm->model, {}};
+  arm.placement.flange_T_ee = task.problem.arm->placement.flange_T_ee;
+  JointTrajectoryOptions joint_options;
+  const Eigen::VectorXd q0 = joint_options.first_seed(arm.model);
+  const Pose hand = end_effector_pose(arm.model, arm.placement, q0);
+  arm.placement.world_T_base =
+      compose(moving.plan.base_end_effector_path.front().pose, inverse(hand));
+  joint_options.seed = q0;
+  ArmPlanResult base_arm;
+  base_arm.status = ArmPlanStatus::Reachable;
+  base_arm.joints =
+      joint_trajectory(arm.model, moving.plan.base_end_effector_path, arm.placement, joint_options);
+  ASSERT_TRUE(base_arm.joints.complete()) << base_arm.joints.message;
+  moving.problem.base_arm = arm;
+  moving.plan.base_arm = base_arm;
+  ASSERT_TRUE(drives_base_joints(moving.problem, moving.plan));
+  const BaseGripperPath base = commanded_base(moving.problem, moving.plan);
+  EXPECT_LT(
+      (base.path.back().pose.position - moving.plan.base_end_effector_path.back().pose.position)
+          .norm(),
+      1e-9);
+
+  PlanResult by_poses = moving.plan;
+  by_poses.base_arm.reset();
+  const ValidationResult poses = validate_plan(moving.problem, by_poses, {}, noiseless());
+  const ValidationResult joints = validate_plan(moving.problem, moving.plan, {}, noiseless());
+  ASSERT_EQ(joints.status, ValidationStatus::Complete) << joints.brief();
+  EXPECT_TRUE(joints.runs.front().base_driven_by_joints);
+  EXPECT_FALSE(poses.runs.front().base_driven_by_joints);
+  // The same ends at the last sample (the IK's 1e-10): the same last equilibrium.
+  EXPECT_LT(max_node_distance(joints.plant.last.configuration, poses.plant.last.configuration),
+            1e-8);
+  // Closed loop: each segment's base joints by IK from the base arm's, as for the tip's arm.
+  ValidationOptions closed;
+  closed.closed_loop = true;
+  closed.planning.steps = 3;
+  closed.loop.replan = false;
+  const ValidationResult loop = validate_plan(moving.problem, moving.plan, {}, noiseless(), closed);
+  ASSERT_EQ(loop.status, ValidationStatus::Complete) << loop.brief();
+  EXPECT_TRUE(loop.runs.front().base_driven_by_joints);
+  EXPECT_LT(max_node_distance(loop.plant.last.configuration, poses.plant.last.configuration), 1e-8);
 }
 
 }  // namespace
