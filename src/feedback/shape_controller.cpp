@@ -55,6 +55,8 @@ ShapeController::ShapeController(const PlanProblem& problem,
   if (plan.arm) shell_ = plan.arm->shell;
   if (plan.base_arm) base_shell_ = plan.base_arm->shell;
   clamp_now_ = problem_.rod.clamp;
+  // A plan without a base path (one made before plan() moved the base) holds it at rod.clamp.
+  base_moves_ = problem_.moving_base.has_value() && !plan.base_end_effector_path.empty();
   for (const PlanStep& step : plan.steps) remaining_.push_back(planned_waypoint(step));
   fresh_ = static_cast<int>(plan.steps.size());
 }
@@ -90,7 +92,7 @@ ControllerOutput ShapeController::update_with(double t,
                                               const ArmState& arm,
                                               const Estimator& estimator) {
   const BaseWrench planned = remaining_.front().wrench;
-  if (problem_.moving_base)  // the clamp where the base gripper is now
+  if (base_moves_)  // the clamp where the base gripper is now
     clamp_now_ = compose(arm.base_end_effector.value_or(remaining_.front().base_end_effector),
                          inverse(problem_.moving_base->grasp.tip_to_end_effector));
   remaining_.erase(remaining_.begin());

@@ -169,6 +169,27 @@ TEST(TwoEndValidation, ClosedLoopEstimatesWhereTheBaseIs) {
   EXPECT_LT((result.plant.last.clamp.position - moving.final_motion.position).norm(), 1e-15);
 }
 
+TEST(TwoEndValidation, AMovingBaseWithoutABasePathIsHeldAtTheClamp) {
+  // A plan made before plan() moved the base has no base path: open and closed loop, the base is
+  // the fixed clamp (rod.clamp), bit for bit as without a moving base.
+  PlanProblem problem = band_problem();
+  problem.moving_base = MovingBase{};
+  problem.moving_base->grasp.tip_to_end_effector.position = {0.0, 0.0, -0.02};
+  ValidationOptions options;
+  options.closed_loop = true;
+  options.planning.steps = 3;
+  options.loop.replan = false;
+  for (const bool closed : {false, true}) {
+    options.closed_loop = closed;
+    const ValidationResult fixed =
+        validate_plan(band_problem(), band_plan(), {}, noiseless(), options);
+    const ValidationResult held = validate_plan(problem, band_plan(), {}, noiseless(), options);
+    EXPECT_FALSE(held.runs.front().base_moved);
+    EXPECT_EQ(held.runs.front().final.true_error, fixed.runs.front().final.true_error);
+    EXPECT_EQ(held.runs.front().true_error, fixed.runs.front().true_error);
+  }
+}
+
 /// Whether plan() moves the base of `problem` (fills base_end_effector_path).
 bool plan_moves_the_base(const PlanProblem& problem) {
   PlanOptions options;

@@ -138,6 +138,7 @@ class ShapeController {
   int waypoint_ = 0;                                 // the waypoints reached so far
   std::optional<Workspace::ReachShell> shell_;       // the plan's reach shell
   std::optional<Workspace::ReachShell> base_shell_;  // the base arm's, with a moving base
+  bool base_moves_ = false;                          // a moving base with the plan's base path
   Pose clamp_now_;  // the rod's clamp at the last checkpoint (rod.clamp with a fixed clamp)
   ControllerBeliefs beliefs_;  // the model's corrections and the grasp offset so far
 };
