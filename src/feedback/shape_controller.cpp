@@ -53,6 +53,10 @@ ShapeController::ShapeController(const PlanProblem& problem,
   if (plan.end_effector_path.empty() || plan.steps.empty())
     throw InputError("PlanResult.steps", ": the plan has no step to carry out");
   if (plan.arm) shell_ = plan.arm->shell;
+  if (plan.base_arm) base_shell_ = plan.base_arm->shell;
+  clamp_now_ = problem_.rod.clamp;
+  // A plan without a base path (one made before plan() moved the base) holds it at rod.clamp.
+  base_moves_ = problem_.moving_base.has_value() && !plan.base_end_effector_path.empty();
   for (const PlanStep& step : plan.steps) remaining_.push_back(planned_waypoint(step));
   fresh_ = static_cast<int>(plan.steps.size());
 }
@@ -62,9 +66,10 @@ ControllerOutput ShapeController::update(const MarkerMeasurement& measurement,
   ensure_waypoint_ahead(remaining_);
   measurement.sensor.validate();
   return update_with(measurement.frame.t, arm,
-                     [&](const Pose& tip, const Pose& end_effector, const StatePrior& prior,
-                         const EstimationOptions& options, const StateHypothesis& hypothesis) {
-                       return estimate_state(problem_.rod, tip, end_effector, measurement.frame,
+                     [&](const ClampedRod& model, const Pose& tip, const Pose& end_effector,
+                         const StatePrior& prior, const EstimationOptions& options,
+                         const StateHypothesis& hypothesis) {
+                       return estimate_state(model, tip, end_effector, measurement.frame,
                                              measurement.sensor, prior, options, hypothesis);
                      });
 }
@@ -73,11 +78,12 @@ ControllerOutput ShapeController::update(const CloudMeasurement& measurement, co
   ensure_waypoint_ahead(remaining_);
   measurement.sensor.validate();
   return update_with(measurement.frame.t, arm,
-                     [&](const Pose& tip, const Pose& end_effector, const StatePrior& prior,
-                         const EstimationOptions& options, const StateHypothesis& hypothesis) {
-                       return estimate_state_from_cloud(problem_.rod, tip, end_effector,
-                                                        measurement.frame, measurement.sensor,
-                                                        prior, options, hypothesis);
+                     [&](const ClampedRod& model, const Pose& tip, const Pose& end_effector,
+                         const StatePrior& prior, const EstimationOptions& options,
+                         const StateHypothesis& hypothesis) {
+                       return estimate_state_from_cloud(model, tip, end_effector, measurement.frame,
+                                                        measurement.sensor, prior, options,
+                                                        hypothesis);
                      });
 }
 
@@ -86,6 +92,9 @@ ControllerOutput ShapeController::update_with(double t,
                                               const ArmState& arm,
                                               const Estimator& estimator) {
   const BaseWrench planned = remaining_.front().wrench;
+  if (base_moves_)  // the clamp where the base gripper is now
+    clamp_now_ = compose(arm.base_end_effector.value_or(remaining_.front().base_end_effector),
+                         inverse(problem_.moving_base->grasp.tip_to_end_effector));
   remaining_.erase(remaining_.begin());
   fresh_ = std::max(0, fresh_ - 1);
   ControllerOutput output;
@@ -114,9 +123,9 @@ void ShapeController::estimate(Checkpoint& c,
                                const BaseWrench& planned) {
   // The tip where the gripper is believed to hold it.
   const Pose commanded = compose(end_effector, inverse(problem_.grasp.tip_to_end_effector));
-  c.estimate =
-      estimator(compose(commanded, beliefs_.fused.offset), end_effector, beliefs_.prior(planned),
-                beliefs_.estimation(options_, commanded), beliefs_.hypothesis(planned));
+  c.estimate = estimator(rod_now(), compose(commanded, beliefs_.fused.offset), end_effector,
+                         beliefs_.prior(planned), beliefs_.estimation(options_, commanded),
+                         beliefs_.hypothesis(planned));
   c.consistent = unexplained(c.estimate, options_.max_residual).empty();
   c.significant = c.consistent && significant(c.estimate);
   if (c.consistent && (c.significant || options_.fuse))
@@ -124,6 +133,12 @@ void ShapeController::estimate(Checkpoint& c,
   if (c.significant) beliefs_.acting = beliefs_.fused;  // the rod is not as the plan believes
   c.grasp_offset = beliefs_.acting.offset;
   c.message = kept_message(c);
+}
+
+ClampedRod ShapeController::rod_now() const {
+  ClampedRod rod = problem_.rod;
+  rod.clamp = clamp_now_;
+  return rod;
 }
 
 /// Why an estimate not acted on was not.
@@ -147,8 +162,9 @@ bool ShapeController::significant(const StateEstimate& e) const {
 /// first `horizon` of them optimised; those are then fresh).
 void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
   PlanProblem rest = problem_;
-  rest.rod = estimated_rod(problem_.rod, beliefs_.acting.stiffness_scale,
-                           beliefs_.acting.load_factor, options_.estimation.gravity);
+  // With a moving base the rest starts where the base is now (its clamp; the base keeps moving).
+  rest.rod = estimated_rod(rod_now(), beliefs_.acting.stiffness_scale, beliefs_.acting.load_factor,
+                           options_.estimation.gravity);
   rest.initial = InitialState::equilibrium(from);
   // Commanded end-effector poses that put the real tip (commanded · offset) where the plan wants.
   rest.grasp.tip_to_end_effector =
@@ -157,6 +173,8 @@ void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
   // kept in the workspace, and each segment's joints are solved as the arm gets there.
   rest.arm.reset();
   if (shell_) rest.workspace.reach = shell_;
+  rest.base_arm.reset();  // the same for the base arm: its shell kept in the base's workspace
+  if (rest.moving_base && base_shell_) rest.moving_base->workspace.reach = base_shell_;
   PlanOptions options = planning_;
   options.steps = static_cast<int>(remaining_.size());
   options.horizon = std::min(options_.horizon, options.steps);
@@ -174,8 +192,15 @@ void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
       return;
     }
     // The first steps re-planned; those beyond the re-plan's horizon are kept until their turn.
-    for (std::size_t k = 0; k < again.steps.size() && k < remaining_.size(); ++k)
+    // A re-plan that did not move the base (no base path: the base held at rest.rod.clamp) keeps
+    // the base gripper where it is now.
+    const bool base_stays = rest.moving_base && again.base_end_effector_path.empty();
+    for (std::size_t k = 0; k < again.steps.size() && k < remaining_.size(); ++k) {
       remaining_[k] = planned_waypoint(again.steps[k]);
+      if (base_stays)
+        remaining_[k].base_end_effector =
+            compose(clamp_now_, rest.moving_base->grasp.tip_to_end_effector);
+    }
     fresh_ = static_cast<int>(again.steps.size());
     c.replanned = true;
   } catch (const InputError& error) {

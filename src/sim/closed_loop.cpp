@@ -4,6 +4,7 @@
 
 #include "scene_contact.hpp"
 #include "sensor_view.hpp"
+#include "two_end_path.hpp"
 
 #include <cmath>
 #include <functional>
@@ -40,14 +41,26 @@ class Driver {
 
   ClosedLoopRun run(const PlanResult& plan) {
     if (drives_joints(problem_, plan)) joints_ = plan.arm->joints.q.front();
+    // With a moving base, both ends: the base from where the plan's base path starts.
+    const std::vector<TimedPose> base_path = commanded_base_path(problem_, plan);
+    if (!base_path.empty())
+      base_from_ = plan.base_end_effector_path.empty() ? base_path.front().pose
+                                                       : plan.base_end_effector_path.front().pose;
+    if (base_from_ && drives_base_joints(problem_, plan))
+      base_joints_ = plan.base_arm->joints.q.front();
+    run_.base_moved = base_from_.has_value();
     Pose from = plan.end_effector_path.front().pose;
     BaseWrench w = plan.initial_wrench;
     double t = plan.end_effector_path.front().t;
     for (bool first = true;; first = false) {
-      const Pose to = controller_.remaining().front().end_effector;
-      const PlantRun part = drive_segment(from, to, w, t, first);
+      const PlannedWaypoint& next = controller_.remaining().front();
+      const Pose to = next.end_effector;
+      const std::optional<Pose> base_to =
+          base_from_ ? std::optional<Pose>(next.base_end_effector) : std::nullopt;
+      const PlantRun part = drive_segment(from, to, base_to, w, t, first);
       if (part.lost) break;
       from = to;
+      if (base_to) base_from_ = base_to;
       w = part.last.base_wrench;
       t = part.last.t;
       if (controller_.remaining().size() == 1) break;  // the last waypoint
@@ -55,6 +68,7 @@ class Driver {
       run_.checkpoints.push_back(update(t, from));
     }
     run_.driven_by_joints = joints_.has_value();  // reset when a segment had no IK solution
+    run_.base_driven_by_joints = base_joints_.has_value();
     run_.last_seen = sensor_.last_markers();
     run_.last_cloud = sensor_.last_cloud();
     run_.min_gap = contact_.min_gap();
@@ -64,17 +78,36 @@ class Driver {
   }
 
  private:
-  /// The plant from `from` to `to`, its frames seen and their errors recorded.
-  PlantRun drive_segment(
-      const Pose& from, const Pose& to, const BaseWrench& w, double t, bool first) {
-    std::vector<TimedPose> path =
-        time_parameterize({from, to}, controller_.planning().end_effector);
+  /// The plant from `from` to `to` (and the base from base_from_ to `base_to`, when it moves), its
+  /// frames seen and their errors recorded.
+  PlantRun drive_segment(const Pose& from,
+                         const Pose& to,
+                         const std::optional<Pose>& base_to,
+                         const BaseWrench& w,
+                         double t,
+                         bool first) {
+    std::vector<TimedPose> path;
+    BaseGripperPath base;
+    if (base_to) {  // both ends on one clock
+      sim_detail::TwoEndPath both = sim_detail::time_two_ends(
+          {from, to}, {*base_from_, *base_to}, controller_.planning().end_effector,
+          controller_.planning().base_end_effector);
+      path = std::move(both.tip);
+      base.path = std::move(both.base);
+      base.base_to_end_effector = problem_.moving_base->grasp.tip_to_end_effector;
+    } else {
+      path = time_parameterize({from, to}, controller_.planning().end_effector);
+    }
     for (TimedPose& sample : path) sample.t += t;
-    if (joints_) path = hand_path(path);
+    for (TimedPose& sample : base.path) sample.t += t;
+    if (joints_) path = hand_path(path, *problem_.arm, joints_, "arm");
+    if (base_joints_)
+      base.path = hand_path(base.path, *problem_.base_arm, base_joints_, "base arm");
+    const double t_end = base.moves() ? std::max(path.back().t, base.path.back().t) : path.back().t;
     const double rate = sensor_.frame_rate();
     PlantRun part = drive_plant(
-        plant_.rod, problem_.grasp, plant_.grasp_offset, path, w,
-        frames_within(t, path.back().t, rate, first), [&](const PlantFrame& frame) { see(frame); },
+        plant_.rod, problem_.grasp, plant_.grasp_offset, path, base, w,
+        frames_within(t, t_end, rate, first), [&](const PlantFrame& frame) { see(frame); },
         plant_.options);
     append(part);
     return part;
@@ -85,24 +118,31 @@ class Driver {
     contact_.see(frame);
     std::vector<CapsuleObstacle> links;
     if (joints_ && sensor_.sees_cloud()) links = arm_link_capsules(*problem_.arm, *joints_);
+    if (base_joints_ && sensor_.sees_cloud()) {
+      const std::vector<CapsuleObstacle> base_links =
+          arm_link_capsules(*problem_.base_arm, *base_joints_);
+      links.insert(links.end(), base_links.begin(), base_links.end());
+    }
     run_.times.push_back(frame.t);
-    run_.errors.push_back(
-        sensor_.see(frame, problem_, plant_.rod.clamp.position, std::move(links)));
+    // The rod's first point is the clamp, where the base is held at this frame.
+    run_.errors.push_back(sensor_.see(frame, problem_, frame.clamp.position, std::move(links)));
   }
 
-  /// The rest's measurement handed to the controller at time `t`, the arm at `at`; the
-  /// checkpoint with what its estimate was made from and how far it is from the plant's rod.
+  /// The rest's measurement handed to the controller at time `t`, the arm at `at` (and the base
+  /// gripper at base_from_, when it moves); the checkpoint with what its estimate was made from
+  /// and how far it is from the plant's rod.
   Checkpoint update(double t, const Pose& at) {
+    const ArmState arm{at, base_from_};
     Checkpoint checkpoint;
     if (sensor_.sees_cloud()) {
       CloudMeasurement measurement = sensor_.rest_cloud();
       measurement.frame.t = t;
-      checkpoint = controller_.update(measurement, {at}).checkpoint;
+      checkpoint = controller_.update(measurement, arm).checkpoint;
       checkpoint.points = static_cast<int>(measurement.frame.points.size());
     } else {
       MarkerMeasurement measurement = sensor_.rest_markers();
       measurement.frame.t = t;
-      checkpoint = controller_.update(measurement, {at}).checkpoint;
+      checkpoint = controller_.update(measurement, arm).checkpoint;
       checkpoint.points = measurement.frame.visible();
     }
     checkpoint.shape_rms =
@@ -110,23 +150,27 @@ class Driver {
     return checkpoint;
   }
 
-  /// The segment as the hand moves along it: IK at every sample, from the joints the arm has
-  /// (joint_trajectory(), re-timed where the joints' velocity limits ask), through the arm's FK.
-  std::vector<TimedPose> hand_path(const std::vector<TimedPose>& path) {
+  /// The segment as the hand of `arm` (the tip's or the base's, its joints `joints`) moves along
+  /// it: IK at every sample, from the joints the arm has (joint_trajectory(), re-timed where the
+  /// joints' velocity limits ask: the plant then takes each end at its own time), through the
+  /// arm's FK.
+  std::vector<TimedPose> hand_path(const std::vector<TimedPose>& path,
+                                   const PlanArm& arm,
+                                   std::optional<Eigen::VectorXd>& joints,
+                                   const std::string& which) {
     JointTrajectoryOptions options = controller_.planning().arm.joints;
-    options.seed = *joints_;
-    const PlanArm& arm = *problem_.arm;
+    options.seed = *joints;
     const JointTrajectoryResult trajectory =
         joint_trajectory(arm.model, path, arm.placement, options);
     if (trajectory.complete()) {
-      joints_ = trajectory.q.back();
+      joints = trajectory.q.back();
       return hand_poses(arm, trajectory);
     }
-    joints_.reset();
+    joints.reset();
     if (!run_.checkpoints.empty())
-      run_.checkpoints.back().message += "; the arm has no joint path to the next waypoint (" +
-                                         trajectory.message +
-                                         "): the rest is driven along the end-effector poses";
+      run_.checkpoints.back().message +=
+          "; the " + which + " has no joint path to the next waypoint (" + trajectory.message +
+          "): the rest is driven along the end-effector poses";
     return path;
   }
 
@@ -159,8 +203,10 @@ class Driver {
   const PlanProblem& problem_;    // the controller's
   const ClosedLoopPlant& plant_;  // the real rod and grasp, which the controller does not know
   sim_detail::SensorView sensor_;
-  std::optional<Eigen::VectorXd> joints_;  // the arm's joints at the last waypoint
-  sim_detail::SceneContact contact_;       // the plant against the plan's scene
+  std::optional<Eigen::VectorXd> joints_;       // the arm's joints at the last waypoint
+  std::optional<Pose> base_from_;               // the base gripper's pose there (a moving base)
+  std::optional<Eigen::VectorXd> base_joints_;  // the base arm's joints there
+  sim_detail::SceneContact contact_;            // the plant against the plan's scene
   ClosedLoopRun run_;
 };
 

@@ -22,4 +22,23 @@ std::vector<TimedPose> commanded_path(const PlanProblem& problem, const PlanResu
   return hand_poses(*problem.arm, plan.arm->joints);
 }
 
+bool drives_base_joints(const PlanProblem& problem, const PlanResult& plan) {
+  return problem.moving_base && problem.base_arm && plan.base_arm &&
+         plan.base_arm->joints.complete();
+}
+
+std::vector<TimedPose> commanded_base_path(const PlanProblem& problem, const PlanResult& plan) {
+  if (!problem.moving_base) return {};
+  if (!drives_base_joints(problem, plan)) return plan.base_end_effector_path;
+  return hand_poses(*problem.base_arm, plan.base_arm->joints);
+}
+
+BaseGripperPath commanded_base(const PlanProblem& problem, const PlanResult& plan) {
+  BaseGripperPath base;
+  if (!problem.moving_base) return base;
+  base.base_to_end_effector = problem.moving_base->grasp.tip_to_end_effector;
+  base.path = commanded_base_path(problem, plan);
+  return base;
+}
+
 }  // namespace rodshape

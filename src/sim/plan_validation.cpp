@@ -90,6 +90,7 @@ void drive_and_observe(ValidationResult& result,
                        const SensorModel& sensor,
                        const ValidationOptions& options,
                        const std::vector<TimedPose>& path,
+                       const BaseGripperPath& base,
                        const std::vector<double>& times) {
   const double length = result.real_rod.properties.length;
   std::vector<std::unique_ptr<RunSensor>> cameras;
@@ -102,8 +103,9 @@ void drive_and_observe(ValidationResult& result,
     cameras.push_back(std::make_unique<RunSensor>(sensor, run.seed, length, problem));
   }
   const bool clouds_see_arm = kind_of(sensor) == SensorKind::Depth && drives_joints(problem, plan);
-  const Eigen::Vector3d clamp = result.real_rod.clamp.position;
-  sim_detail::SceneContact contact(problem.scene, clamp);
+  const bool clouds_see_base_arm =
+      kind_of(sensor) == SensorKind::Depth && drives_base_joints(problem, plan);
+  sim_detail::SceneContact contact(problem.scene, result.real_rod.clamp.position);
   const int total = static_cast<int>(times.size());
   int driven = 0, reported_percent = -1;
   const auto see = [&](const PlantFrame& frame) {
@@ -116,10 +118,17 @@ void drive_and_observe(ValidationResult& result,
     std::vector<CapsuleObstacle> links;
     if (clouds_see_arm)
       links = arm_link_capsules(*problem.arm, joints_at(plan.arm->joints, frame.t));
+    if (clouds_see_base_arm) {
+      const std::vector<CapsuleObstacle> base_links =
+          arm_link_capsules(*problem.base_arm, joints_at(plan.base_arm->joints, frame.t));
+      links.insert(links.end(), base_links.begin(), base_links.end());
+    }
+    // The rod's first point: the clamp, where the base is held at this frame.
     for (std::size_t k = 0; k < cameras.size(); ++k)
-      record(result.runs[k], frame.t, cameras[k]->view().see(frame, problem, clamp, links));
+      record(result.runs[k], frame.t,
+             cameras[k]->view().see(frame, problem, frame.clamp.position, links));
   };
-  result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path,
+  result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, base,
                              plan.initial_wrench, times, see, options.plant);
   if (options.progress && driven < total) options.progress(total, total);  // lost on the way
   for (std::size_t k = 0; k < cameras.size(); ++k) {
@@ -163,6 +172,8 @@ ValidationRun closed_loop_run(const PlanProblem& problem,
   run.min_gap = loop.min_gap;
   run.plant_final = loop.plant.last;
   run.driven_by_joints = loop.driven_by_joints;
+  run.base_moved = loop.base_moved;
+  run.base_driven_by_joints = loop.base_driven_by_joints;
   plant_run = std::move(loop.plant);
   return run;
 }
@@ -313,9 +324,15 @@ ValidationResult validate_plan(const PlanProblem& problem,
   check_frames(plan, sensor, options);
   if (!options.closed_loop) {
     const std::vector<TimedPose> path = commanded_path(problem, plan);
-    drive_and_observe(result, problem, plan, plant, sensor, options, path,
-                      frame_times(path.front().t, path.back().t, frame_rate_of(sensor)));
-    for (ValidationRun& run : result.runs) run.driven_by_joints = drives_joints(problem, plan);
+    const BaseGripperPath base = commanded_base(problem, plan);  // empty: a fixed clamp
+    const double t_end = base.moves() ? std::max(path.back().t, base.path.back().t) : path.back().t;
+    drive_and_observe(result, problem, plan, plant, sensor, options, path, base,
+                      frame_times(path.front().t, t_end, frame_rate_of(sensor)));
+    for (ValidationRun& run : result.runs) {
+      run.driven_by_joints = drives_joints(problem, plan);
+      run.base_moved = base.moves();
+      run.base_driven_by_joints = base.moves() && drives_base_joints(problem, plan);
+    }
   }
   if (options.closed_loop) {
     // Each run drives its own plant: the runs are independent, carried out by options.jobs threads.

@@ -36,25 +36,53 @@ double load_potential(const ClampedRod& rod, const RodConfiguration& c) {
   return -rod.load.force.dot(integral);
 }
 
-/// Energy released between two equilibria a → b: the gripper's work (trapezoid in its wrench
-/// n(L), m(L) over the tip's displacement and world-frame rotation) minus the rise of the elastic
-/// and load potential energy. ≈ 0 on a followed path, > 0 where the rod snapped.
+/// Energy released between two equilibria a → b: the grippers' work (trapezoid in the tip's
+/// wrench n(L), m(L) over the tip's displacement and world-frame rotation, and with a moving base
+/// the clamp's −n(0), −m(0) over the base's) minus the rise of the elastic and load potential
+/// energy. ≈ 0 on a followed path, > 0 where the rod snapped.
 double energy_released(const ClampedRod& rod,
                        const RodConfiguration& a,
-                       const RodConfiguration& b) {
+                       const RodConfiguration& b,
+                       bool base_moves) {
   const Pose pa = a.tip(), pb = b.tip();
   const Wrench wa = a.tip_wrench(), wb = b.tip_wrench();
   const Eigen::Vector3d rotation = log_so3(pb.rotation * pa.rotation.transpose());
-  const double work = 0.5 * (wa.force + wb.force).dot(pb.position - pa.position) +
-                      0.5 * (wa.moment + wb.moment).dot(rotation);
+  double work = 0.5 * (wa.force + wb.force).dot(pb.position - pa.position) +
+                0.5 * (wa.moment + wb.moment).dot(rotation);
+  if (base_moves) {  // the clamp applies −n(0), −m(0) to the rod
+    const Eigen::Vector3d turn = log_so3(b.R.front() * a.R.front().transpose());
+    work -= 0.5 * (a.n.front() + b.n.front()).dot(b.p.front() - a.p.front()) +
+            0.5 * (a.m.front() + b.m.front()).dot(turn);
+  }
   return work - (b.energy - a.energy) - (load_potential(rod, b) - load_potential(rod, a));
 }
 
-PlantFrame frame_at(double t, const Pose& end_effector, const ShootingResult& state) {
-  return {t, end_effector, state.base_wrench, state.configuration};
-}
+/// One sample of the drive: the time, the commanded tip end-effector pose and, with a moving base,
+/// the commanded base gripper pose.
+struct DriveSample {
+  double t = 0.0;
+  Pose end_effector;
+  Pose base_end_effector;
+};
 
 }  // namespace
+
+Pose pose_at(const std::vector<TimedPose>& path, double t) {
+  if (path.empty()) throw InputError("path", ": the commanded path has no sample");
+  const auto after = std::upper_bound(path.begin(), path.end(), t,
+                                      [](double x, const TimedPose& p) { return x < p.t; });
+  if (after == path.begin()) return path.front().pose;
+  const TimedPose& a = *(after - 1);
+  if (after == path.end() || a.t == t) return a.pose;
+  const TimedPose& b = *after;
+  return interpolate(a.pose, b.pose, (t - a.t) / (b.t - a.t));
+}
+
+Pose BaseGripperPath::at(double t) const { return pose_at(path, t); }
+
+Pose BaseGripperPath::clamp_at(double t) const {
+  return compose(at(t), inverse(base_to_end_effector));
+}
 
 std::string to_string(PlantEvent::Kind kind) {
   return std::string(name_of(kPlantEventKindNames, kind, "lost"));
@@ -80,10 +108,13 @@ class Driver {
   Driver(const ClampedRod& rod,
          const Grasp& grasp,
          const Pose& grasp_offset,
+         const BaseGripperPath& base,
          const std::vector<double>& frame_times,
          const PlantFrameSink& on_frame,
          const PlantOptions& options)
       : rod_(rod),
+        rod_now_(rod),
+        base_(base),
         grasp_(grasp),
         offset_(grasp_offset),
         frames_(frame_times),
@@ -91,12 +122,14 @@ class Driver {
         options_(options) {
     direct_ = options.shooting;
     direct_.output_derivatives = Derivatives::None;
+    base_held_by_ = rod.clamp;
   }
 
   /// The equilibrium at the path's start, solved from `guess` with continuation.
-  bool start(const TimedPose& sample, const BaseWrench& guess) {
-    state_ = solve(sample.pose, guess, true);
-    held_by_ = sample.pose;
+  bool start(const DriveSample& sample, const BaseWrench& guess) {
+    move_base(sample);
+    state_ = solve(sample.end_effector, guess, true);
+    held_by_ = sample.end_effector;
     if (state_.summary.converged()) return true;
     lose(sample.t,
          "the real rod has no equilibrium at the path's start (" + state_.summary.brief() + ")");
@@ -104,37 +137,61 @@ class Driver {
   }
 
   /// The next sample, solved directly from the last equilibrium; false when it is lost.
-  bool advance(const TimedPose& sample) {
+  bool advance(const DriveSample& sample) {
     emit_frames_before(sample.t, false);
     if (run_.lost) return false;  // unstable, and no stable equilibrium to snap to
-    ShootingResult next = solve(sample.pose, state_.base_wrench, false);
+    const Pose clamp_before = rod_now_.clamp;
+    const Pose base_before = base_held_by_;
+    BaseWrench from = state_.base_wrench;
+    if (base_.moves()) {
+      // The warm start turns with the base: the world wrench rotated by the clamp's ΔR, exact for
+      // a rigid motion of both ends, so the rod stays on its branch.
+      move_base(sample);
+      const Eigen::Matrix3d turn = rod_now_.clamp.rotation * clamp_before.rotation.transpose();
+      from.force = turn * from.force;
+      from.moment = turn * from.moment;
+    }
+    ShootingResult next = solve(sample.end_effector, from, false);
     if (!next.summary.converged()) {
+      rod_now_.clamp = clamp_before;  // the state stays where it was held
+      base_held_by_ = base_before;
       lose(sample.t, "no equilibrium found at t = " + detail::format_value(sample.t) + " s (" +
                          next.summary.brief() + ")");
       return false;
     }
     check_snap(sample.t, next.configuration);
     state_ = std::move(next);
-    held_by_ = sample.pose;
+    held_by_ = sample.end_effector;
     return true;
   }
 
   PlantRun finish(double t_end) {
     if (!run_.lost) emit_frames_before(t_end, true);
-    run_.last = frame_at(run_.lost ? run_.events.back().t : t_end, held_by_, state_);
+    run_.last = frame_at(run_.lost ? run_.events.back().t : t_end);
     return std::move(run_);
   }
 
  private:
+  /// The rod's clamp where the base gripper holds it at this sample (a moving base only).
+  void move_base(const DriveSample& sample) {
+    if (!base_.moves()) return;
+    base_held_by_ = sample.base_end_effector;
+    rod_now_.clamp = compose(sample.base_end_effector, inverse(base_.base_to_end_effector));
+  }
+
+  PlantFrame frame_at(double t) const {
+    return {t, held_by_, state_.base_wrench, state_.configuration, rod_now_.clamp, base_held_by_};
+  }
+
   ShootingResult solve(const Pose& end_effector, const BaseWrench& from, bool continuation) {
     ShootingOptions options = direct_;
     options.continuation = continuation;  // past the start: each sample from the last
     ++run_.solves;
-    return solve_equilibrium(rod_, held_at(end_effector, grasp_, offset_), from, options);
+    return solve_equilibrium(rod_now_, held_at(end_effector, grasp_, offset_), from, options);
   }
 
   void check_snap(double t, const RodConfiguration& next) {
-    const double released = energy_released(rod_, state_.configuration, next);
+    const double released = energy_released(rod_, state_.configuration, next, base_.moves());
     const double scale = std::max(state_.configuration.energy, next.energy);
     if (released <= options_.energy_tolerance * scale + 1e-9) return;
     run_.events.push_back(
@@ -157,7 +214,7 @@ class Driver {
     };
     if (due() && options_.check_stability) settle(frames_[next_frame_]);
     while (!run_.lost && due()) {  // handed on, not kept (issue 24: memory per frame)
-      if (on_frame_) on_frame_(frame_at(frames_[next_frame_], held_by_, state_));
+      if (on_frame_) on_frame_(frame_at(frames_[next_frame_]));
       ++next_frame_;
       ++run_.frames;
     }
@@ -166,13 +223,14 @@ class Driver {
   /// A direct solve follows an equilibrium branch past the point where it loses stability; the real
   /// rod does not: it snaps to a stable equilibrium with the same ends (seek_stable_equilibrium).
   void settle(double t) {
-    ClampedRod at = rod_;
+    ClampedRod at = rod_now_;
     at.substeps = state_.summary.substeps;
     state_.configuration = integrate(at, state_.base_wrench, Derivatives::AllNodes);
     const TipCondition tip = held_at(held_by_, grasp_, offset_);
     const StabilityResult verdict = assess_stability(at, state_.configuration, tip);
     if (verdict.stable || verdict.degenerate) return;
-    StableEquilibriumResult found = seek_stable_equilibrium(rod_, tip, state_, verdict, direct_);
+    StableEquilibriumResult found =
+        seek_stable_equilibrium(rod_now_, tip, state_, verdict, direct_);
     if (!found.found) {
       lose(t, "the rod's equilibrium is unstable at t = " + detail::format_value(t) +
                   " s and no stable one was found (" + found.message + ")");
@@ -189,6 +247,8 @@ class Driver {
   }
 
   const ClampedRod& rod_;
+  ClampedRod rod_now_;  // the rod with its clamp where the base is held now
+  const BaseGripperPath& base_;
   const Grasp& grasp_;
   const Pose& offset_;
   const std::vector<double>& frames_;
@@ -197,9 +257,35 @@ class Driver {
   ShootingOptions direct_;
   ShootingResult state_;
   Pose held_by_;
+  Pose base_held_by_;  // the base gripper's commanded pose (the clamp's with a fixed clamp)
   std::size_t next_frame_ = 0;
   PlantRun run_;
 };
+
+}  // namespace
+
+namespace {
+
+/// The drive's samples: the tip path's with a fixed clamp; with a moving base, every time of
+/// either path (merged in order, equal times once), each end at its own path's pose there.
+std::vector<DriveSample> drive_samples(const std::vector<TimedPose>& path,
+                                       const BaseGripperPath& base) {
+  std::vector<DriveSample> samples;
+  if (!base.moves()) {
+    samples.reserve(path.size());
+    for (const TimedPose& p : path) samples.push_back({p.t, p.pose, Pose{}});
+    return samples;
+  }
+  std::vector<double> times;
+  times.reserve(path.size() + base.path.size());
+  for (const TimedPose& p : path) times.push_back(p.t);
+  for (const TimedPose& p : base.path) times.push_back(p.t);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  samples.reserve(times.size());
+  for (double t : times) samples.push_back({t, pose_at(path, t), base.at(t)});
+  return samples;
+}
 
 }  // namespace
 
@@ -207,6 +293,7 @@ PlantRun drive_plant(const ClampedRod& rod,
                      const Grasp& grasp,
                      const Pose& grasp_offset,
                      const std::vector<TimedPose>& path,
+                     const BaseGripperPath& base,
                      const BaseWrench& guess,
                      const std::vector<double>& frame_times,
                      const PlantFrameSink& on_frame,
@@ -216,11 +303,29 @@ PlantRun drive_plant(const ClampedRod& rod,
   if (path.empty()) throw InputError("path", ": the commanded path has no sample");
   if (!std::is_sorted(frame_times.begin(), frame_times.end()))
     throw InputError("frame_times", ": must be increasing");
-  Driver driver(rod, grasp, grasp_offset, frame_times, on_frame, options);
-  if (driver.start(path.front(), guess))
-    for (std::size_t k = 1; k < path.size() && driver.advance(path[k]); ++k) {
+  if (!std::is_sorted(base.path.begin(), base.path.end(),
+                      [](const TimedPose& a, const TimedPose& b) { return a.t < b.t; }))
+    throw InputError("BaseGripperPath.path", ": its times must be increasing");
+  if (base.moves())
+    detail::require_pose("BaseGripperPath.base_to_end_effector", base.base_to_end_effector);
+  const std::vector<DriveSample> samples = drive_samples(path, base);
+  Driver driver(rod, grasp, grasp_offset, base, frame_times, on_frame, options);
+  if (driver.start(samples.front(), guess))
+    for (std::size_t k = 1; k < samples.size() && driver.advance(samples[k]); ++k) {
     }
-  return driver.finish(path.back().t);
+  return driver.finish(samples.back().t);
+}
+
+PlantRun drive_plant(const ClampedRod& rod,
+                     const Grasp& grasp,
+                     const Pose& grasp_offset,
+                     const std::vector<TimedPose>& path,
+                     const BaseWrench& guess,
+                     const std::vector<double>& frame_times,
+                     const PlantFrameSink& on_frame,
+                     const PlantOptions& options) {
+  return drive_plant(rod, grasp, grasp_offset, path, BaseGripperPath{}, guess, frame_times,
+                     on_frame, options);
 }
 
 }  // namespace rodshape

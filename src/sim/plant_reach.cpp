@@ -12,14 +12,12 @@ namespace rodshape {
 
 namespace {
 
-/// The farthest tip from the clamp among the plan's initial tip and waypoints, and its waypoint
-/// (0: the start).
-std::pair<double, int> farthest_tip(const ClampedRod& real,
-                                    const PlanResult& plan,
-                                    const Pose& grasp_offset) {
+/// The farthest tip from its base (the clamp, or where a moving base is at that configuration)
+/// among the plan's initial tip and waypoints, and its waypoint (0: the start).
+std::pair<double, int> farthest_tip(const PlanResult& plan, const Pose& grasp_offset) {
   const auto distance = [&](const RodConfiguration& c) {
     if (c.p.empty()) return 0.0;
-    return (compose(c.tip(), grasp_offset).position - real.clamp.position).norm();
+    return (compose(c.tip(), grasp_offset).position - c.p.front()).norm();
   };
   std::pair<double, int> farthest{distance(plan.initial_configuration), 0};
   for (std::size_t k = 0; k < plan.steps.size(); ++k) {
@@ -36,7 +34,7 @@ void check_plant_reach(const ClampedRod& real,
                        const PlantModel& plant,
                        const ModelValidityLimits& limits) {
   using detail::format_value;
-  const auto [distance, waypoint] = farthest_tip(real, plan, plant.grasp_offset);
+  const auto [distance, waypoint] = farthest_tip(plan, plant.grasp_offset);
   const double reach = max_tip_distance(real.properties, limits);
   if (!(distance > reach * (1.0 + 1e-12))) return;
   const double L = real.properties.length;

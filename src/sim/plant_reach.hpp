@@ -10,8 +10,9 @@
 namespace rodshape {
 
 /// Throws InputError naming PlantModel.length (PlantModel when the length is the planner's) when
-/// the plan's initial tip or a waypoint's, moved by the plant's grasp offset, is farther from
-/// `real.clamp` than max_tip_distance(real.properties, limits).
+/// the plan's initial tip or a waypoint's, moved by the plant's grasp offset, is farther from its
+/// base (the clamp; with a moving base, where the base is at that pose) than
+/// max_tip_distance(real.properties, limits).
 void check_plant_reach(const ClampedRod& real,
                        const PlanResult& plan,
                        const PlantModel& plant,

@@ -14,7 +14,9 @@
 // within the noise still change nothing. Two guards: an estimate the model cannot explain
 // (`max_residual`) is not used, and a re-plan whose step is a coiled optimum, with much more energy
 // than the step it replaces (`max_energy_ratio`), is refused: the path stays gentle. The
-// controller knows no plant: sim/closed_loop.hpp drives one with it.
+// controller knows no plant: sim/closed_loop.hpp drives one with it. With a moving base (issue 21)
+// the rod's clamp is where the base gripper is at the checkpoint: the estimate is made with the
+// clamp there, and the re-plan starts from it (its problem's rod.clamp, the moving base kept).
 #pragma once
 
 #include <functional>
@@ -58,6 +60,10 @@ struct Checkpoint {
 /// (ShapeController::remaining().front()).
 struct ArmState {
   Pose end_effector;  // world_T_ee, commanded
+  /// With a moving base (PlanProblem::moving_base): the base gripper's commanded pose (world); the
+  /// rod's clamp is there · inverse(base_T_ee), and the estimate and the re-plan start from it.
+  /// Absent: the waypoint's planned base pose (PlannedWaypoint::base_end_effector).
+  std::optional<Pose> base_end_effector{};
 };
 
 /// What update() decided.
@@ -105,7 +111,8 @@ class ShapeController {
  private:
   /// One sensor's estimator: the state from what it saw, given the held tip's prior pose, the
   /// gripper, the prior, the options and the hypothesis.
-  using Estimator = std::function<StateEstimate(const Pose& tip,
+  using Estimator = std::function<StateEstimate(const ClampedRod& model,
+                                                const Pose& tip,
                                                 const Pose& end_effector,
                                                 const StatePrior& prior,
                                                 const EstimationOptions& options,
@@ -116,6 +123,8 @@ class ShapeController {
                 const Pose& end_effector,
                 const BaseWrench& planned);
   std::string kept_message(const Checkpoint& c) const;
+  /// The planner's rod with its clamp where the base is now (problem().rod with a fixed clamp).
+  ClampedRod rod_now() const;
   bool significant(const StateEstimate& e) const;
   void replan(Checkpoint& c, const BaseWrench& from);
 
@@ -126,8 +135,11 @@ class ShapeController {
   /// How many of the remaining steps were planned with the beliefs held now (the rest were made
   /// before the last correction, beyond a re-plan's horizon).
   int fresh_ = 0;
-  int waypoint_ = 0;                            // the waypoints reached so far
-  std::optional<Workspace::ReachShell> shell_;  // the plan's reach shell
+  int waypoint_ = 0;                                 // the waypoints reached so far
+  std::optional<Workspace::ReachShell> shell_;       // the plan's reach shell
+  std::optional<Workspace::ReachShell> base_shell_;  // the base arm's, with a moving base
+  bool base_moves_ = false;                          // a moving base with the plan's base path
+  Pose clamp_now_;  // the rod's clamp at the last checkpoint (rod.clamp with a fixed clamp)
   ControllerBeliefs beliefs_;  // the model's corrections and the grasp offset so far
 };
 

@@ -43,6 +43,11 @@ struct ClosedLoopRun {
   /// an IK solution and the rest of the run follow the end-effector poses: false, and the
   /// checkpoint before it says so.
   bool driven_by_joints = false;
+  /// With a moving base (a plan with a base path): both ends driven, the base to each waypoint's
+  /// base_end_effector on the tip's clock (each segment takes the longer of the two ends' times);
+  /// with a base arm, through its IK and FK as for the tip's arm (base_driven_by_joints).
+  bool base_moved = false;
+  bool base_driven_by_joints = false;
 };
 
 /// Carries out `plan` with `controller` (built from it, not yet updated) on `plant` seen by

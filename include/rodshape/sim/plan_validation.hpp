@@ -73,6 +73,10 @@ struct ValidationRun {
   /// The plant followed the arm's joint trajectory through its forward kinematics (closed loop:
   /// every segment's, by IK from the arm's joints; see ClosedLoopRun).
   bool driven_by_joints = false;
+  /// The base end was driven by a moving gripper (a plan with a moving base and its base path).
+  bool base_moved = false;
+  /// ... along the base arm's joint trajectory through its forward kinematics (commanded_base()).
+  bool base_driven_by_joints = false;
 };
 
 enum class ValidationStatus {

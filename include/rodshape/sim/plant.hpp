@@ -5,6 +5,14 @@
 // with their time, never a crash. The direct solves would follow a branch past the point where it
 // loses stability; the state's stability is checked at every camera frame and, where it is lost,
 // the rod snaps to a stable equilibrium with the same ends (seek_stable_equilibrium).
+//
+// Either end may be driven (issue 21): with a moving base the rod's clamp at each sample is the
+// commanded base gripper pose composed with inverse(base_T_ee), and each sample's direct solve
+// starts from the last base wrench turned with the base (world wrench rotated by the clamp's ΔR),
+// so that a rigid motion of both ends is followed exactly and the rod stays on its branch. The
+// solver clamps the rod at s = 0 (solvers/tip_condition.hpp: only the tip end has free
+// components), so the base grasp's released components are not modelled: the base is held
+// clamped.
 #pragma once
 
 #include <functional>
@@ -49,6 +57,11 @@ struct PlantFrame {
   Pose end_effector;               // the commanded end-effector pose the rod is held by
   BaseWrench base_wrench;          // n(0), m(0)
   RodConfiguration configuration;  // without derivatives
+  /// The rod's base (clamp) pose, world_T_base: the fixed clamp, or where the base gripper holds
+  /// it.
+  Pose clamp{};
+  /// The commanded base gripper pose (clamp · base_T_ee); with a fixed clamp, the clamp's pose.
+  Pose base_end_effector{};
 };
 
 struct PlantOptions {
@@ -65,6 +78,21 @@ struct PlantOptions {
   /// Each sample's direct solve (continuation is not used past the start).
   ShootingOptions shooting;
   void validate() const;
+};
+
+/// The base end (s = 0) held by a moving gripper: its commanded poses (world_T_ee, at increasing
+/// times; usually the tip path's times, sample for sample) and base_T_ee. The rod's clamp at time
+/// t is path(t) · inverse(base_to_end_effector), path(t) the sample at t or, between samples, the
+/// pose interpolated (line and slerp) between the two around it; past the ends the first or last.
+/// An empty path is a fixed clamp at the rod's own `clamp`.
+struct BaseGripperPath {
+  Pose base_to_end_effector;  // base_T_ee (MovingBase::grasp.tip_to_end_effector)
+  std::vector<TimedPose> path;
+  bool moves() const { return !path.empty(); }
+  /// The commanded base gripper pose at time t (path non-empty).
+  Pose at(double t) const;
+  /// The rod's clamp pose at time t: at(t) · inverse(base_to_end_effector).
+  Pose clamp_at(double t) const;
 };
 
 /// Receives each camera frame as the plant reaches it. drive_plant() keeps no frame (a frame
@@ -93,5 +121,24 @@ PlantRun drive_plant(const ClampedRod& rod,
                      const std::vector<double>& frame_times,
                      const PlantFrameSink& on_frame,
                      const PlantOptions& options = {});
+
+/// The same with the base end driven along `base` too: the plant is solved at every sample time
+/// of `path` and of `base.path` (the union; the same when they share their times), the tip at
+/// `path` and the clamp at `base` there (each interpolated between its own samples). With
+/// `base.path` empty this is the call above, bit for bit. The energy balance counts both
+/// grippers' work (the base gripper applies −n(0), −m(0) to the rod).
+PlantRun drive_plant(const ClampedRod& rod,
+                     const Grasp& grasp,
+                     const Pose& grasp_offset,
+                     const std::vector<TimedPose>& path,
+                     const BaseGripperPath& base,
+                     const BaseWrench& guess,
+                     const std::vector<double>& frame_times,
+                     const PlantFrameSink& on_frame,
+                     const PlantOptions& options = {});
+
+/// A commanded path's pose at time t: the sample at t, or the pose interpolated (line and slerp)
+/// between the samples around it; before the first or past the last, that one (path non-empty).
+Pose pose_at(const std::vector<TimedPose>& path, double t);
 
 }  // namespace rodshape
