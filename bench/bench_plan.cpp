@@ -136,7 +136,23 @@ void BM_PlanAroundPost(benchmark::State& state) {
   if (plan.scene) state.counters["min_gap_mm"] = 1e3 * plan.scene->min_gap;
 }
 
+/// examples/plan_two_pandas.yaml: the S made by two Pandas, one at each end (issue 21: both ends
+/// optimised, tracked and timed together, both arms' IK and joint trajectories).
+void BM_PlanTwoArms(benchmark::State& state) {
+  const PlanTask task =
+      read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_two_pandas.yaml");
+  PlanResult plan;
+  for (auto _ : state) {
+    plan = rodshape::plan(task.problem, task.options);
+    if (plan.status != PlanStatus::Complete) state.SkipWithError(plan.message.c_str());
+  }
+  state.counters["steps"] = static_cast<double>(plan.steps.size());
+  state.counters["both_arms_reachable"] =
+      plan.arm && plan.base_arm && plan.arm->reachable() && plan.base_arm->reachable();
+}
+
 BENCHMARK(BM_PlanPaperExperiment)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanTwoArms)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanWithScene)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanAroundPost)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_PlanPaperExperimentWithoutTracking)->Unit(benchmark::kMillisecond);

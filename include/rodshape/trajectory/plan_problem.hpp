@@ -62,9 +62,9 @@ struct MovingBase {
   /// Where the base may go: the set p(0) must stay in (a reach shell bounds the point
   /// p(0) + R(0) t, the base arm's wrist).
   Workspace workspace;
-  /// W_b of the energy-free term W_b (|δt|² + L² |δφ|²) / L² that each step adds to the cost: the
+  /// W_b of the energy-free term W_b W2 (|δt|² + L² |δφ|²) / L that each step adds to the cost: the
   /// least motion of the base from the step before, which makes a target that fixes the rod only
-  /// up to a rigid motion unique (≥ 0; relative to W2, see shape_problem.hpp).
+  /// up to a rigid motion unique (≥ 0; optimisation/base_motion.hpp).
   double motion_weight = 1e-3;
   /// Throws InputError naming "PlanProblem.moving_base.<field>".
   void validate() const;
