@@ -266,25 +266,16 @@ class Driver {
 
 namespace {
 
-/// The drive's samples: the tip path's with a fixed clamp; with a moving base, every time of
-/// either path (merged in order, equal times once), each end at its own path's pose there.
-std::vector<DriveSample> drive_samples(const std::vector<TimedPose>& path,
-                                       const BaseGripperPath& base) {
-  std::vector<DriveSample> samples;
-  if (!base.moves()) {
-    samples.reserve(path.size());
-    for (const TimedPose& p : path) samples.push_back({p.t, p.pose, Pose{}});
-    return samples;
-  }
+/// The times of the drive's samples with a moving base: every time of either path (merged in
+/// order, equal times once). (With a fixed clamp the tip path's own samples are driven.)
+std::vector<double> drive_times(const std::vector<TimedPose>& path, const BaseGripperPath& base) {
   std::vector<double> times;
   times.reserve(path.size() + base.path.size());
   for (const TimedPose& p : path) times.push_back(p.t);
   for (const TimedPose& p : base.path) times.push_back(p.t);
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
-  samples.reserve(times.size());
-  for (double t : times) samples.push_back({t, pose_at(path, t), base.at(t)});
-  return samples;
+  return times;
 }
 
 }  // namespace
@@ -308,12 +299,23 @@ PlantRun drive_plant(const ClampedRod& rod,
     throw InputError("BaseGripperPath.path", ": its times must be increasing");
   if (base.moves())
     detail::require_pose("BaseGripperPath.base_to_end_effector", base.base_to_end_effector);
-  const std::vector<DriveSample> samples = drive_samples(path, base);
   Driver driver(rod, grasp, grasp_offset, base, frame_times, on_frame, options);
-  if (driver.start(samples.front(), guess))
-    for (std::size_t k = 1; k < samples.size() && driver.advance(samples[k]); ++k) {
+  if (!base.moves()) {  // the tip path's samples, as they are
+    const auto sample = [&](std::size_t k) { return DriveSample{path[k].t, path[k].pose, {}}; };
+    if (driver.start(sample(0), guess))
+      for (std::size_t k = 1; k < path.size() && driver.advance(sample(k)); ++k) {
+      }
+    return driver.finish(path.back().t);
+  }
+  // Each end at its own path's pose at every time of either.
+  const std::vector<double> times = drive_times(path, base);
+  const auto sample = [&](std::size_t k) {
+    return DriveSample{times[k], pose_at(path, times[k]), base.at(times[k])};
+  };
+  if (driver.start(sample(0), guess))
+    for (std::size_t k = 1; k < times.size() && driver.advance(sample(k)); ++k) {
     }
-  return driver.finish(samples.back().t);
+  return driver.finish(times.back());
 }
 
 PlantRun drive_plant(const ClampedRod& rod,
