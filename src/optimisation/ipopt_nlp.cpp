@@ -17,14 +17,14 @@ constexpr int kUnknowns = 6;  // w = (n(0), m(0))
 
 }  // namespace
 
-// ---- options
-// --------------------------------------------------------------------------------------
+// ---- options -----------------------------------------------------------------------------------
 
 bool uses_finite_difference_hessian(const ShapeOptimiserOptions& options,
                                     const ShapeProblem& problem) {
   using Hessian = ShapeOptimiserOptions::Hessian;
   return options.hessian == Hessian::FiniteDifference ||
-         (options.hessian == Hessian::Automatic && problem.constraint_count() == 0);
+         (options.hessian == Hessian::Automatic &&
+          (problem.constraint_count() == 0 || problem.base_moves()));
 }
 
 void apply_options(Ipopt::OptionsList& ipopt_options,

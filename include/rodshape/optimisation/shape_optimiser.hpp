@@ -34,7 +34,9 @@ struct ShapeOptimiserOptions {
   /// iterations instead of 402). LimitedMemory: IPOPT's L-BFGS, cheaper iterations and more of
   /// them, but robust where constraints are active (with the differenced Hessian, strain-limited
   /// problems wandered off to the iteration limit). Automatic: FiniteDifference when the problem
-  /// has no constraint rows, LimitedMemory otherwise.
+  /// has no constraint rows or a moving base (12 unknowns, where L-BFGS with an active workspace
+  /// and a released grasp ran out of iterations: examples/plan_base_arm.yaml), LimitedMemory
+  /// otherwise.
   enum class Hessian { Automatic, FiniteDifference, LimitedMemory };
   Hessian hessian = Hessian::Automatic;
   bool assess_stability = true;  // run assess_stability() on the optimum
