@@ -243,6 +243,14 @@ void bind_outcomes(py::module_& m) {
           "driven_by_joints", [](const Validation& v) { return v.result.driven_by_joints(); },
           "True when the plant was driven by the arm's joint trajectory through its forward "
           "kinematics (validation.json driven_by).")
+      .def_property_readonly(
+          "base_driven_by",
+          [](const Validation& v) -> std::optional<std::string> {
+            if (!v.task.problem.base_moves()) return std::nullopt;
+            return base_driven_by(v.result);
+          },
+          "with a moving base, what drove the base end (validation.json base_driven_by: "
+          "base_joint_trajectory, base_end_effector_path or clamp); None with a fixed clamp")
       .def("brief", [](const Validation& v) { return v.result.brief(); })
       .def("to_json", &Validation::to_json, "The validation.json document.")
       .def(

@@ -1,5 +1,6 @@
 // validation_json.cpp: the validation document (validation_output.hpp; schema in
 // docs/task-file.md, "validate").
+#include <algorithm>
 #include <optional>
 #include <variant>
 
@@ -140,6 +141,17 @@ Json run_object(const ValidationRun& run) {
 
 }  // namespace
 
+std::string base_driven_by(const ValidationResult& result) {
+  const auto all = [&](auto flag) {
+    return !result.runs.empty() && std::all_of(result.runs.begin(), result.runs.end(), flag);
+  };
+  if (all([](const ValidationRun& run) { return run.base_driven_by_joints; }))
+    return "base_joint_trajectory";
+  const bool moved = std::any_of(result.runs.begin(), result.runs.end(),
+                                 [](const ValidationRun& run) { return run.base_moved; });
+  return moved ? "base_end_effector_path" : "clamp";
+}
+
 std::string validation_json(const ValidationResult& result,
                             const PlanResult& plan,
                             const PlanTask& task) {
@@ -156,6 +168,8 @@ std::string validation_json(const ValidationResult& result,
   j["sensor"] =
       std::visit([](const auto& sensor) { return sensor_object(sensor); }, task.sensor_model());
   j["driven_by"] = result.driven_by_joints() ? "joint_trajectory" : "end_effector_path";
+  // A moving base (issue 21): what drove the base end; left out with a fixed clamp.
+  if (task.problem.base_moves()) j["base_driven_by"] = base_driven_by(result);
   j["plant_solves"] = result.plant.solves;
   Json runs = Json::array();
   for (const ValidationRun& run : result.runs) runs.push_back(run_object(run));

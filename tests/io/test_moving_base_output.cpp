@@ -20,6 +20,7 @@
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/io/validation_output.hpp"
 #include "rodshape/robot/arm_clearance.hpp"
 #include "support/hand_made_plan.hpp"
 #include "support/input_error.hpp"
@@ -297,6 +298,26 @@ TEST(MovingBaseOutput, TwoArmsReportTheirGapWithOrWithoutAScene) {
   PlanResult one_plan = make_plan(one, 3);
   one_plan.scene.emplace().robot = gap;
   EXPECT_TRUE(Json::parse(plan_result_json(one_plan, one))["scene"].is_null());
+}
+
+TEST(MovingBaseOutput, ValidationSaysWhatDroveTheBase) {
+  // The document (no runs here: a run's own objects need a plant run), then the runs' flags.
+  const PlanTask fixed = parse_plan_task(kHandMadeTask, "plan.yaml");
+  ValidationResult result;
+  result.real_rod = fixed.plant.real_rod(fixed.problem.rod);
+  EXPECT_FALSE(
+      Json::parse(validation_json(result, PlanResult{}, fixed)).contains("base_driven_by"));
+  const PlanTask task = parse_plan_task(moving_task_text(), "plan.yaml");
+  EXPECT_EQ(Json::parse(validation_json(result, PlanResult{}, task))["base_driven_by"], "clamp");
+
+  result.runs.resize(2);
+  EXPECT_EQ(base_driven_by(result), "clamp");
+  for (ValidationRun& run : result.runs) run.base_moved = true;
+  EXPECT_EQ(base_driven_by(result), "base_end_effector_path");
+  for (ValidationRun& run : result.runs) run.base_driven_by_joints = true;
+  EXPECT_EQ(base_driven_by(result), "base_joint_trajectory");
+  result.runs[1].base_driven_by_joints = false;  // a closed-loop segment without IK
+  EXPECT_EQ(base_driven_by(result), "base_end_effector_path");
 }
 
 TEST(MovingBaseOutput, IncompleteBaseJointTrajectoryWritesNoFile) {

@@ -1,6 +1,7 @@
 """A moving base in Python (issue 21): PlanProblem.moving_base and base_arm, the task file's
 base keys read into them, and PlanResult's base_end_effector_path, base_joints and each step's
 base_end_effector."""
+import json
 import os
 from pathlib import Path
 
@@ -139,3 +140,69 @@ def test_the_path_figure_draws_the_base_gripper():
     only_tip = plot.plot_path(tip, [0, 10])
     assert not any(label.startswith("base") for label in
                    [line.get_label() for line in only_tip.axes[0].get_lines()])
+
+
+TWO_PANDAS = """rod:
+  length: 0.29
+  nodes: 51
+  section: {shape: rectangle, width: 0.02, height: 0.02}
+  material: {young_modulus: 3.2e6, poisson_ratio: 0.5, density: 1392}
+  stiffness: {EIx: 0.04, EIy: 0.04, GJ: 0.028}
+base:
+  position: [-0.145, 0, 0.35]
+  rotation: [[0, 0, 1], [0, 1, 0], [-1, 0, 0]]
+  moving: true
+base_grasp:
+  base_to_end_effector: {position: [0, 0, 0.01], rotation: [[0, 0, 1], [0, -1, 0], [1, 0, 0]]}
+grasp:
+  tip_to_end_effector: {position: [0, 0, -0.01], rotation: [[0, 0, 1], [0, -1, 0], [1, 0, 0]]}
+target:
+  points: [[-0.09, 0, 0.37], [0.0, 0, 0.39], [0.09, 0, 0.37]]
+trajectory:
+  steps: 4
+robot:
+  urdf: PANDA
+  base: {position: [0.4, 0, 0], rotation: [0, 0, 0, 1]}
+  flange_to_end_effector: {position: [0, 0, 0.1034]}
+base_robot:
+  urdf: PANDA
+  base: {position: [-0.4, 0, 0]}
+  flange_to_end_effector: {position: [0, 0, 0.1034]}
+"""
+
+
+def test_two_pandas_plan_and_its_files(tmp_path):
+    path = tmp_path / "two_pandas.yaml"
+    path.write_text(TWO_PANDAS.replace("PANDA", str(PANDA)))
+    plan = rodshape.plan(rodshape.load_task(str(path)))
+    assert plan.status == "complete"
+    result = plan.result
+    tip, base = result.end_effector_path, result.base_end_effector_path
+    assert base["positions"].shape == tip["positions"].shape
+    assert np.array_equal(base["t"], tip["t"])  # one clock
+    assert result.base_joints.complete() and result.base_arm_status.startswith("reachable")
+    assert result.base_joints.q.shape == (len(base["t"]), 7)
+    step = plan.steps[-1]
+    # The base gripper is the rod's base pose composed with base_T_ee.
+    offset = plan.task.problem.moving_base.base_to_end_effector
+    expected = step.base_pose.position + step.base_pose.rotation @ offset.position
+    assert np.allclose(step.base_end_effector.position, expected, atol=1e-12)
+    names = plan.write(str(tmp_path / "out"), html=False)
+    assert "base_joint_trajectory.csv" in names and "base_joint_trajectory.json" in names
+    header = (tmp_path / "out" / "trajectory.csv").read_text().splitlines()[0]
+    assert header == "t,x,y,z,qw,qx,qy,qz,bx,by,bz,bqw,bqx,bqy,bqz"
+    document = json.loads(plan.to_json())
+    assert document["base_joint_trajectory"]["file"] == "base_joint_trajectory.csv"
+    assert document["base_robot"]["status"] == "reachable"
+    assert document["scene"]["robot_min_gap_at"]["obstacle"] == "other_arm"
+
+
+def test_two_pandas_validation_drives_the_base_by_its_arm(tmp_path):
+    path = tmp_path / "two_pandas.yaml"
+    path.write_text(TWO_PANDAS.replace("PANDA", str(PANDA)))
+    validation = rodshape.validate(rodshape.load_task(str(path)))
+    assert validation.driven_by_joints and validation.base_driven_by == "base_joint_trajectory"
+    assert json.loads(validation.to_json())["base_driven_by"] == "base_joint_trajectory"
+    fixed = rodshape.validate(rodshape.load_task(str(EXAMPLES / "plan_c_arc.yaml")))
+    assert fixed.base_driven_by is None
+    assert "base_driven_by" not in json.loads(fixed.to_json())

@@ -15,6 +15,12 @@
 
 namespace rodshape {
 
+/// What drove a moving base's end in every run (validation.json's `base_driven_by`, written only
+/// when the task's base moves): "base_joint_trajectory" (every run along the base arm's joint
+/// trajectory through its forward kinematics), "base_end_effector_path" (a run drove it along the
+/// plan's base path), or "clamp" (no run moved it: the plan had no base path).
+std::string base_driven_by(const ValidationResult& result);
+
 /// The validation document, ending with a newline.
 std::string validation_json(const ValidationResult& result,
                             const PlanResult& plan,

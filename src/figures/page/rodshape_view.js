@@ -365,7 +365,7 @@
   }
   legendRow('#d62728', 'target points', true);
   if (data.target_curve.length > 1) legendRow('#e88a8b', "the target's B-spline");
-  legendRow('#222222', 'clamp', true);
+  legendRow('#222222', data.base_path ? 'the base end where it starts' : 'clamp', true);
   legendRow('#555555', 'end-effector path');
   if (data.base_path) legendRow('#1b6f8a', "the base gripper's path (a moving base)");
   if (data.arm) legendRow('#6c7a89', 'arm (' + data.arm.name + '): links between joint frames');
