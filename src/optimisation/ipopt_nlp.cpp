@@ -130,6 +130,10 @@ ShapeNlp::ShapeNlp(ShapeProblem& problem,
       rows_(problem.constraint_count()),
       finite_difference_hessian_(finite_difference_hessian),
       admissible_(admissible) {
+  // IPOPT sees x̃ = x / D: the wrench in its bending units, δt in rod lengths, δφ in radians, so
+  // that its regularisation and barrier treat the 12 unknowns alike.
+  scale_ << problem.rod().properties.bending_wrench_units(),
+      Eigen::Vector3d::Constant(problem.rod().properties.length), Eigen::Vector3d::Ones();
   outcome_.x = start;
   outcome_.w = problem.world_wrench(start).to_vector();
   outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
@@ -161,8 +165,8 @@ bool ShapeNlp::get_bounds_info(Ipopt::Index n,
   if (n_ == 12) {
     const Vector12d lower = problem_.variable_lower(), upper = problem_.variable_upper();
     for (int j = 0; j < 12; ++j) {
-      x_l[j] = std::clamp(lower(j), -kIpoptInfinity, kIpoptInfinity);
-      x_u[j] = std::clamp(upper(j), -kIpoptInfinity, kIpoptInfinity);
+      x_l[j] = std::clamp(lower(j) / scale_(j), -kIpoptInfinity, kIpoptInfinity);
+      x_u[j] = std::clamp(upper(j) / scale_(j), -kIpoptInfinity, kIpoptInfinity);
     }
   } else {
     const WrenchBounds& bounds = problem_.wrench_bounds();
@@ -194,7 +198,7 @@ bool ShapeNlp::get_starting_point(Ipopt::Index n,
   // Only a primal start is given (warm_start_init_point stays "no"); IPOPT then initialises the
   // multipliers itself and never asks for them.
   if (!init_x || init_z || init_lambda) return false;
-  for (int j = 0; j < n_; ++j) x[j] = n_ == 12 ? start_x_(j) : start_(j);
+  for (int j = 0; j < n_; ++j) x[j] = n_ == 12 ? start_x_(j) / scale_(j) : start_(j);
   return true;
 }
 
@@ -209,7 +213,7 @@ bool ShapeNlp::evaluate_at(const Ipopt::Number* x) {
   // at the last w anyway, so it is called every time: one 6-vector comparison buys independence
   // from the hint (the derivative checker, for one, moves x between calls).
   if (n_ == 12) {
-    const Vector12d at = Eigen::Map<const Vector12d>(x);
+    const Vector12d at = Eigen::Map<const Vector12d>(x).cwiseProduct(scale_);
     if (!admissible(at.head<6>())) {
       ++outcome_.refusals;
       return false;
@@ -248,7 +252,7 @@ bool ShapeNlp::eval_grad_f(Ipopt::Index n,
   if (!evaluate_at(x)) return false;
   if (n_ == 12) {
     Eigen::Map<Vector12d> gradient(grad_f);
-    gradient = problem_.variable_gradient();
+    gradient = problem_.variable_gradient().cwiseProduct(scale_);
     return true;
   }
   Eigen::Map<Vector6d> gradient(grad_f);
@@ -294,12 +298,9 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
   const Eigen::Map<const Eigen::VectorXd> multipliers(lambda, m);
   const Vector6d units = problem_.rod().properties.bending_wrench_units();
   if (n_ == 12) {
-    // δt in units of the rod's length, δφ in radians.
-    Vector12d units_x;
-    units_x << units, Eigen::Vector3d::Constant(problem_.rod().properties.length),
-        Eigen::Vector3d::Ones();
+    // In the scaled unknowns x̃ (units 1).
     return differenced_hessian<Vector12d, Eigen::Matrix<double, 12, 12>>(x, obj_factor, multipliers,
-                                                                         units_x, values);
+                                                                         Vector12d::Ones(), values);
   }
   return differenced_hessian<Vector6d, Matrix6d>(x, obj_factor, multipliers, units, values);
 }
@@ -309,15 +310,14 @@ bool ShapeNlp::lagrangian_gradient(const Vector& x,
                                    double obj_factor,
                                    const Eigen::Map<const Eigen::VectorXd>& multipliers,
                                    Vector& gradient) {
-  if constexpr (Vector::SizeAtCompileTime == 12)
-    problem_.evaluate_with_base(x);
-  else
-    problem_.evaluate(x);
-  if constexpr (Vector::SizeAtCompileTime == 12) {
+  if constexpr (Vector::SizeAtCompileTime == 12) {  // x is x̃: ∇_x̃ L = D ∇_x L
+    problem_.evaluate_with_base(x.cwiseProduct(scale_));
     gradient = obj_factor * problem_.variable_gradient();
     if (multipliers.size() > 0)
       gradient.noalias() += problem_.variable_jacobian().transpose() * multipliers;
+    gradient.array() *= scale_.array();
   } else {
+    problem_.evaluate(x);
     gradient = obj_factor * problem_.cost_gradient();
     if (multipliers.size() > 0)
       gradient.noalias() += problem_.constraint_jacobian().transpose() * multipliers;
@@ -378,7 +378,7 @@ bool ShapeNlp::eval_jac_g(Ipopt::Index n,
   if (!evaluate_at(x)) return false;
   if (n_ == 12) {
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 12, Eigen::RowMajor>>(values, m, 12) =
-        problem_.variable_jacobian();
+        problem_.variable_jacobian() * scale_.asDiagonal();
     return true;
   }
   // Same row-major order as the structure; dg/dw is stored column-major in Eigen.
@@ -423,13 +423,17 @@ void ShapeNlp::finalize_solution(Ipopt::SolverReturn status,
   outcome_.solver_return = status;
   outcome_.objective = obj_value;
   if (x != nullptr && n_ == 12) {
-    outcome_.x = Eigen::Map<const Vector12d>(x);
+    outcome_.x = Eigen::Map<const Vector12d>(x).cwiseProduct(scale_);
     outcome_.w = problem_.world_wrench(outcome_.x).to_vector();
   } else if (x != nullptr) {
     outcome_.w = Eigen::Map<const Vector6d>(x);
   }
   if (z_L != nullptr) outcome_.lower_bound_multipliers = Eigen::Map<const Vector6d>(z_L);
   if (z_U != nullptr) outcome_.upper_bound_multipliers = Eigen::Map<const Vector6d>(z_U);
+  if (n_ == 12) {  // the multipliers of x̃'s bounds, back in x's units (w_b's)
+    outcome_.lower_bound_multipliers.array() /= scale_.head<6>().array();
+    outcome_.upper_bound_multipliers.array() /= scale_.head<6>().array();
+  }
   if (lambda != nullptr) outcome_.constraint_multipliers.assign(lambda, lambda + m);
 }
 

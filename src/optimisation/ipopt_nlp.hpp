@@ -178,7 +178,8 @@ class ShapeNlp final : public Ipopt::TNLP {
   int n_ = 6;  // 6, or 12 with a moving base
   Vector6d start_;
   Vector12d start_x_ = Vector12d::Zero();
-  int rows_;  // m, fixed at construction
+  Vector12d scale_ = Vector12d::Ones();  // D: IPOPT's unknowns are x / D (moving base)
+  int rows_;                             // m, fixed at construction
   bool finite_difference_hessian_;
   NlpOutcome outcome_;
   std::optional<WrenchBounds> admissible_;

@@ -413,7 +413,12 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     // Ten points, as the paper's markers, except the hook over part of the band.
     EXPECT_EQ(task.problem.target.points.size(), name == "plan_partial_hook.yaml" ? 5u : 10u);
     EXPECT_EQ(task.options.steps, name == "plan_cable_helix.yaml" ? 10 : 7);
-    EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_"));
+    EXPECT_EQ(task.problem.arm.has_value(),
+              name.starts_with("plan_panda_") || name == "plan_two_pandas.yaml");
+    // The two with a moving base (issue 21), each with a base arm.
+    const bool moving = name == "plan_two_pandas.yaml" || name == "plan_base_arm.yaml";
+    EXPECT_EQ(task.problem.base_moves(), moving);
+    EXPECT_EQ(task.problem.base_arm.has_value(), moving);
     if (name == "plan_panda_closed_loop.yaml") {  // the one with every section of `validate`
       EXPECT_DOUBLE_EQ(task.plant.stiffness_scale, 0.85);
       EXPECT_DOUBLE_EQ(task.plant.grasp_offset.position.x(), 0.002);
@@ -438,7 +443,7 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     }
     ++count;
   }
-  EXPECT_EQ(count, 14);  // 13 plan_*.yaml and validate_depth_camera.yaml
+  EXPECT_EQ(count, 16);  // 15 plan_*.yaml and validate_depth_camera.yaml
 }
 
 // ---- the plant's weight (issue 24, item 2)

@@ -57,9 +57,8 @@ TEST(TwoPandasExample, BothEndsMoveAndBothArmsEndOnTheirGrippers) {
   expect_last_sample_on(*task.problem.base_arm, *plan.base_arm,
                         plan.steps.back().base_end_effector);
   EXPECT_EQ(plan.arm->joints.t, plan.base_arm->joints.t);  // one clock
-  const double base_moved = (plan.steps.back().solution.configuration.p[0] -
-                             task.problem.rod.clamp.position)
-                                .norm();
+  const double base_moved =
+      (plan.steps.back().solution.configuration.p[0] - task.problem.rod.clamp.position).norm();
   EXPECT_GT(base_moved, 0.02);
 }
 

@@ -190,47 +190,11 @@ TEST(TwoEndValidation, AMovingBaseWithoutABasePathIsHeldAtTheClamp) {
   }
 }
 
-/// Whether plan() moves the base of `problem` (fills base_end_effector_path).
-bool plan_moves_the_base(const PlanProblem& problem) {
-  PlanOptions options;
-  options.steps = 1;
-  return !rodshape::plan(problem, options).base_end_effector_path.empty();
-}
-
-TEST(TwoEndValidation, ARePlanThatDoesNotMoveTheBaseHoldsItWhereItIs) {
-  // While plan() plans with the clamp fixed at rod.clamp (the base where it is now), a re-plan's
-  // waypoints hold the base gripper there: every re-plan is taken here (significance < 0, no
-  // gentleness bound), and the base stays at the first checkpoint's pose to the end.
-  const MovingBasePlan moving = moving_base_plan();
-  if (plan_moves_the_base(moving.problem))
-    GTEST_SKIP() << "plan() moves the base: its re-plans say where (ClosedLoopRePlansFrom...)";
-  ValidationOptions options;
-  options.closed_loop = true;
-  options.planning.steps = 3;
-  options.loop.significance = -1.0;
-  options.loop.max_energy_ratio = 1e6;
-  PlantModel plant;
-  plant.stiffness_scale = 0.85;
-  const ValidationResult closed =
-      validate_plan(moving.problem, moving.plan, plant, noiseless(), options);
-  ASSERT_EQ(closed.status, ValidationStatus::Complete) << closed.brief();
-  const ValidationRun& run = closed.runs.front();
-  ASSERT_EQ(run.checkpoints.size(), 2u);
-  for (const Checkpoint& c : run.checkpoints) EXPECT_TRUE(c.replanned) << c.message;
-  const Pose& first = moving.plan.steps.front().base_end_effector;
-  EXPECT_LT((closed.plant.last.base_end_effector.position - first.position).norm(), 1e-12);
-  EXPECT_LT((closed.plant.last.clamp.position - motion_at(1, 3).position).norm(), 1e-12);
-}
-
 TEST(TwoEndValidation, ClosedLoopRePlansFromWhereTheBaseIs) {
   // The paper's mismatch (15 % softer, the weight the planner neglects, the tip held 2 mm off):
   // open loop the plant misses the moved target; closed, each estimate is made and each re-plan
-  // starts with the rod's clamp where the base is. The re-plans move the base when plan() does
-  // (issue 21, item 2): until then a re-plan holds the base where it is and cannot reach the moved
-  // target gently (7 mm, refused), and this test is skipped.
+  // starts with the rod's clamp where the base is, and the re-plans move the base (issue 21).
   const MovingBasePlan moving = moving_base_plan();
-  if (!plan_moves_the_base(moving.problem))
-    GTEST_SKIP() << "plan() does not move the base yet (PlanResult::base_end_effector_path empty)";
   PlantModel plant;
   plant.stiffness_scale = 0.85;
   plant.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
