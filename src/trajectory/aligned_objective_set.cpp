@@ -1,5 +1,6 @@
 // aligned_objective_set.cpp: the objective points' way from p_init to p_obj when the base moves
 // (issue 21): a rigid motion and a bending in the moving frame (see intermediate_targets.hpp).
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 #include "rodshape/core/so3.hpp"
@@ -29,6 +30,16 @@ RigidAlignment best_rigid_alignment(const PointSet& from, const PointSet& to) {
   for (std::size_t i = 0; i < from.size(); ++i)
     H += (from[i] - alignment.from_centroid) * (to[i] - alignment.to_centroid).transpose();
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Vector3d sigma = svd.singularValues();
+  if (sigma(1) <= 1e-9 * sigma(0)) {
+    // Rank ≤ 1 (one set on a line, e.g. the straight rod at rest): H = σ0 u vᵀ leaves the turn about
+    // the line free, and Kabsch's pick of it is arbitrary (up to 180°). The least rotation taking
+    // the line's direction u onto v is the one a rigid motion of the rod needs.
+    alignment.rotation =
+        Eigen::Quaterniond::FromTwoVectors(svd.matrixU().col(0), svd.matrixV().col(0))
+            .toRotationMatrix();
+    return alignment;
+  }
   Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
   D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
   alignment.rotation = svd.matrixV() * D * svd.matrixU().transpose();

@@ -43,7 +43,9 @@ PointSet turned_objective_set(const Eigen::Vector3d& clamp,
                               double fraction);
 
 /// The rigid motion x → R (x - from_centroid) + to_centroid that best takes one point set onto
-/// another in the least-squares sense (Kabsch's SVD, a proper rotation).
+/// another in the least-squares sense (Kabsch's SVD, a proper rotation). Where the fit leaves a
+/// turn free (a set on a line: the covariance has rank ≤ 1), the least rotation taking the line's
+/// direction onto the other set's principal one.
 struct RigidAlignment {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   Eigen::Vector3d from_centroid = Eigen::Vector3d::Zero();
