@@ -52,6 +52,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -283,6 +284,20 @@ Outcome run_case(int k) {
     outcome.line += "\n    the last step's grippers from the drawn ones: tip " +
                     off(plan.steps.back().end_effector, c.tip_ee) + ", base " +
                     off(plan.steps.back().base_end_effector, c.base_ee);
+    const std::size_t samples =
+        std::min(plan.end_effector_path.size(), plan.base_end_effector_path.size());
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < samples; ++i)
+      least = std::min(least, (plan.end_effector_path[i].pose.position -
+                               plan.base_end_effector_path[i].pose.position)
+                                  .norm());
+    outcome.line +=
+        "; the grippers " + std::to_string(least * 1e3) + " mm apart at least on the path, " +
+        std::to_string(
+            (plan.steps.back().end_effector.position - plan.steps.back().base_end_effector.position)
+                .norm() *
+            1e3) +
+        " mm at the end";
     for (const InterpolationTrial& trial : plan.interpolation.tried)
       outcome.line += "\n    tried " + to_string(trial.scheme) + ": " + to_string(trial.status) +
                       " " + trial.note;
