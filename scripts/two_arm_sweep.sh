@@ -17,4 +17,4 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 RODSHAPE_TWO_ARM_CASES="${1:-1000}" RODSHAPE_TWO_ARM_FIRST="${2:-0}" build/tests/rodshape_tests_trajectory \
-  --gtest_filter='RandomTwoArmTargets.*' 2>&1 | grep -vE "^\[ (RUN|       OK) |^\[-|^\[=|^Note|^Running"
+  --gtest_filter='RandomTwoArmTargets.*' 2>&1 | grep -vE "^\[ +(RUN|OK) |^\[-|^\[=|^Note|^Running"
