@@ -32,9 +32,9 @@ RigidAlignment best_rigid_alignment(const PointSet& from, const PointSet& to) {
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::Vector3d sigma = svd.singularValues();
   if (sigma(1) <= 1e-9 * sigma(0)) {
-    // Rank ≤ 1 (one set on a line, e.g. the straight rod at rest): H = σ0 u vᵀ leaves the turn about
-    // the line free, and Kabsch's pick of it is arbitrary (up to 180°). The least rotation taking
-    // the line's direction u onto v is the one a rigid motion of the rod needs.
+    // Rank ≤ 1 (one set on a line, e.g. the straight rod at rest): H = σ0 u vᵀ leaves the turn
+    // about the line free, and Kabsch's pick of it is arbitrary (up to 180°). The least rotation
+    // taking the line's direction u onto v is the one a rigid motion of the rod needs.
     alignment.rotation =
         Eigen::Quaterniond::FromTwoVectors(svd.matrixU().col(0), svd.matrixV().col(0))
             .toRotationMatrix();
