@@ -101,7 +101,7 @@ struct MovingLoop {
   std::vector<double> required;
 };
 
-/// One step's optimum with the scene's rounds (as plan.cpp's solve_step).
+/// One step's optimum about the last step's base pose, with the scene's rounds where it has one.
 ShapeResult solve_moving_step(const PlanProblem& problem,
                               const PlanOptions& options,
                               const ShapeTarget& target,
@@ -110,24 +110,12 @@ ShapeResult solve_moving_step(const PlanProblem& problem,
   obstacles = 0;
   if (problem.scene.empty())
     return optimise_moving_step(problem, options, target, loop.base, loop.planned, {});
-  const double margin = options.scene_margin * problem.scene.clearance;
-  std::vector<int> forced;
-  for (int round = 1;; ++round) {
-    const Clearance clearance =
-        scene_stages::step_clearance(problem.scene, loop.required, loop.shape, target.points,
-                                     options.scene_reach, margin, forced);
-    ShapeResult solution =
-        optimise_moving_step(problem, options, target, loop.base, loop.planned, clearance);
-    const std::vector<int> violated =
-        solution.converged() ? scene_stages::violated_obstacles(problem.scene, loop.required,
-                                                                solution.configuration, clearance)
-                             : std::vector<int>{};
-    if (violated.empty() || round == 4) {
-      obstacles = static_cast<int>(clearance.scene.obstacles.size());
-      return solution;
-    }
-    forced.insert(forced.end(), violated.begin(), violated.end());
-  }
+  return plan_stages::solve_in_scene_rounds(
+      problem, options, loop.required, loop.shape, target.points,
+      [&](const Clearance& clearance) {
+        return optimise_moving_step(problem, options, target, loop.base, loop.planned, clearance);
+      },
+      obstacles);
 }
 
 PlanStep make_step(const PlanProblem& problem,
@@ -202,22 +190,6 @@ void require_base_in_workspace(const PlanProblem& problem) {
                        format_point(problem.rod.clamp.position) + " (PlanProblem.rod.clamp)");
 }
 
-/// The scene at the start: the gaps it requires, the initial shape's gap (bad input when too near).
-void start_moving_scene(const PlanProblem& problem,
-                        const RodConfiguration& initial,
-                        MovingLoop& loop,
-                        PlanResult& result) {
-  loop.required = problem.scene.required_gaps(problem.rod.clamp.position);
-  result.scene = SceneResult{};
-  result.scene->clearance = problem.scene.clearance;
-  const SceneGap gap = problem.scene.least_gap(initial.p, loop.required);
-  plan_stages::record_gap(result, problem, gap, 0);
-  if (!result.scene->clear())
-    throw InputError("PlanProblem.initial", ": the initial rod comes within " +
-                                                format_value(gap.gap * 1e3) + " mm of obstacle " +
-                                                result.scene->obstacle_label);
-}
-
 /// 7. Both ends' paths on one clock.
 void time_both_ends(const PlanProblem& problem,
                     const PlanOptions& options,
@@ -277,7 +249,8 @@ PlanResult plan_moving_base(const PlanProblem& problem,
   result.initial_stable_search = initial.stable_search;
   result.feasibility = free_base_feasibility(problem);
   MovingLoop loop;
-  if (!problem.scene.empty()) start_moving_scene(problem, initial.configuration, loop, result);
+  if (!problem.scene.empty())
+    plan_stages::start_scene(problem, initial.configuration, loop.required, result);
   if (!result.feasibility.feasible) {
     result.status = PlanStatus::Infeasible;
     result.message = result.feasibility.reason;
@@ -303,21 +276,7 @@ PlanResult plan_moving_base(const PlanProblem& problem,
   if (plan_moving_steps(problem, options, loop, result))
     result.message =
         "complete: " + std::to_string(result.steps.size()) + " steps, the base moving with the tip";
-  if (result.tracking.performed && !result.tracking.jump)
-    result.tracking.note = result.tracking.refinements == 0
-                               ? "the rod follows the plan"
-                               : "the rod follows the plan (" +
-                                     std::to_string(result.tracking.refinements) +
-                                     " steps inserted where it would have jumped)";
-  if (result.status == PlanStatus::Complete && result.tracking.jump) {
-    result.status = PlanStatus::SnapThrough;
-    result.message = "the rod would not follow the plan towards waypoint " +
-                     std::to_string(result.tracking.jump_step + 1) + ": " + result.tracking.note;
-  }
-  if (result.status == PlanStatus::Complete && result.scene && !result.scene->clear()) {
-    result.status = PlanStatus::Collision;
-    result.message = "the rod would not stay clear of the scene: " + result.scene->note;
-  }
+  plan_stages::settle_status(result);
   time_both_ends(problem, options, initial.configuration, result);
   result.interpolation.tried = {{result.interpolation.used, result.status,
                                  plan_stages::peak_ratio(result),

@@ -204,26 +204,13 @@ ShapeResult solve_step(const PlanProblem& problem,
   obstacles = 0;
   if (problem.scene.empty())
     return optimise_step(problem, target, unconstrained, start, options.optimiser);
-  constexpr int kMaxRounds = 4;
-  const RodConfiguration start_shape = integrate(problem.rod, start, Derivatives::None);
-  const double margin = options.scene_margin * problem.scene.clearance;
-  std::vector<int> forced;
-  for (int round = 1;; ++round) {
-    const Clearance clearance =
-        scene_stages::step_clearance(problem.scene, loop.required, start_shape, target.points,
-                                     options.scene_reach, margin, forced);
-    ShapeResult solution =
-        optimise_step(problem, target, unconstrained, start, options.optimiser, clearance);
-    const std::vector<int> violated =
-        solution.converged() ? scene_stages::violated_obstacles(problem.scene, loop.required,
-                                                                solution.configuration, clearance)
-                             : std::vector<int>{};
-    if (violated.empty() || round == kMaxRounds) {
-      obstacles = static_cast<int>(clearance.scene.obstacles.size());
-      return solution;
-    }
-    forced.insert(forced.end(), violated.begin(), violated.end());
-  }
+  return solve_in_scene_rounds(
+      problem, options, loop.required, integrate(problem.rod, start, Derivatives::None),
+      target.points,
+      [&](const Clearance& clearance) {
+        return optimise_step(problem, target, unconstrained, start, options.optimiser, clearance);
+      },
+      obstacles);
 }
 
 /// A detour's waypoint as a step of the plan: the equilibrium it reached, with the cost terms of
@@ -434,34 +421,6 @@ bool plan_steps(const PlanProblem& problem,
   return true;
 }
 
-/// With a scene: the gaps the obstacles require, and the initial shape's gap (bad input when the
-/// rod starts nearer to an obstacle than that).
-void start_scene(const PlanProblem& problem,
-                 const RodConfiguration& initial,
-                 StepLoop& loop,
-                 PlanResult& result) {
-  loop.required = problem.scene.required_gaps(problem.rod.clamp.position);
-  result.scene = SceneResult{};
-  result.scene->clearance = problem.scene.clearance;
-  const SceneGap gap = problem.scene.least_gap(initial.p, loop.required);
-  record_gap(result, problem, gap, 0);
-  if (!result.scene->clear()) {
-    std::ostringstream out;
-    out.precision(3);
-    out << ": the initial rod comes within " << gap.gap * 1e3 << " mm of obstacle "
-        << result.scene->obstacle_label << " at s = " << result.scene->s << " m (required "
-        << (gap.gap - gap.margin) * 1e3 << " mm)";
-    throw InputError("PlanProblem.initial", out.str());
-  }
-}
-
-/// The tracking's closing note.
-std::string tracking_note(const TrackingResult& tracking) {
-  if (tracking.refinements == 0) return "the rod follows the plan";
-  return "the rod follows the plan (" + std::to_string(tracking.refinements) +
-         " steps inserted where it would have jumped)";
-}
-
 }  // namespace
 
 /// Stages 2–7 with objective sets (Shape, ArcLength, Projection).
@@ -480,7 +439,7 @@ PlanResult plan_by_sets(const PlanProblem& problem,
       check_feasibility(problem.target, problem.rod, problem.limits.max_axial_strain.value_or(0.0));
   StepLoop loop;
   if (!problem.scene.empty()) {
-    start_scene(problem, initial.configuration, loop, result);
+    plan_stages::start_scene(problem, initial.configuration, loop.required, result);
     if (result.feasibility.feasible) {
       if (const auto blocked =
               scene_stages::target_clear(problem.scene, loop.required, problem.target.points)) {
@@ -513,17 +472,7 @@ PlanResult plan_by_sets(const PlanProblem& problem,
   result.status = PlanStatus::Complete;
   if (plan_steps(problem, options, loop, result))
     result.message = "complete: " + std::to_string(result.steps.size()) + " steps";
-  if (result.tracking.performed && !result.tracking.jump)
-    result.tracking.note = tracking_note(result.tracking);
-  if (result.status == PlanStatus::Complete && result.tracking.jump) {
-    result.status = PlanStatus::SnapThrough;
-    result.message = "the rod would not follow the plan towards waypoint " +
-                     std::to_string(result.tracking.jump_step + 1) + ": " + result.tracking.note;
-  }
-  if (result.status == PlanStatus::Complete && result.scene && !result.scene->clear()) {
-    result.status = PlanStatus::Collision;
-    result.message = "the rod would not stay clear of the scene: " + result.scene->note;
-  }
+  plan_stages::settle_status(result);
   if (result.status == PlanStatus::Partial || result.status == PlanStatus::SnapThrough)
     result.message += plan_stages::behind_clamp_note(problem);  // why, for a target behind it
   // 7. The timed end-effector path through the waypoints.

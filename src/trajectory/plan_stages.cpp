@@ -303,6 +303,70 @@ void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& 
       problem.scene.obstacles[static_cast<std::size_t>(gap.obstacle)].label(gap.obstacle);
 }
 
+void start_scene(const PlanProblem& problem,
+                 const RodConfiguration& initial,
+                 std::vector<double>& required,
+                 PlanResult& result) {
+  required = problem.scene.required_gaps(problem.rod.clamp.position);
+  result.scene = SceneResult{};
+  result.scene->clearance = problem.scene.clearance;
+  const SceneGap gap = problem.scene.least_gap(initial.p, required);
+  record_gap(result, problem, gap, 0);
+  if (!result.scene->clear()) {
+    std::ostringstream out;
+    out.precision(3);
+    out << ": the initial rod comes within " << gap.gap * 1e3 << " mm of obstacle "
+        << result.scene->obstacle_label << " at s = " << result.scene->s << " m (required "
+        << (gap.gap - gap.margin) * 1e3 << " mm)";
+    throw InputError("PlanProblem.initial", out.str());
+  }
+}
+
+ShapeResult solve_in_scene_rounds(const PlanProblem& problem,
+                                  const PlanOptions& options,
+                                  const std::vector<double>& required,
+                                  const RodConfiguration& start_shape,
+                                  const PointSet& points,
+                                  const std::function<ShapeResult(const Clearance&)>& solve,
+                                  int& obstacles) {
+  constexpr int kMaxRounds = 4;
+  const double margin = options.scene_margin * problem.scene.clearance;
+  std::vector<int> forced;
+  for (int round = 1;; ++round) {
+    const Clearance clearance = scene_stages::step_clearance(
+        problem.scene, required, start_shape, points, options.scene_reach, margin, forced);
+    ShapeResult solution = solve(clearance);
+    const std::vector<int> violated =
+        solution.converged() ? scene_stages::violated_obstacles(problem.scene, required,
+                                                                solution.configuration, clearance)
+                             : std::vector<int>{};
+    if (violated.empty() || round == kMaxRounds) {
+      obstacles = static_cast<int>(clearance.scene.obstacles.size());
+      return solution;
+    }
+    forced.insert(forced.end(), violated.begin(), violated.end());
+  }
+}
+
+void settle_status(PlanResult& result) {
+  const TrackingResult& tracking = result.tracking;
+  if (tracking.performed && !tracking.jump)
+    result.tracking.note = tracking.refinements == 0
+                               ? "the rod follows the plan"
+                               : "the rod follows the plan (" +
+                                     std::to_string(tracking.refinements) +
+                                     " steps inserted where it would have jumped)";
+  if (result.status == PlanStatus::Complete && tracking.jump) {
+    result.status = PlanStatus::SnapThrough;
+    result.message = "the rod would not follow the plan towards waypoint " +
+                     std::to_string(tracking.jump_step + 1) + ": " + tracking.note;
+  }
+  if (result.status == PlanStatus::Complete && result.scene && !result.scene->clear()) {
+    result.status = PlanStatus::Collision;
+    result.message = "the rod would not stay clear of the scene: " + result.scene->note;
+  }
+}
+
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,
                                       const EndEffectorLimits& limits) {

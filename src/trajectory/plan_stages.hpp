@@ -10,6 +10,7 @@
 //   8. follows_timed_path    the rod followed along the timed path's samples (Pose, Search)
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -131,6 +132,26 @@ ObjectiveSet halfway_set(const ObjectivePath& path, double f_last, const Objecti
 /// plan's scene result, when its margin is less than the one kept.
 void record_gap(PlanResult& result, const PlanProblem& problem, const SceneGap& gap, int step);
 
+/// With a scene: the gaps the obstacles require (into `required`), the initial shape's gap kept in
+/// the plan's scene result; throws InputError when the rod starts nearer to an obstacle than that.
+void start_scene(const PlanProblem& problem,
+                 const RodConfiguration& initial,
+                 std::vector<double>& required,
+                 PlanResult& result);
+/// One step's optimum with a scene: `solve` with the clearance of the obstacles near `start_shape`
+/// and `points`; an obstacle its optimum then comes too near to joins them and the step is solved
+/// again (a few rounds at most: each adds at least one obstacle). `obstacles` is set to the
+/// obstacles its last round kept the rod clear of (the rows of its clearance block).
+ShapeResult solve_in_scene_rounds(const PlanProblem& problem,
+                                  const PlanOptions& options,
+                                  const std::vector<double>& required,
+                                  const RodConfiguration& start_shape,
+                                  const PointSet& points,
+                                  const std::function<ShapeResult(const Clearance&)>& solve,
+                                  int& obstacles);
+/// After the steps: the tracking's note, and Complete turned into SnapThrough when the tracked rod
+/// jumped, into Collision when it came too near the scene.
+void settle_status(PlanResult& result);
 /// 7. The timed end-effector path from the initial pose through every step's waypoint.
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,
