@@ -13,6 +13,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/trajectory/plan.hpp"
 #include "support/input_error.hpp"
+#include "trajectory/moving_base_plan.hpp"
 
 namespace rodshape {
 namespace {
@@ -108,6 +109,29 @@ TEST(MovingBasePlan, PoseAndSearchAreRefusedWithAMovingBase) {
               plan(problem, options);
             }).find("PlanOptions.interpolation"),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace rodshape
+
+namespace rodshape {
+namespace {
+
+TEST(MovingBasePlan, AFreeBasesChainMayExceedTheCosseratRodByItsStretchSlackOnly) {
+  // Points on a line whose chain is L (1 + e): a Cosserat rod's own equilibria are stretched by
+  // their tension, so 5e-4 is feasible (slack 1e-3), 2e-3 not; an inextensible rod allows none.
+  const auto chain_of = [](double e, ConstitutiveModel model) {
+    PlanProblem problem = moved_band(false);
+    problem.rod.properties.model = model;
+    const double L = problem.rod.properties.length;
+    problem.target.points.clear();
+    for (int i = 0; i <= 4; ++i)
+      problem.target.points.push_back(Eigen::Vector3d(-0.1 + 0.25 * i * L * (1.0 + e), 0.0, 0.4));
+    return detail::free_base_feasibility(problem).feasible;
+  };
+  EXPECT_TRUE(chain_of(5e-4, ConstitutiveModel::Cosserat));
+  EXPECT_FALSE(chain_of(2e-3, ConstitutiveModel::Cosserat));
+  EXPECT_FALSE(chain_of(5e-4, ConstitutiveModel::Kirchhoff));
 }
 
 }  // namespace
