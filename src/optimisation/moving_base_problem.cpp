@@ -109,7 +109,8 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   x_ = x;
   set_clamp(x);
   const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
-  integrate(rod_, world_wrench(x), configuration_, Derivatives::AllNodes);
+  const BaseWrench w{R0 * x.segment<3>(0), R0 * x.segment<3>(3)};  // world_wrench(x), R0 once
+  integrate(rod_, w, configuration_, Derivatives::AllNodes);
   base_pose_derivatives(rod_, configuration_, pose_tangent_);
   evaluate_cost();  // F, ∇_w F (world wrench), the projections
   evaluate_moving_constraints();
@@ -127,7 +128,7 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   gradient_x_.segment<3>(3) = R0.transpose() * cost_gradient_.tail<3>();
   gradient_x_.segment<3>(6) = gradient_xi_.head<3>() + (2.0 * Wb / L) * dt;
   gradient_x_.segment<3>(9) = J.transpose() * gradient_xi_.tail<3>() + (2.0 * Wb * L) * dphi;
-  w_ = world_wrench(x).to_vector();
+  w_ = w.to_vector();
   evaluated_ = true;
 }
 
