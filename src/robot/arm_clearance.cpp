@@ -22,6 +22,10 @@ std::string millimetres(double metres) {
 /// The mount's links: those that no joint but the first moves.
 constexpr int kMountJoints = 1;
 
+/// m: what least_gap's prefilter adds to the least margin so far (far above rounding, far below
+/// any gap that matters).
+constexpr double kPrefilterSlack = 1e-9;
+
 }  // namespace
 
 ArmClearance::ArmClearance(const ArmModel& arm,
@@ -70,7 +74,7 @@ template <typename Visit>
 void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
                                  const std::vector<const RodNodes*>& rods,
                                  const std::vector<Obstacle>* others,
-                                 double prefilter,
+                                 const double& prefilter,
                                  LinkFrames& frames,
                                  Visit&& visit) const {
   const std::vector<LinkCapsule>& capsules = arm_.link_capsules();
@@ -153,12 +157,19 @@ LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
                                 const std::vector<Obstacle>* others) const {
   LinkGap least;
   thread_local LinkFrames frames;  // reused: no allocation once sized
-  for_each_pair(q, rods, others, std::numeric_limits<double>::infinity(), frames,
-                [&](const Measured& x) {
-                  // The mount's own gap is not news: it counts only when it sinks deeper.
-                  if (is_mount(x.gap) && x.gap.clear()) return;
-                  if (x.gap.margin < least.margin) least = x.gap;
-                });
+  // The rod's and the other arm's pairs (required gap: the clearance) whose gap is bounded below
+  // by more than the least margin so far plus the clearance cannot be less (the prefilter skips
+  // them, a hair wider than needed so that rounding never skips one that would count): the same
+  // least pair as measuring every one.
+  double prefilter = std::numeric_limits<double>::infinity();
+  for_each_pair(q, rods, others, prefilter, frames, [&](const Measured& x) {
+    // The mount's own gap is not news: it counts only when it sinks deeper.
+    if (is_mount(x.gap) && x.gap.clear()) return;
+    if (x.gap.margin < least.margin) {
+      least = x.gap;
+      prefilter = least.margin + scene_.clearance + kPrefilterSlack;
+    }
+  });
   return least;
 }
 
