@@ -22,6 +22,50 @@ std::string millimetres(double metres) {
 /// The mount's links: those that no joint but the first moves.
 constexpr int kMountJoints = 1;
 
+/// Segments of the rod per run (run_balls).
+constexpr std::size_t kRun = 8;
+/// m: what a run's bound must exceed the best gap by to skip it (far above rounding).
+constexpr double kRunSlack = 1e-9;
+
+/// The distance from p to the segment [a, b].
+double distance_to_segment(const Eigen::Vector3d& p,
+                           const Eigen::Vector3d& a,
+                           const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+/// The ball around segments [i, i + kRun) of a rod (their nodes i … i + kRun), thickened by the
+/// rod's radius: no point of those segments' capsules lies outside it.
+struct RunBall {
+  Eigen::Vector3d centre;
+  double radius = 0.0;
+};
+
+void run_balls(const RodNodes& rod, double rod_radius, std::vector<RunBall>& out) {
+  out.clear();
+  for (std::size_t i = 0; i + 1 < rod.size(); i += kRun) {
+    const std::size_t last = std::min(i + kRun, rod.size() - 1);
+    Eigen::Vector3d lower = rod[i], upper = rod[i];
+    for (std::size_t k = i + 1; k <= last; ++k) {
+      lower = lower.cwiseMin(rod[k]);
+      upper = upper.cwiseMax(rod[k]);
+    }
+    RunBall ball;
+    ball.centre = 0.5 * (lower + upper);
+    for (std::size_t k = i; k <= last; ++k)
+      ball.radius = std::max(ball.radius, (rod[k] - ball.centre).norm());
+    ball.radius = ball.radius * (1.0 + 1e-12) + rod_radius;
+    out.push_back(ball);
+  }
+}
+
+/// m: what least_gap's prefilter adds to the least margin so far (far above rounding, far below
+/// any gap that matters).
+constexpr double kPrefilterSlack = 1e-9;
+
 }  // namespace
 
 ArmClearance::ArmClearance(const ArmModel& arm,
@@ -70,12 +114,18 @@ template <typename Visit>
 void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
                                  const std::vector<const RodNodes*>& rods,
                                  const std::vector<Obstacle>* others,
-                                 double prefilter,
+                                 const double& prefilter,
                                  LinkFrames& frames,
                                  Visit&& visit) const {
   const std::vector<LinkCapsule>& capsules = arm_.link_capsules();
   if (capsules.empty()) return;
   arm_.link_frames(q, frames);
+  // Each rod's runs of kRun segments in a ball (centre, radius: the segments' own balls inside it),
+  // measured once for all the capsules.
+  thread_local std::vector<std::vector<RunBall>> runs;
+  runs.resize(rods.size());
+  for (std::size_t r = 0; r < rods.size(); ++r)
+    if (rods[r] != nullptr) run_balls(*rods[r], scene_.rod_radius, runs[r]);
   const Eigen::Matrix3d& R_wb = world_T_base_.rotation;
   const Eigen::Vector3d& p_wb = world_T_base_.position;
   for (std::size_t c = 0; c < capsules.size(); ++c) {
@@ -114,7 +164,8 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
       }
     }
     if (!checks_rod_[c]) continue;
-    for (const RodNodes* rod : rods) {
+    for (std::size_t r = 0; r < rods.size(); ++r) {
+      const RodNodes* rod = rods[r];
       if (rod == nullptr || rod->size() < 2) continue;
       // The nearest segment of the rod; segments whose bounding ball is farther than the best so
       // far (or than the prefilter) are skipped.
@@ -125,6 +176,15 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
       auto& shape = std::get<CapsuleObstacle>(segment_obstacle.shape);
       shape.radius = scene_.rod_radius;
       for (std::size_t i = 0; i + 1 < rod->size(); ++i) {
+        if (i % kRun == 0) {
+          // A run whose ball lies farther than the best so far holds no segment that could be
+          // nearer (each would be skipped below, or measured and not taken): skip it whole.
+          const RunBall& run = runs[r][i / kRun];
+          if (distance_to_segment(run.centre, a, b) - run.radius > best + kRunSlack) {
+            i += kRun - 1;
+            continue;
+          }
+        }
         const Eigen::Vector3d& p0 = (*rod)[i];
         const Eigen::Vector3d& p1 = (*rod)[i + 1];
         const Eigen::Vector3d mid = 0.5 * (p0 + p1);
@@ -153,12 +213,19 @@ LinkGap ArmClearance::least_gap(const Eigen::VectorXd& q,
                                 const std::vector<Obstacle>* others) const {
   LinkGap least;
   thread_local LinkFrames frames;  // reused: no allocation once sized
-  for_each_pair(q, rods, others, std::numeric_limits<double>::infinity(), frames,
-                [&](const Measured& x) {
-                  // The mount's own gap is not news: it counts only when it sinks deeper.
-                  if (is_mount(x.gap) && x.gap.clear()) return;
-                  if (x.gap.margin < least.margin) least = x.gap;
-                });
+  // The rod's and the other arm's pairs (required gap: the clearance) whose gap is bounded below
+  // by more than the least margin so far plus the clearance cannot be less (the prefilter skips
+  // them, a hair wider than needed so that rounding never skips one that would count): the same
+  // least pair as measuring every one.
+  double prefilter = std::numeric_limits<double>::infinity();
+  for_each_pair(q, rods, others, prefilter, frames, [&](const Measured& x) {
+    // The mount's own gap is not news: it counts only when it sinks deeper.
+    if (is_mount(x.gap) && x.gap.clear()) return;
+    if (x.gap.margin < least.margin) {
+      least = x.gap;
+      prefilter = least.margin + scene_.clearance + kPrefilterSlack;
+    }
+  });
   return least;
 }
 

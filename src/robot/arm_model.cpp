@@ -18,10 +18,13 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -44,6 +47,9 @@ struct ArmModel::Impl {
   // ArmModel share this Impl). Every evaluation works on its own copy (evaluable_chain()); copying
   // only reads these members, which nothing ever writes here.
   KDL::Chain chain;
+  // This Impl's number, never reused in the process: the key of each thread's copies of the chain
+  // and its solvers (evaluator()).
+  std::uint64_t id = 0;
   std::vector<JointInfo> joints;
   double reach = 0.0;
   std::vector<LinkCapsule> capsules;
@@ -258,13 +264,37 @@ Pose to_pose(const KDL::Frame& frame) {
   return pose;
 }
 
-/// A copy of `prototype` that this call alone evaluates (see ArmModel::Impl::chain).
-KDL::Chain evaluable_chain(const KDL::Chain& prototype) { return prototype; }
+/// Numbers for ArmModel::Impl::id.
+std::atomic<std::uint64_t> next_impl_id{1};
 
-KDL::JntArray to_kdl(const Eigen::VectorXd& q) {
-  KDL::JntArray array(static_cast<unsigned>(q.size()));
-  array.data = q;
-  return array;
+/// A thread's own copy of a chain (see ArmModel::Impl::chain) with its solvers, made once per
+/// thread and model instead of at every evaluation: the same KDL computations on an equal chain,
+/// so the same values (KDL's cached joint pose is recomputed whenever q changes).
+struct Evaluator {
+  std::uint64_t id;
+  KDL::Chain chain;  // before the solvers, which keep a reference to it
+  KDL::ChainFkSolverPos_recursive fk;
+  KDL::ChainJntToJacSolver jacobian;
+  KDL::JntArray q;
+  Evaluator(std::uint64_t impl_id, const KDL::Chain& prototype)
+      : id(impl_id), chain(prototype), fk(chain), jacobian(chain), q(chain.getNrOfJoints()) {}
+};
+
+/// The calling thread's evaluator of `prototype` (Impl `id`): the few most recently used are
+/// kept per thread.
+Evaluator& evaluator(std::uint64_t id, const KDL::Chain& prototype) {
+  constexpr std::size_t kKept = 4;
+  thread_local std::vector<std::unique_ptr<Evaluator>> kept;  // most recently used first
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    if (kept[i]->id != id) continue;
+    if (i > 0)
+      std::rotate(kept.begin(), kept.begin() + static_cast<std::ptrdiff_t>(i),
+                  kept.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+    return *kept.front();
+  }
+  if (kept.size() == kKept) kept.pop_back();
+  kept.insert(kept.begin(), std::make_unique<Evaluator>(id, prototype));
+  return *kept.front();
 }
 
 Eigen::Vector3d to_eigen(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
@@ -404,6 +434,7 @@ ArmModel ArmModel::from_urdf_string(const std::string& urdf,
   std::reverse(path.begin(), path.end());
 
   auto impl = std::make_shared<Impl>();
+  impl->id = next_impl_id.fetch_add(1, std::memory_order_relaxed);
   impl->robot_name = model->getName();
   impl->base_link = base->name;
   impl->tip_link = tip->name;
@@ -507,10 +538,10 @@ Eigen::VectorXd ArmModel::clamp_to_limits(const Eigen::VectorXd& q) const {
 
 Pose ArmModel::forward_kinematics(const Eigen::VectorXd& q) const {
   check_size(q, "q");
-  const KDL::Chain chain = evaluable_chain(impl_->chain);
-  KDL::ChainFkSolverPos_recursive solver(chain);
+  Evaluator& evaluate = evaluator(impl_->id, impl_->chain);
+  evaluate.q.data = q;
   KDL::Frame base_T_tip;
-  const int code = solver.JntToCart(to_kdl(q), base_T_tip);
+  const int code = evaluate.fk.JntToCart(evaluate.q, base_T_tip);
   if (code < 0) throw RodshapeError("KDL forward kinematics failed: " + std::to_string(code));
   return to_pose(base_T_tip);
 }
@@ -519,10 +550,10 @@ void ArmModel::forward_kinematics(const Eigen::VectorXd& q,
                                   Pose& base_T_tip,
                                   Eigen::Matrix<double, 6, Eigen::Dynamic>& J_twist_q) const {
   base_T_tip = forward_kinematics(q);
-  const KDL::Chain chain = evaluable_chain(impl_->chain);
-  KDL::ChainJntToJacSolver solver(chain);
+  Evaluator& evaluate = evaluator(impl_->id, impl_->chain);
   KDL::Jacobian jacobian(static_cast<unsigned>(joints()));
-  const int code = solver.JntToJac(to_kdl(q), jacobian);
+  evaluate.q.data = q;
+  const int code = evaluate.jacobian.JntToJac(evaluate.q, jacobian);
   if (code < 0) throw RodshapeError("KDL Jacobian failed: " + std::to_string(code));
   // KDL's Jacobian: rows vx vy vz ωx ωy ωz, base frame, reference point the chain's tip.
   J_twist_q = jacobian.data;
@@ -536,7 +567,7 @@ std::vector<JointAxis> ArmModel::joint_axes(const Eigen::VectorXd& q) const {
 
 void ArmModel::link_frames(const Eigen::VectorXd& q, LinkFrames& out) const {
   check_size(q, "q");
-  const KDL::Chain chain = evaluable_chain(impl_->chain);
+  const KDL::Chain& chain = evaluator(impl_->id, impl_->chain).chain;
   const unsigned segments = chain.getNrOfSegments();
   out.frames.resize(segments + 1);
   out.axes.resize(impl_->joints.size());

@@ -10,11 +10,18 @@
 #include "rodshape/robot/arm_reach.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <list>
+#include <mutex>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "robot/arm_reach_cache.hpp"
 #include "robot/random_joint_positions.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/error.hpp"
@@ -159,5 +166,73 @@ Workspace::ReachShell reach_shell(const ArmReach& reach,
   }
   return shell;
 }
+
+namespace detail {
+
+namespace {
+
+/// The cache's key (arm_reach_cache.hpp): names, then numbers as their bits.
+struct ReachKey {
+  std::vector<std::string> names;
+  std::vector<std::uint64_t> bits;
+  bool operator==(const ReachKey&) const = default;
+};
+
+ReachKey reach_key(const ArmModel& arm, const ArmReachOptions& options) {
+  ReachKey key;
+  const auto number = [&](double x) { key.bits.push_back(std::bit_cast<std::uint64_t>(x)); };
+  const auto vector = [&](const Eigen::Vector3d& v) {
+    for (int i = 0; i < 3; ++i) number(v(i));
+  };
+  key.names = {arm.robot_name(), arm.base_link(), arm.tip_link()};
+  key.names.insert(key.names.end(), arm.frame_links().begin(), arm.frame_links().end());
+  for (const JointInfo& joint : arm.joint_info()) {
+    key.names.push_back(joint.name);
+    number(joint.prismatic ? 1.0 : 0.0);
+    number(joint.lower);
+    number(joint.upper);
+  }
+  LinkFrames frames;
+  for (const double q : {0.0, 0.5}) {
+    arm.link_frames(Eigen::VectorXd::Constant(arm.joints(), q), frames);
+    for (const Pose& frame : frames.frames) {
+      vector(frame.position);
+      for (int c = 0; c < 3; ++c) vector(frame.rotation.col(c));
+    }
+    for (const JointAxis& axis : frames.axes) {
+      vector(axis.origin);
+      vector(axis.direction);
+    }
+  }
+  key.bits.push_back(static_cast<std::uint64_t>(options.samples));
+  key.bits.push_back(static_cast<std::uint64_t>(options.refinement_steps));
+  key.bits.push_back(options.random_seed);
+  return key;
+}
+
+}  // namespace
+
+ArmReach cached_arm_reach(const ArmModel& arm, const ArmReachOptions& options) {
+  options.validate();
+  constexpr std::size_t kKept = 8;
+  static std::mutex mutex;
+  static std::list<std::pair<ReachKey, ArmReach>> kept;  // most recently used first
+  ReachKey key = reach_key(arm, options);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    for (auto it = kept.begin(); it != kept.end(); ++it) {
+      if (!(it->first == key)) continue;
+      kept.splice(kept.begin(), kept, it);
+      return kept.front().second;
+    }
+  }
+  ArmReach reach = compute_arm_reach(arm, options);  // outside the lock: other chains go on
+  const std::lock_guard<std::mutex> lock(mutex);
+  kept.emplace_front(std::move(key), reach);
+  if (kept.size() > kKept) kept.pop_back();
+  return reach;
+}
+
+}  // namespace detail
 
 }  // namespace rodshape

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "arm_replanning.hpp"
+#include "robot/arm_reach_cache.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
 #include "validation.hpp"
@@ -172,7 +173,7 @@ ArmStart prepare_arm(const PlanProblem& problem,
         side.base ? "PlanProblem.moving_base.workspace.reach" : "PlanProblem.workspace.reach",
         ": given together with " + side.name +
             "'s reach (ArmPlanOptions.use_reach); give one of them");
-  arm.reach = compute_arm_reach(model, options.reach);
+  arm.reach = cached_arm_reach(model, options.reach);  // both arms the same robot: once
   try {
     arm.shell = reach_shell(*arm.reach, placement, side.grasp, options.reach_margin);
   } catch (const InputError& error) {  // reach_shell's only field is the margin

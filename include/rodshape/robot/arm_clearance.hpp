@@ -104,7 +104,7 @@ class ArmClearance {
   void for_each_pair(const Eigen::VectorXd& q,
                      const std::vector<const RodNodes*>& rods,
                      const std::vector<Obstacle>* others,
-                     double prefilter,
+                     const double& prefilter,
                      LinkFrames& frames,
                      Visit&& visit) const;
 
