@@ -49,6 +49,19 @@ inline constexpr std::array<double, 11> kTwists = {0.0,
                                                    6 * kEighthTurn,
                                                    -6 * kEighthTurn};
 
+/// A way from the initial pose to the goal's: straight (the default), turned `twist` (rad) more
+/// about the rod's tangent at the tip along the way (kTwists), or through the tip poses of the
+/// equilibria whose base wrenches lie on the straight line from the initial equilibrium's to the
+/// goal's (`wrench_line`): where the sets' optima and the straight pose path bend the rod beyond
+/// its end shapes on the way (a bend whose chord shortens faster than its arc), the equilibria on
+/// the wrench line grow steadily from one end's energy to the other's (on the sweep's bends they
+/// peak at the goal).
+struct Way {
+  double twist = 0.0;
+  bool wrench_line = false;
+  bool straight() const { return twist == 0.0 && !wrench_line; }
+};
+
 /// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
 /// last step (a plan by objective sets that reached the target, tracked or not), or to that step
 /// optimised again by `reoptimise` (may be empty) from where the path arrives instead; nullopt,
