@@ -30,7 +30,8 @@ struct Refusal {
 inline constexpr int kMaxReoptimisations = 2;
 
 /// Extra turns of the end effector about the rod's tangent at the tip, spread evenly along the
-/// path, tried in turn where the straight path (0) is refused or not gentle: the target's points
+/// path, tried in turn where the straight path (0) and the wrench line (Way) are refused or not
+/// gentle: the target's points
 /// fix the centreline, not the twist, and its optimum is the least twisted equilibrium through
 /// them; the straight path to its pose may then wind the rod onto another equilibrium there,
 /// where a path turning the tip by an eighth to three quarters of a turn more (and back) keeps
