@@ -31,11 +31,10 @@ inline constexpr int kMaxReoptimisations = 2;
 
 /// Extra turns of the end effector about the rod's tangent at the tip, spread evenly along the
 /// path, tried in turn where the straight path (0) and the wrench line (Way) are refused or not
-/// gentle: the target's points
-/// fix the centreline, not the twist, and its optimum is the least twisted equilibrium through
-/// them; the straight path to its pose may then wind the rod onto another equilibrium there,
-/// where a path turning the tip by an eighth to three quarters of a turn more (and back) keeps
-/// the branch (the sweep's helices needed 30° to 165°). The
+/// gentle: the target's points fix the centreline, not the twist, and its optimum is the least
+/// twisted equilibrium through them; the straight path to its pose may then wind the rod onto
+/// another equilibrium there, where a path turning the tip by an eighth to three quarters of a
+/// turn more (and back) keeps the branch (the sweep's helices needed 30° to 165°). The
 /// gentlest followed plan is kept; the first within PlanOptions::kGentleRatio ends the tries.
 inline constexpr double kEighthTurn = std::numbers::pi / 4;
 inline constexpr std::array<double, 11> kTwists = {0.0,
