@@ -526,7 +526,11 @@ detour::Reoptimise reoptimised_goal(const PlanProblem& problem,
 }
 
 /// The target's optimum: the given Shape plan's last step, or the Shape sets' (untracked) when it
-/// has none; `reference` holds the latter.
+/// has none; `reference` holds the latter. Where the sets' optimisation fails on the way (an
+/// intermediate set of a few points on a helix can pull the optimum beyond the rod's scale), twice
+/// as many sets (each a smaller move), and then the target's set alone from the initial rod, where
+/// they reach the points (within 1 % of the rod's length): the target's optimum is what Pose and
+/// Search need, not the sets' way there.
 const PlanResult& optimum_plan(const PlanProblem& problem,
                                const PlanOptions& options,
                                const plan_stages::InitialEquilibrium& initial,
@@ -537,6 +541,16 @@ const PlanResult& optimum_plan(const PlanProblem& problem,
   PlanOptions untracked = with_interpolation(options, ObjectiveInterpolation::Shape);
   untracked.track_between_waypoints = false;
   reference = plan_by_sets(problem, untracked, initial);
+  for (const int steps : {std::min(2 * options.steps, PlanOptions::kMaxSteps), 1}) {
+    if (reference.status != PlanStatus::Partial || steps == options.steps) break;
+    untracked.steps = steps;
+    PlanResult finer = plan_by_sets(problem, untracked, initial);
+    // an optimum off the points (a target the rod cannot reach) is no goal for Pose or Search
+    if (finer.status != PlanStatus::Partial && !finer.steps.empty() &&
+        finer.steps.back().solution.cost.max_distance <=
+            plan_stages::reached_within(reference, problem))
+      reference = std::move(finer);
+  }
   return reference;
 }
 

@@ -27,22 +27,36 @@ struct FollowedPath {
   std::optional<SceneGap> least;
 };
 
-/// The end effector's waypoints W_0 = `from` … W_n = `to`: the tip's poses interpolated from
-/// `from`'s to `to`'s with `twist` more turn about the rod's tangent at the tip spread along them,
-/// T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ); φ = 0: the end effector's straight
-/// path's points.
-std::vector<Pose> waypoint_poses(
-    const PlanProblem& problem, const Pose& from, const Pose& to, int n, double twist) {
+/// The end effector's waypoints W_0 = `from` … W_n = `to` of the way `way`: with a twist, the
+/// tip's poses interpolated from `from`'s to `to`'s with `way.twist` more turn about the rod's
+/// tangent at the tip spread along them, T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ)
+/// (φ = 0: the end effector's straight path's points); along the wrench line, the tip poses of the
+/// equilibria whose base wrenches lie on the straight line from `w_from` to `w_to`.
+std::vector<Pose> waypoint_poses(const PlanProblem& problem,
+                                 const Pose& from,
+                                 const Pose& to,
+                                 int n,
+                                 const Way& way,
+                                 const BaseWrench& w_from,
+                                 const BaseWrench& w_to) {
   const Pose& tip_T_ee = problem.grasp.tip_to_end_effector;
   const Pose tip_from = compose(from, inverse(tip_T_ee));
   Pose tip_to = compose(to, inverse(tip_T_ee));
   const auto about_tangent = [](double angle) {
     return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   };
+  const double twist = way.twist;
   tip_to.rotation = tip_to.rotation * about_tangent(twist);
+  const Vector6d a = w_from.to_vector(), b = w_to.to_vector();
   std::vector<Pose> poses{from};
   for (int i = 1; i < n; ++i) {
     const double sigma = static_cast<double>(i) / n;
+    if (way.wrench_line) {
+      const RodConfiguration c =
+          integrate(problem.rod, Wrench::from_vector(a + sigma * (b - a)), Derivatives::None);
+      poses.push_back(compose(c.tip(), tip_T_ee));
+      continue;
+    }
     if (twist == 0.0) {  // the end effector's straight path
       poses.push_back(interpolate(from, to, sigma));
       continue;
@@ -56,12 +70,12 @@ std::vector<Pose> waypoint_poses(
 }
 
 /// The held tip along straight segments between the end effector's waypoints, σ ∈ [i/n, (i+1)/n]
-/// on the segment from W_i to W_i+1 (with `twist` 0 they lie on one straight path: that one, as
-/// plan_stages::commanded_segment has it).
+/// on the segment from W_i to W_i+1 (on the straight way they lie on one straight path: that one,
+/// as plan_stages::commanded_segment has it).
 EquilibriumPath through_waypoints(const PlanProblem& problem,
                                   const std::vector<Pose>& poses,
-                                  double twist) {
-  if (twist == 0.0) return plan_stages::commanded_segment(problem, poses.front(), poses.back());
+                                  const Way& way) {
+  if (way.straight()) return plan_stages::commanded_segment(problem, poses.front(), poses.back());
   const Pose ee_T_tip = inverse(problem.grasp.tip_to_end_effector);
   const int n = static_cast<int>(poses.size()) - 1;
   return {[poses, n, ee_T_tip, grasp = problem.grasp](double sigma) {
@@ -75,10 +89,10 @@ EquilibriumPath through_waypoints(const PlanProblem& problem,
 }
 
 /// The held rod from the initial pose W_0 to `goal`'s W_n through the waypoints `poses` (of
-/// `twist`), `substeps` per waypoint, arriving on `goal`.
+/// `way`), `substeps` per waypoint, arriving on `goal`.
 FollowedPath follow_path(const PlanProblem& problem,
                          const std::vector<Pose>& poses,
-                         double twist,
+                         const Way& way,
                          const BaseWrench& w,
                          const PlanStep& goal,
                          int substeps,
@@ -105,8 +119,8 @@ FollowedPath follow_path(const PlanProblem& problem,
     ++substep;
     return true;
   };
-  path.followed = follow_equilibrium(problem.rod, through_waypoints(problem, poses, twist), w,
-                                     follow, &goal.solution.configuration, 1e-3);
+  path.followed = follow_equilibrium(problem.rod, through_waypoints(problem, poses, way), w, follow,
+                                     &goal.solution.configuration, 1e-3);
   for (std::size_t k = 0; k < path.followed.states.size(); ++k) {
     const FollowedState& state = path.followed.states[k];
     SegmentTracking& segment = path.segments[k / static_cast<std::size_t>(substeps)];
@@ -150,21 +164,22 @@ PlanStep path_step(const PlanProblem& problem,
   return {set.fraction, false, false, set.points, std::move(solution), end_effector};
 }
 
-/// The held rod from `from` to `goal`'s pose with `twist` (waypoint_poses); where it arrives on
+/// The held rod from `from` to `goal`'s pose by `way` (waypoint_poses); where it arrives on
 /// another stable equilibrium there, `goal` optimised again from it (kMaxReoptimisations at most)
 /// and the path followed again. `poses` are the waypoints of the path followed last.
 FollowedPath follow_to_goal(const PlanProblem& problem,
                             const plan_stages::InitialEquilibrium& initial,
                             const Pose& from,
-                            double twist,
+                            const Way& way,
                             PlanStep& goal,
                             int waypoints,
                             int substeps,
                             const std::vector<double>* scene_gaps,
                             const detour::Reoptimise& reoptimise,
                             std::vector<Pose>& poses) {
-  poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
-  FollowedPath path = follow_path(problem, poses, twist, initial.wrench, goal, substeps, scene_gaps,
+  poses = waypoint_poses(problem, from, goal.end_effector, waypoints, way, initial.wrench,
+                         goal.solution.base_wrench);
+  FollowedPath path = follow_path(problem, poses, way, initial.wrench, goal, substeps, scene_gaps,
                                   initial.configuration);
   for (int again = 0; again < kMaxReoptimisations && reoptimise &&
                       path.followed.event == FollowEvent::OtherBranch &&
@@ -173,8 +188,9 @@ FollowedPath follow_to_goal(const PlanProblem& problem,
     std::optional<PlanStep> there = reoptimise(path.followed.base_wrench);
     if (!there) break;
     goal = std::move(*there);
-    poses = waypoint_poses(problem, from, goal.end_effector, waypoints, twist);
-    path = follow_path(problem, poses, twist, initial.wrench, goal, substeps, scene_gaps,
+    poses = waypoint_poses(problem, from, goal.end_effector, waypoints, way, initial.wrench,
+                           goal.solution.base_wrench);
+    path = follow_path(problem, poses, way, initial.wrench, goal, substeps, scene_gaps,
                        initial.configuration);
   }
   return path;
@@ -211,14 +227,14 @@ void record_path(PlanResult& result, const PlanProblem& problem, const FollowedP
   result.tracking.note = "the rod follows the plan (the end effector's straight path)";
 }
 
-/// The Pose plan along the path with `twist` (waypoint_poses), or nullopt with `refusal`.
-std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
-                                          const PlanOptions& options,
-                                          const plan_stages::InitialEquilibrium& initial,
-                                          const PlanResult& reference,
-                                          const detour::Reoptimise& reoptimise,
-                                          double twist,
-                                          Refusal& refusal) {
+/// The Pose plan along the way `way` (waypoint_poses), or nullopt with `refusal`.
+std::optional<PlanResult> plan_along(const PlanProblem& problem,
+                                     const PlanOptions& options,
+                                     const plan_stages::InitialEquilibrium& initial,
+                                     const PlanResult& reference,
+                                     const detour::Reoptimise& reoptimise,
+                                     const Way& way,
+                                     Refusal& refusal) {
   PlanStep goal = reference.steps.back();
   const int n = options.steps;
   const int substeps =
@@ -229,7 +245,7 @@ std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
                             : problem.scene.required_gaps(problem.rod.clamp.position);
   std::vector<Pose> poses;
   const FollowedPath path =
-      follow_to_goal(problem, initial, from, twist, goal, n, substeps,
+      follow_to_goal(problem, initial, from, way, goal, n, substeps,
                      problem.scene.empty() ? nullptr : &required, reoptimise, poses);
   if (!path.followed.followed()) {
     refusal = not_followed(problem, path);
@@ -239,8 +255,13 @@ std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
   result.status = PlanStatus::Complete;
   result.message = "complete: " + std::to_string(n) +
                    " steps on the end effector's straight path to the target's optimum";
-  if (twist != 0.0)
-    result.message += ", its tip turned " + detail::format_value(twist * 180.0 / std::numbers::pi) +
+  if (way.wrench_line)
+    result.message = "complete: " + std::to_string(n) +
+                     " steps through the equilibria whose base wrenches lie on the straight line "
+                     "from the initial rod's to the target's optimum's";
+  if (way.twist != 0.0)
+    result.message += ", its tip turned " +
+                      detail::format_value(way.twist * 180.0 / std::numbers::pi) +
                       " degrees more about the rod's tangent along the way";
   result.feasibility = reference.feasibility;
   result.initial_wrench = initial.wrench;
@@ -273,6 +294,19 @@ std::optional<PlanResult> plan_with_twist(const PlanProblem& problem,
   return result;
 }
 
+/// The ways tried in turn: the straight path, the wrench line (where the grasp holds every
+/// component: elsewhere the line's equilibria are not the grasped rod's), then the twists (on the
+/// sweep's helices the wrench line was gentle wherever a twist was, at 1.00 ×, and cheaper than
+/// trying the ten twists first).
+std::vector<Way> ways(const PlanProblem& problem) {
+  std::vector<Way> result;
+  for (const double twist : kTwists) result.push_back(Way{twist, false});
+  const std::array<bool, 6>& released = problem.grasp.released;
+  if (std::none_of(released.begin(), released.end(), [](bool b) { return b; }))
+    result.insert(result.begin() + 1, Way{0.0, true});
+  return result;
+}
+
 }  // namespace
 
 std::optional<PlanResult> plan(const PlanProblem& problem,
@@ -283,10 +317,10 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
                                Refusal& refusal) {
   std::optional<PlanResult> best;
   const double reach = plan_stages::reached_within(reference, problem);
-  for (const double twist : kTwists) {
+  for (const Way& way : ways(problem)) {
     Refusal why;
     std::optional<PlanResult> tried =
-        plan_with_twist(problem, options, initial, reference, reoptimise, twist, why);
+        plan_along(problem, options, initial, reference, reoptimise, way, why);
     if (tried && !(tried->steps.back().solution.cost.max_distance <= reach)) {
       why.why =
           "the rod cannot follow the end effector's straight path to the target's optimum: "
@@ -295,7 +329,7 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
           " mm from the target";
       tried.reset();
     }
-    if (twist == 0.0) refusal = why;  // the straight path's refusal speaks for all
+    if (way.straight()) refusal = why;  // the straight path's refusal speaks for all
     if (!tried) continue;
     if (!best || plan_stages::peak_ratio(*tried) < plan_stages::peak_ratio(*best))
       best = std::move(tried);

@@ -30,11 +30,11 @@ struct Refusal {
 inline constexpr int kMaxReoptimisations = 2;
 
 /// Extra turns of the end effector about the rod's tangent at the tip, spread evenly along the
-/// path, tried in turn where the straight path (0) is refused or not gentle: the target's points
-/// fix the centreline, not the twist, and its optimum is the least twisted equilibrium through
-/// them; the straight path to its pose may then wind the rod onto another equilibrium there,
-/// where a path turning the tip by an eighth to three quarters of a turn more (and back) keeps
-/// the branch (the sweep's helices needed 30° to 165°). The
+/// path, tried in turn where the straight path (0) and the wrench line (Way) are refused or not
+/// gentle: the target's points fix the centreline, not the twist, and its optimum is the least
+/// twisted equilibrium through them; the straight path to its pose may then wind the rod onto
+/// another equilibrium there, where a path turning the tip by an eighth to three quarters of a
+/// turn more (and back) keeps the branch (the sweep's helices needed 30° to 165°). The
 /// gentlest followed plan is kept; the first within PlanOptions::kGentleRatio ends the tries.
 inline constexpr double kEighthTurn = std::numbers::pi / 4;
 inline constexpr std::array<double, 11> kTwists = {0.0,
@@ -48,6 +48,19 @@ inline constexpr std::array<double, 11> kTwists = {0.0,
                                                    -4 * kEighthTurn,
                                                    6 * kEighthTurn,
                                                    -6 * kEighthTurn};
+
+/// A way from the initial pose to the goal's: straight (the default), turned `twist` (rad) more
+/// about the rod's tangent at the tip along the way (kTwists), or through the tip poses of the
+/// equilibria whose base wrenches lie on the straight line from the initial equilibrium's to the
+/// goal's (`wrench_line`): where the sets' optima and the straight pose path bend the rod beyond
+/// its end shapes on the way (a bend whose chord shortens faster than its arc), the equilibria on
+/// the wrench line grow steadily from one end's energy to the other's (on the sweep's bends they
+/// peak at the goal).
+struct Way {
+  double twist = 0.0;
+  bool wrench_line = false;
+  bool straight() const { return twist == 0.0 && !wrench_line; }
+};
 
 /// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
 /// last step (a plan by objective sets that reached the target, tracked or not), or to that step

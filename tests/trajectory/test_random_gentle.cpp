@@ -262,17 +262,9 @@ Outcome run_case(int k) {
   return outcome;
 }
 
-// Case 247 (the cable with its weight wound into a helix): every scheme's straight way snapped or
-// arrived elsewhere before pose turned the tip about the rod's tangent on the way (the target's
-// optimum is the least twisted equilibrium through its points, turned from the one they were taken
-// from; the straight path winds the rod onto another equilibrium at the optimum's pose).
-TEST(RandomGentleTargets, PoseTurnsTheTipOnTheWayWhereTheStraightPathWindsTheRodElsewhere) {
-  GentleCase c = draw_case(247);
-  c.task.options.interpolation = ObjectiveInterpolation::Pose;
-  const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
+/// `plan` of the case `c` complete, followed gently (tracked and replayed) and reaching the points.
+void expect_gentle(const GentleCase& c, const PlanResult& plan) {
   ASSERT_TRUE(plan.complete()) << plan.message;
-  EXPECT_NE(plan.message.find("degrees more about the rod's tangent"), std::string::npos)
-      << plan.message;
   const double larger =
       std::max(plan.initial_configuration.energy, plan.steps.back().solution.configuration.energy);
   EXPECT_LE(plan.tracking.peak_energy / larger, PlanOptions::kGentleRatio);
@@ -281,6 +273,42 @@ TEST(RandomGentleTargets, PoseTurnsTheTipOnTheWayWhereTheStraightPathWindsTheRod
   EXPECT_LE(replay.peak_energy / larger, PlanOptions::kGentleRatio);
   EXPECT_LE(plan.steps.back().solution.cost.max_distance,
             kReachFraction * c.task.problem.rod.properties.length);
+}
+
+// Case 247 (the cable with its weight wound into a helix): every scheme's straight way snapped or
+// arrived elsewhere (the target's optimum is the least twisted equilibrium through its points,
+// turned from the one they were taken from; the straight path winds the rod onto another
+// equilibrium at the optimum's pose). Pose turning the tip about the rod's tangent on the way was
+// gentle (1.00 ×); the wrench line, tried before the twists, is too.
+TEST(RandomGentleTargets, PoseLeavesTheStraightPathWhereItWindsTheRodElsewhere) {
+  GentleCase c = draw_case(247);
+  c.task.options.interpolation = ObjectiveInterpolation::Pose;
+  const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
+  EXPECT_NE(plan.message.find("base wrenches lie on the straight line"), std::string::npos)
+      << plan.message;
+  expect_gentle(c, plan);
+}
+
+// Case 490 (the band with its weight, a bend of 7 points): the Shape sets' optima bend the rod to
+// 1.42 x its final energy on the way and the straight path to the optimum's pose (twisted or not)
+// compresses it; the equilibria whose base wrenches lie on the straight line from the initial
+// rod's to the optimum's grow steadily to the goal's energy.
+TEST(RandomGentleTargets, PoseTakesTheWrenchLineWhereTheStraightPathsAreNotGentle) {
+  GentleCase c = draw_case(490);
+  c.task.options.interpolation = ObjectiveInterpolation::Pose;
+  const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
+  EXPECT_NE(plan.message.find("base wrenches lie on the straight line"), std::string::npos)
+      << plan.message;
+  expect_gentle(c, plan);
+}
+
+// Case 492 (the band wound into a helix through 5 points): the first Shape set's optimum lies
+// beyond the rod's scale, so the Shape plan is partial; Pose takes the target's optimum from finer
+// sets and reaches it gently.
+TEST(RandomGentleTargets, PoseFindsTheOptimumWhereTheShapeSetsFail) {
+  GentleCase c = draw_case(492);
+  c.task.options.interpolation = ObjectiveInterpolation::Pose;
+  expect_gentle(c, rodshape::plan(c.task.problem, c.task.options));
 }
 
 TEST(RandomGentleTargets, ArePlannedGentlyOrReportedWithTheirRatio) {
