@@ -146,14 +146,16 @@ bool arrived_stable(const PlanProblem& problem,
 PlanStep path_step(const PlanProblem& problem,
                    const plan_stages::ObjectiveSet& set,
                    const BaseWrench& w,
-                   const Pose& end_effector) {
+                   const Pose& end_effector,
+                   const Way& way) {
   ShapeTarget target = problem.target;
   target.points = set.points;
   ShapeProblem costs(problem.rod, target, Workspace{}, problem.grasp, StrainLimits{},
                      problem.wrench_bounds);
   ShapeResult solution;
   solution.status = SolveStatus::Converged;
-  solution.message = "an equilibrium on the end effector's straight path to the target's optimum";
+  solution.message =
+      std::string("an equilibrium on ") + way.path_name() + " to the target's optimum";
   solution.base_wrench = w;
   solution.configuration = integrate(problem.rod, w, Derivatives::AllNodes);
   costs.evaluate(w.to_vector());
@@ -197,20 +199,24 @@ FollowedPath follow_to_goal(const PlanProblem& problem,
 }
 
 /// Why a path that was not followed to the end is no plan.
-Refusal not_followed(const PlanProblem& problem, const FollowedPath& path) {
+Refusal not_followed(const PlanProblem& problem, const FollowedPath& path, const Way& way) {
   const bool scene = path.followed.event == FollowEvent::Stopped;
   const std::string why =
       scene ? "it would come within " + std::to_string(path.least->gap * 1e3) + " mm of obstacle " +
                   problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
                       path.least->obstacle)
             : path.followed.message;
-  return {scene ? PlanStatus::Collision : PlanStatus::SnapThrough,
-          "the rod cannot follow the end effector's straight path to the target's optimum: " + why};
+  return {
+      scene ? PlanStatus::Collision : PlanStatus::SnapThrough,
+      std::string("the rod cannot follow ") + way.path_name() + " to the target's optimum: " + why};
 }
 
 /// The path's segments as the plan's tracking (each arriving at its waypoint's equilibrium, the
 /// last on the goal) and, with a scene, their least gap.
-void record_path(PlanResult& result, const PlanProblem& problem, const FollowedPath& path) {
+void record_path(PlanResult& result,
+                 const PlanProblem& problem,
+                 const FollowedPath& path,
+                 const Way& way) {
   if (!problem.scene.empty()) {
     result.scene = SceneResult{};
     result.scene->clearance = problem.scene.clearance;
@@ -224,7 +230,7 @@ void record_path(PlanResult& result, const PlanProblem& problem, const FollowedP
     if (result.scene && segment.gap)
       plan_stages::record_gap(result, problem, *segment.gap, static_cast<int>(k) + 1);
   }
-  result.tracking.note = "the rod follows the plan (the end effector's straight path)";
+  result.tracking.note = std::string("the rod follows the plan (") + way.path_name() + ")";
 }
 
 /// The Pose plan along the way `way` (waypoint_poses), or nullopt with `refusal`.
@@ -248,7 +254,7 @@ std::optional<PlanResult> plan_along(const PlanProblem& problem,
       follow_to_goal(problem, initial, from, way, goal, n, substeps,
                      problem.scene.empty() ? nullptr : &required, reoptimise, poses);
   if (!path.followed.followed()) {
-    refusal = not_followed(problem, path);
+    refusal = not_followed(problem, path, way);
     return std::nullopt;
   }
   PlanResult result;
@@ -274,21 +280,21 @@ std::optional<PlanResult> plan_along(const PlanProblem& problem,
     const double sigma = static_cast<double>(i) / n;
     result.steps.push_back(path_step(problem, {sigma, sets.at(sigma)},
                                      path.waypoint_wrench[static_cast<std::size_t>(i - 1)],
-                                     poses[static_cast<std::size_t>(i)]));
+                                     poses[static_cast<std::size_t>(i)], way));
     if (!result.steps.back().solution.stability->stable) {
-      refusal.why = "the end effector's straight path passes an unstable equilibrium at " +
+      refusal.why = std::string(way.path_name()) + " passes an unstable equilibrium at " +
                     std::to_string(sigma) + " of the way";
       return std::nullopt;
     }
   }
   result.steps.push_back(goal);
-  record_path(result, problem, path);
+  record_path(result, problem, path, way);
   result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
   if (!plan_stages::follows_timed_path(problem, result)) {
-    refusal.why =
-        "the rod cannot follow the end effector's straight path to the target's optimum: "
-        "along the timed path's samples it snaps on the way or arrives elsewhere (the "
-        "path passes where the equilibrium's branch divides)";
+    refusal.why = std::string("the rod cannot follow ") + way.path_name() +
+                  " to the target's optimum: "
+                  "along the timed path's samples it snaps on the way or arrives elsewhere (the "
+                  "path passes where the equilibrium's branch divides)";
     return std::nullopt;
   }
   return result;
@@ -322,11 +328,11 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     std::optional<PlanResult> tried =
         plan_along(problem, options, initial, reference, reoptimise, way, why);
     if (tried && !(tried->steps.back().solution.cost.max_distance <= reach)) {
-      why.why =
-          "the rod cannot follow the end effector's straight path to the target's optimum: "
-          "it arrives on another equilibrium, whose optimum is " +
-          detail::format_value(tried->steps.back().solution.cost.max_distance * 1e3) +
-          " mm from the target";
+      why.why = std::string("the rod cannot follow ") + way.path_name() +
+                " to the target's optimum: "
+                "it arrives on another equilibrium, whose optimum is " +
+                detail::format_value(tried->steps.back().solution.cost.max_distance * 1e3) +
+                " mm from the target";
       tried.reset();
     }
     if (way.straight()) refusal = why;  // the straight path's refusal speaks for all

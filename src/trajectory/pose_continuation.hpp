@@ -60,6 +60,11 @@ struct Way {
   double twist = 0.0;
   bool wrench_line = false;
   bool straight() const { return twist == 0.0 && !wrench_line; }
+  /// The path's name in messages ("the end effector's straight path", …).
+  const char* path_name() const {
+    if (wrench_line) return "the wrench line's path";
+    return straight() ? "the end effector's straight path" : "the end effector's twisted path";
+  }
 };
 
 /// The plan along the end effector's straight path from the initial equilibrium to `reference`'s
