@@ -4,6 +4,7 @@
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
 
+#include "optimisation/dense_kkt_solver.hpp"
 #include "optimisation/ipopt_nlp.hpp"
 #include "optimisation/mumps_lock.hpp"
 
@@ -132,14 +133,25 @@ IpoptRun IpoptSession::run(ShapeProblem& problem,
 IpoptRun IpoptSession::solve(ShapeNlp* nlp) {
   Ipopt::IpoptApplication& app = *application_->app;
   const Ipopt::SmartPtr<Ipopt::TNLP> owner = nlp;
-  // MUMPS, IPOPT's linear solver here, is not thread-safe: its calls go one at a time through the
-  // lock of mumps_lock.cpp, and the rest of the solve runs in parallel. Until a run has shown that
+  // Small KKT systems (every fixed-clamp step without many constraint rows) go to the dense solver
+  // of dense_kkt_solver.hpp, as IPOPT's "ma27": it keeps no state outside IPOPT's arrays, so these
+  // solves need no lock at all. OptimizeTNLP builds its algorithm afresh and reads linear_solver
+  // each time, so one session serves both kinds.
+  const bool dense = nlp->kkt_dimension() <= kDenseKktMaxDimension;
+  if (dense) register_dense_kkt_solver();
+  app.Options()->SetStringValue("linear_solver", dense ? "ma27" : "mumps");
+  // MUMPS, for the larger ones, is not thread-safe: its calls go one at a time through the lock of
+  // mumps_lock.cpp, and the rest of the solve runs in parallel. Until a MUMPS solve has shown that
   // IPOPT's calls are bound to that lock (they are unless another image defining dmumps_c came
-  // first), whole solves are serialised instead.
+  // first), whole MUMPS solves are serialised instead.
   static std::mutex whole_solves;
   static std::atomic<bool> mumps_behind_lock{false};
+  // A dense solve may still end the MUMPS instance of this session's last solve (IPOPT keeps its
+  // algorithm until the next OptimizeTNLP): it is serialised too while the lock is unproven.
+  const bool calls_mumps = !dense || last_solve_used_mumps_;
+  last_solve_used_mumps_ = !dense;
   IpoptRun run;
-  if (mumps_behind_lock.load(std::memory_order_acquire)) {
+  if (!calls_mumps || mumps_behind_lock.load(std::memory_order_acquire)) {
     run = with_status(app.OptimizeTNLP(owner));
   } else {
     const std::lock_guard<std::mutex> lock(whole_solves);

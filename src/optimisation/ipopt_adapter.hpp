@@ -49,8 +49,10 @@ class IpoptSession {
   const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 
   /// Optimises `problem` from `start` (F not evaluated outside `admissible`, when given); the
-  /// problem is left evaluated at some iterate. Runs in different threads overlap; only their calls
-  /// of MUMPS (IPOPT's linear solver here, not thread-safe) are serialised (mumps_lock.hpp).
+  /// problem is left evaluated at some iterate. The KKT systems go to the dense solver
+  /// (dense_kkt_solver.hpp) when their dimension is at most kDenseKktMaxDimension, to MUMPS above.
+  /// Runs in different threads overlap; only their calls of MUMPS (not thread-safe) are serialised
+  /// (mumps_lock.hpp).
   IpoptRun run(ShapeProblem& problem,
                const Vector6d& start,
                const std::optional<WrenchBounds>& admissible = std::nullopt);
@@ -64,6 +66,7 @@ class IpoptSession {
   struct Application;
   std::unique_ptr<Application> application_;
   bool finite_difference_hessian_;
+  bool last_solve_used_mumps_ = false;  // its algorithm, with a MUMPS instance, is still alive
   std::optional<IpoptRun> failure_;
 };
 

@@ -13,7 +13,8 @@ namespace rodshape::detail {
 
 namespace {
 
-constexpr int kUnknowns = 6;  // w = (n(0), m(0))
+constexpr int kUnknowns = 6;               // w = (n(0), m(0))
+constexpr int kLimitedMemoryHistory = 20;  // limited_memory_max_history (see apply_options)
 
 }  // namespace
 
@@ -78,7 +79,7 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
   // failed 2 of 4 cases (grasp m_x = 0: max_iter 500; half-space: Infeasible_Problem_Detected
   // after wandering to |w| ~ 1e3); history 20 solved all 4 in 26–79 iterations.
   set_string("hessian_approximation", finite_difference_hessian ? "exact" : "limited-memory");
-  set_integer("limited_memory_max_history", 20);
+  set_integer("limited_memory_max_history", kLimitedMemoryHistory);
   // With the limited-memory Hessian, the "extended" augmented system puts the low-rank update into
   // one KKT factorisation, instead of Sherman–Morrison with 2 × history back-solves per direction:
   // each MUMPS call carries a fixed cost (its save/restore bookkeeping), so on the paper's
@@ -96,15 +97,30 @@ void apply_options(Ipopt::OptionsList& ipopt_options,
   // down when their gradient at the start exceeds 100 in the max-norm. Rows mix m, N and 1/m.
   set_string("nlp_scaling_method", "gradient-based");
 
-  // Linear solver for the KKT systems: MUMPS, which Debian's coinor-libipopt is built with
-  // (IPOPT 3.11's preferred ma27 needs the HSL library at run time).
+  // Linear solver for the KKT systems: MUMPS, which Debian's coinor-libipopt is built with, for
+  // large systems; IpoptSession switches a solve to "ma27", the dense solver of
+  // dense_kkt_solver.hpp (no HSL), when its KKT system is small. That solver asks for exactly the
+  // storage it uses, so IPOPT's 5-fold margin is not needed, and no MC19 scaling (HSL) is wanted.
   set_string("linear_solver", "mumps");
+  set_number("ma27_la_init_factor", 1.0);
+  set_number("ma27_liw_init_factor", 1.0);
+  set_string("linear_system_scaling", "none");
 
   assert(ok && "an IPOPT option was rejected: check its name and range");
   (void)ok;
 }
 
 // ---- the NLP ------------------------------------------------------------------------------------
+
+int ShapeNlp::kkt_dimension() const {
+  const Eigen::VectorXd& lower = problem_.constraint_lower();
+  const Eigen::VectorXd& upper = problem_.constraint_upper();
+  int inequalities = 0;
+  for (int i = 0; i < rows_; ++i)
+    if (lower(i) != upper(i)) ++inequalities;
+  const int low_rank = finite_difference_hessian_ ? 0 : 2 * kLimitedMemoryHistory;
+  return n_ + rows_ + inequalities + low_rank;
+}
 
 ShapeNlp::ShapeNlp(ShapeProblem& problem,
                    const Vector6d& start,

@@ -72,6 +72,10 @@ class ShapeNlp final : public Ipopt::TNLP {
            const std::optional<WrenchBounds>& admissible = std::nullopt);
 
   const NlpOutcome& outcome() const { return outcome_; }
+  /// The dimension of IPOPT's KKT systems for this NLP: n + m unknowns and multipliers, a slack per
+  /// inequality row (g_L < g_U), and with the limited-memory Hessian the 2 × history rows of its
+  /// low-rank update ("extended" augmented system). Variable bounds add none.
+  int kkt_dimension() const;
 
   bool get_nlp_info(Ipopt::Index& n,
                     Ipopt::Index& m,

@@ -1,5 +1,7 @@
 // mumps_lock.cpp: dmumps_c, MUMPS's C entry, forwarded to MUMPS's own under one process-wide mutex
-// (see mumps_lock.hpp).
+// (see mumps_lock.hpp). Only solves whose KKT systems are too large for the dense solver
+// (dense_kkt_solver.hpp, kDenseKktMaxDimension) call MUMPS, and the dense solves that end a MUMPS
+// instance left by their session's previous solve (IPOPT keeps its algorithm until the next one).
 #include "optimisation/mumps_lock.hpp"
 
 #include <dlfcn.h>

@@ -1,12 +1,14 @@
-// test_ipopt_threads.cpp: many threads each solving small shape problems at once give, bit for bit,
-// the serial results; and this binary's IPOPT really calls MUMPS through rodshape's lock
-// (mumps_lock.hpp), so that solves overlap and only MUMPS's calls are serialised.
-// Named "Threads" so that the ThreadSanitizer job of CI runs it (ctest -R Threads).
+// test_ipopt_threads.cpp: many threads each solving shape problems at once give, bit for bit, the
+// serial results; small KKT systems go to the dense solver (dense_kkt_solver.hpp) and call no
+// MUMPS, and large ones call MUMPS through rodshape's lock (mumps_lock.hpp), so that solves overlap
+// and only MUMPS's calls are serialised. Named "Threads" so that the ThreadSanitizer job of CI runs
+// it (ctest -R Threads).
 #include <gtest/gtest.h>
 
 #include <thread>
 #include <vector>
 
+#include "optimisation/dense_kkt_solver.hpp"
 #include "optimisation/mumps_lock.hpp"
 #include "optimisation_fixtures.hpp"
 #include "rodshape/core/rod_integrator.hpp"
@@ -16,9 +18,13 @@ namespace rodshape {
 namespace {
 
 constexpr int kIntervals = 16;  // small problems: many solves in little time
+/// Enough nodes that a curvature limit (a row per node, with a slack, and the L-BFGS Hessian's 40
+/// rows) makes the KKT system too large for the dense solver.
+constexpr int kLargeIntervals = detail::kDenseKktMaxDimension / 2 + 10;
 
 /// Problem k: ten points on the band bent by a wrench that grows with k, fitted from a zero wrench;
-/// odd k with a curvature limit (more rows in the KKT system, an active inequality).
+/// odd k with a curvature limit (more rows in the KKT system, an active inequality). k ≥ 6: the
+/// band with kLargeIntervals (k = 7: solved with MUMPS).
 struct SmallProblem {
   ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, kIntervals);
   ShapeTarget target;
@@ -26,12 +32,14 @@ struct SmallProblem {
 };
 
 SmallProblem small_problem(int k) {
+  const int intervals = k >= 6 ? kLargeIntervals : kIntervals;
   SmallProblem problem;
+  problem.rod = testing::rubber_band(ConstitutiveModel::Cosserat, intervals);
   Vector6d w;
   w << 0.20, -0.12, 0.05, 0.09, -0.14, 0.01;
   w *= 0.4 + 0.15 * k;
   const RodConfiguration shape = integrate(problem.rod, BaseWrench::from_vector(w));
-  for (int i = 1; i <= 10; ++i) problem.target.points.push_back(shape.p[i + (kIntervals - 10)]);
+  for (int i = 1; i <= 10; ++i) problem.target.points.push_back(shape.p[i + (intervals - 10)]);
   problem.target.squared_distances = true;
   problem.target.energy_weight = 1e-3;
   problem.target.distance_weight = 100.0;
@@ -45,22 +53,35 @@ ShapeResult solve(int k) {
   return optimise_shape(problem, BaseWrench{});
 }
 
-TEST(IpoptThreads, ASolveCallsMumpsThroughTheLock) {
+TEST(IpoptThreads, ALargeSolveCallsMumpsThroughTheLock) {
   const long before = detail::mumps_calls_in_this_thread();
-  const ShapeResult result = solve(0);
+  const ShapeResult result = solve(7);
   ASSERT_TRUE(result.converged()) << result.message;
   // IPOPT's dmumps_c calls (initialise, analyse, factorise, solve, end) passed through the lock.
   EXPECT_GE(detail::mumps_calls_in_this_thread() - before, 5);
 }
 
+TEST(IpoptThreads, SmallSolvesCallNoMumps) {
+  // A first solve: it may end a MUMPS instance left by this thread's last solve (IPOPT keeps its
+  // algorithm until the next one), one call through the lock.
+  ASSERT_TRUE(solve(0).converged());
+  const long before = detail::mumps_calls_in_this_thread();
+  for (int k : {0, 1, 6}) {
+    const ShapeResult result = solve(k);
+    ASSERT_TRUE(result.converged()) << k << ": " << result.message;
+  }
+  EXPECT_EQ(detail::mumps_calls_in_this_thread(), before);
+}
+
 TEST(IpoptThreads, ManyThreadsSolvingAtOnceGiveTheSerialResults) {
-  constexpr int kProblems = 6, kThreads = 4, kRounds = 1;
+  constexpr int kProblems = 8, kThreads = 4, kRounds = 1;
   std::vector<ShapeResult> serial;
   for (int k = 0; k < kProblems; ++k) {
     serial.push_back(solve(k));
     ASSERT_TRUE(serial.back().converged()) << k << ": " << serial.back().message;
   }
   ASSERT_GT(serial[1].ipopt.constraint_multipliers.size(), 0u);  // the limited problems have rows
+  ASSERT_GT(serial[7].ipopt.constraint_multipliers.size(), 0u);
   // results[t][r * kProblems + j]: thread t solves the problems in its own rotated order.
   std::vector<std::vector<ShapeResult>> results(kThreads);
   std::vector<std::thread> threads;

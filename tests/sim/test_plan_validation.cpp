@@ -552,6 +552,11 @@ TEST(PlanValidation, AnArmsPlanDrivesThePlantByItsJoints) {
 // it, and the run ended 8.2 mm off (25 mm once the estimates the model could not explain were no
 // longer used). A re-planned step with more than max_energy_ratio × the energy of the step it
 // replaces is refused, and the run ends within a millimetre, like the other seeds.
+// Which optimum IPOPT reaches depends on its path: the coil came with MUMPS as its linear solver;
+// since small KKT systems go to the dense solver (issue 26), no re-plan of this run coils (nor of
+// seeds 1-12, nor with other rest curvatures tried), so the run is the same with the test and
+// without it. The refusal itself is tested in tests/feedback/test_replan_gentleness.cpp; here,
+// whichever path IPOPT takes, a refused re-plan must have been a shape the model cannot explain.
 TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
   PlanTask task = read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_c_arc.yaml");
   task.plant = paper_mismatch();
@@ -570,12 +575,20 @@ TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
       validate_plan(task.problem, plan, task.plant, task.sensor, options);
   ASSERT_EQ(result.status, ValidationStatus::Complete) << result.brief();
   EXPECT_LT(result.runs[0].final.true_error, 1e-3);  // issue 10's aim
-  for (const Checkpoint& c : result.runs[0].checkpoints) EXPECT_TRUE(c.consistent) << c.message;
-  // Without the test, the plant bent towards the coiled step is a shape the model cannot explain
-  // (residuals of 50-70 σ): those estimates are neither fused nor acted on (max_residual).
+  bool refused = false;
+  for (const Checkpoint& c : result.runs[0].checkpoints) {
+    EXPECT_TRUE(c.consistent) << c.message;
+    refused = refused || c.message.find("the re-plan was refused") != std::string::npos;
+  }
   options.loop.max_energy_ratio = 1e9;
   const ValidationResult coiled =
       validate_plan(task.problem, plan, task.plant, task.sensor, options);
+  if (!refused) {  // nothing for the test to refuse: the same run without it
+    EXPECT_EQ(coiled.runs[0].final.true_error, result.runs[0].final.true_error);
+    return;
+  }
+  // Without the test, the plant bent towards the coiled step is a shape the model cannot explain
+  // (residuals of 50-70 σ): those estimates are neither fused nor acted on (max_residual).
   int inconsistent = 0;
   for (const Checkpoint& c : coiled.runs[0].checkpoints) {
     if (c.consistent) continue;
