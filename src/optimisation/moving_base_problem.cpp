@@ -5,6 +5,7 @@
 //   ∇_x F = (Bᵀ ∇_w F, Jᵀ ∇_ξ F + ∇ motion term),   dg/dx = (dg/dw B, dg/dξ J).
 // Every block is linear in the configuration's derivative arrays (the chain rule), so evaluated on
 // the configuration of base_pose_derivatives it gives dg/dξ.
+#include <Eigen/Cholesky>
 #include <cmath>
 
 #include "optimisation/blocks/constraint_blocks.hpp"
@@ -148,6 +149,99 @@ void ShapeProblem::evaluate_moving_constraints() {
   dg_dx_.middleCols<3>(3).noalias() = dg_dw_.middleCols<3>(3) * R0;
   dg_dx_.middleCols<3>(6) = dg_dxi_.leftCols<3>();
   dg_dx_.rightCols<3>().noalias() = dg_dxi_.rightCols<3>() * J;
+}
+
+bool ShapeProblem::rigid_alignment_applies() const {
+  return base_motion_ && rod_.load.force.isZero(0.0) && rod_.load.moment.isZero(0.0) &&
+         target_.distance_weight > 0.0 &&
+         (target_.squared_distances || target_.distance_smoothing > 0.0);
+}
+
+double ShapeProblem::aligned_cost(const Vector6d& xi_scaled, Vector6d* gradient) {
+  const double L = rod_.properties.length;
+  const Pose& reference = base_motion_->reference;
+  const Eigen::Vector3d dt = L * xi_scaled.head<3>(), dphi = xi_scaled.tail<3>();
+  const Eigen::Matrix3d R0 = exp_so3(dphi) * reference.rotation;
+  const Eigen::Vector3d p0 = reference.position + dt;
+  const double Wb = base_motion_->motion_weight * target_.distance_weight;
+  double cost = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
+  Eigen::Vector3d g_t = (2.0 * Wb / L) * dt, g_e = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& point : target_.points) {
+    // The point in the base's frame, q = R0ᵀ (p - p0), and its distance to the body-frame curve.
+    const Eigen::Vector3d arm = point - p0;
+    const Eigen::Vector3d q = R0.transpose() * arm;
+    const CurveProjection projection = project_onto_curve(body_, q, body_balls_);
+    const double d = projection.distance;
+    cost += target_.distance_weight * distance_penalty(d);
+    if (gradient == nullptr || !(d > 0.0)) continue;
+    // d(dist)/dq = r̂ᵀ (the closest point's own motion is along the curve, normal to r); dq/dδt =
+    // -R0ᵀ; dq/dε = R0ᵀ [p - p0]× for a world turn ε of R0.
+    const Eigen::Vector3d normal = (q - projection.closest) / d;
+    const double slope = distance_term_slope(d);
+    g_t -= slope * (R0 * normal);
+    g_e += slope * (R0 * normal).cross(arm);
+  }
+  if (gradient != nullptr) {
+    // ε = J_l(δφ) dδφ; back to ξ̃ = (δt / L, δφ).
+    gradient->head<3>() = L * g_t;
+    gradient->tail<3>() = left_jacobian_so3(dphi).transpose() * g_e + (2.0 * Wb * L) * dphi;
+  }
+  return cost;
+}
+
+bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
+  ClampedRod body = rod_;
+  body.clamp = Pose{};
+  integrate(body, BaseWrench::from_vector(w_b), body_, Derivatives::None);
+  interval_balls(body_, body_balls_);
+  const double L = rod_.properties.length;
+  Vector6d at;
+  at << xi.head<3>() / L, xi.tail<3>();
+  Vector6d gradient;
+  double cost = aligned_cost(at, &gradient);
+  if (!std::isfinite(cost) || !gradient.allFinite()) return false;
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    // The Hessian by central differences of the exact gradient (no integration: cheap).
+    Matrix6 H;
+    for (int j = 0; j < 6; ++j) {
+      const double h = 1e-6;
+      Vector6d plus = at, minus = at, g_plus, g_minus;
+      plus[j] += h;
+      minus[j] -= h;
+      aligned_cost(plus, &g_plus);
+      aligned_cost(minus, &g_minus);
+      H.col(j) = (g_plus - g_minus) / (2.0 * h);
+    }
+    H = 0.5 * (H + H.transpose()).eval();
+    if (!H.allFinite()) return false;
+    // Newton's step, shifted towards a gradient step until it descends (Armijo).
+    double shift = 0.0;
+    bool moved = false;
+    Vector6d step = Vector6d::Zero();
+    for (int trial = 0; trial < 30 && !moved; ++trial) {
+      const Eigen::LDLT<Matrix6> ldlt(H + shift * Matrix6::Identity());
+      step = -ldlt.solve(gradient);
+      if (ldlt.isPositive() && step.allFinite()) {
+        const Vector6d next = at + step;
+        Vector6d next_gradient;
+        const double next_cost = aligned_cost(next, &next_gradient);
+        if (std::isfinite(next_cost) && next_gradient.allFinite() &&
+            next_cost <= cost + 1e-4 * gradient.dot(step)) {
+          at = next;
+          cost = next_cost;
+          gradient = next_gradient;
+          moved = true;
+        }
+      }
+      shift =
+          shift == 0.0 ? 1e-8 * std::max(1.0, H.diagonal().cwiseAbs().maxCoeff()) : 10.0 * shift;
+    }
+    if (!moved) break;  // no descent left: at the minimiser to rounding
+    if (step.lpNorm<Eigen::Infinity>() <= 1e-13) break;
+  }
+  xi << L * at.head<3>(), at.tail<3>();
+  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6 * std::max(1.0, std::abs(cost));
 }
 
 }  // namespace rodshape
