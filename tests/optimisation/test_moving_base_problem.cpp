@@ -153,5 +153,66 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   EXPECT_GT(clamped.cost.max_distance, 0.01) << clamped.brief();
 }
 
+TEST(MovingBaseProblem, WithoutLoadsThePoseIsEliminatedAndTheOptimumIsThatOfTheTwelveUnknowns) {
+  // No distributed load: the shape in the base's frame depends on w_b alone, so without constraint
+  // rows IPOPT sees w_b and ξ is the best rigid placement at each w_b (align_base). Its optimum
+  // must be stationary in all 12 unknowns and the same as the 12-unknown NLP's (forced here by an
+  // inactive base workspace row).
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  ShapeTarget target;  // the paper's smoothed Σ dist, points 1 mm off the moved shape
+  for (int i : {0, 5, 12, 20, 28, 36, 40})
+    target.points.push_back(truth.p[i] + 1e-3 * truth.R[i].col(i % 2));
+  target.energy_weight = 1e-3;
+  target.distance_weight = 1.0;
+  BaseMotion motion;
+  motion.reference = rod.clamp;
+  const BaseWrench guess{rod.clamp.rotation * 0.2 * wb.head<3>(),
+                         rod.clamp.rotation * 0.2 * wb.tail<3>()};
+  ShapeOptimiserOptions options;
+  options.max_iterations = 500;
+
+  ShapeProblem projected(rod, target);
+  projected.move_base(motion);
+  ASSERT_TRUE(projected.rigid_alignment_applies());
+  const ShapeResult result = optimise_shape(projected, guess, options);
+  ASSERT_TRUE(result.converged()) << result.brief();
+  const Pose base{result.configuration.p[0], result.configuration.R[0]};
+  Vector12d x;
+  x << base.rotation.transpose() * result.base_wrench.force,
+      base.rotation.transpose() * result.base_wrench.moment, base.position - rod.clamp.position,
+      log_so3(base.rotation * rod.clamp.rotation.transpose());
+  projected.evaluate_with_base(x);
+  Vector12d scale;
+  scale << testing::wrench_scale(rod), Eigen::Vector3d::Constant(rod.properties.length),
+      Eigen::Vector3d::Ones();
+  const Vector12d gradient = projected.variable_gradient();
+  EXPECT_LT(gradient.cwiseProduct(scale).lpNorm<Eigen::Infinity>(), 1e-7) << gradient.transpose();
+  // align_base from ξ = 0 at the optimum's w_b finds the optimum's ξ.
+  Vector6d xi = Vector6d::Zero();
+  ASSERT_TRUE(projected.align_base(x.head<6>(), xi));
+  EXPECT_LT((xi - x.tail<6>()).lpNorm<Eigen::Infinity>(), 1e-7) << xi.transpose();
+
+  Workspace far;  // a base workspace row that is never active
+  far.box = Workspace::Box{rod.clamp.position - Eigen::Vector3d::Constant(10.0),
+                           rod.clamp.position + Eigen::Vector3d::Constant(10.0)};
+  motion.workspace = far;
+  ShapeProblem twelve(rod, target);
+  twelve.move_base(motion);
+  ASSERT_GT(twelve.constraint_count(), 0);
+  const ShapeResult reference = optimise_shape(twelve, guess, options);
+  ASSERT_TRUE(reference.converged()) << reference.brief();
+  EXPECT_NEAR(result.cost.cost, reference.cost.cost, 1e-9 * reference.cost.cost);
+  EXPECT_LT((result.configuration.p[0] - reference.configuration.p[0]).norm(), 1e-6);
+  EXPECT_LT((result.configuration.tip().position - reference.configuration.tip().position).norm(),
+            1e-6);
+  EXPECT_LE(result.ipopt.iterations, reference.ipopt.iterations);
+}
+
 }  // namespace
 }  // namespace rodshape
