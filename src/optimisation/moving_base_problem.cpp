@@ -157,6 +157,11 @@ bool ShapeProblem::rigid_alignment_applies() const {
          (target_.squared_distances || target_.distance_smoothing > 0.0);
 }
 
+namespace {
+/// align_base() stops at |∂F/∂ξ̃|∞ below this (ξ̃ = (δt / L, δφ)).
+constexpr double kAlignedGradient = 1e-12;
+}  // namespace
+
 double ShapeProblem::aligned_cost(const Vector6d& xi_scaled, Vector6d* gradient) {
   const double L = rod_.properties.length;
   const Pose& reference = base_motion_->reference;
@@ -201,47 +206,70 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
   double cost = aligned_cost(at, &gradient);
   if (!std::isfinite(cost) || !gradient.allFinite()) return false;
   using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    // The Hessian by central differences of the exact gradient (no integration: cheap).
-    Matrix6 H;
+  // Newton's method from the last ξ*, to a gradient at the rounding level of F's: ξ* enters the
+  // reduced gradient through H_wξ δξ. The Hessian (forward differences of the exact gradient, no
+  // integration) is kept from step to step and from one w_b to the next while the steps descend
+  // and the gradient falls by 4 or more a step; otherwise it is differenced again.
+  const auto difference = [&]() {
     for (int j = 0; j < 6; ++j) {
-      const double h = 1e-6;
-      Vector6d plus = at, minus = at, g_plus, g_minus;
-      plus[j] += h;
-      minus[j] -= h;
-      aligned_cost(plus, &g_plus);
-      aligned_cost(minus, &g_minus);
-      H.col(j) = (g_plus - g_minus) / (2.0 * h);
+      constexpr double h = 1e-7;
+      Vector6d shifted = at, g_shifted;
+      shifted[j] += h;
+      aligned_cost(shifted, &g_shifted);
+      aligned_hessian_.col(j) = (g_shifted - gradient) / h;
     }
-    H = 0.5 * (H + H.transpose()).eval();
-    if (!H.allFinite()) return false;
-    // Newton's step, shifted towards a gradient step until it descends (Armijo).
+    aligned_hessian_ = 0.5 * (aligned_hessian_ + aligned_hessian_.transpose()).eval();
+    aligned_hessian_set_ = true;
+    aligned_hessian_fresh_ = true;
+    return aligned_hessian_.allFinite();
+  };
+  aligned_hessian_fresh_ = false;
+  if (!aligned_hessian_set_ && !difference()) return false;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    if (gradient.lpNorm<Eigen::Infinity>() <= kAlignedGradient) break;
+    // Newton's step, shifted towards a gradient step until it descends (Armijo); with a kept
+    // Hessian that fails, differenced again first.
     double shift = 0.0;
     bool moved = false;
-    Vector6d step = Vector6d::Zero();
-    for (int trial = 0; trial < 30 && !moved; ++trial) {
-      const Eigen::LDLT<Matrix6> ldlt(H + shift * Matrix6::Identity());
-      step = -ldlt.solve(gradient);
+    for (int trial = 0; trial < 12 && !moved; ++trial) {
+      const Eigen::LDLT<Matrix6> ldlt(aligned_hessian_ + shift * Matrix6::Identity());
+      const Vector6d step = -ldlt.solve(gradient);
       if (ldlt.isPositive() && step.allFinite()) {
         const Vector6d next = at + step;
         Vector6d next_gradient;
         const double next_cost = aligned_cost(next, &next_gradient);
-        if (std::isfinite(next_cost) && next_gradient.allFinite() &&
-            next_cost <= cost + 1e-4 * gradient.dot(step)) {
+        // Armijo, or, where F's differences are at its rounding, a gradient that falls.
+        const bool descends =
+            next_cost <= cost + 1e-4 * gradient.dot(step) ||
+            (next_cost <= cost + 1e-14 * std::abs(cost) &&
+             next_gradient.lpNorm<Eigen::Infinity>() < 0.5 * gradient.lpNorm<Eigen::Infinity>());
+        if (std::isfinite(next_cost) && next_gradient.allFinite() && descends) {
+          const bool slow =
+              next_gradient.lpNorm<Eigen::Infinity>() > 0.25 * gradient.lpNorm<Eigen::Infinity>();
           at = next;
           cost = next_cost;
           gradient = next_gradient;
           moved = true;
+          if (slow) {
+            if (!difference()) return false;
+          } else {
+            aligned_hessian_fresh_ = false;
+          }
+          break;
         }
       }
-      shift =
-          shift == 0.0 ? 1e-8 * std::max(1.0, H.diagonal().cwiseAbs().maxCoeff()) : 10.0 * shift;
+      if (!aligned_hessian_fresh_) {
+        if (!difference()) return false;
+        shift = 0.0;
+        continue;
+      }
+      const double top = std::max(1.0, aligned_hessian_.diagonal().cwiseAbs().maxCoeff());
+      shift = shift == 0.0 ? 1e-8 * top : 10.0 * shift;
     }
     if (!moved) break;  // no descent left: at the minimiser to rounding
-    if (step.lpNorm<Eigen::Infinity>() <= 1e-13) break;
   }
   xi << L * at.head<3>(), at.tail<3>();
-  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6 * std::max(1.0, std::abs(cost));
+  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6;
 }
 
 }  // namespace rodshape

@@ -180,6 +180,10 @@ class ShapeProblem {
   // align_base(): the shape in the base's frame and its balls.
   RodConfiguration body_;
   std::vector<IntervalBall> body_balls_;
+  /// The last differenced ∂²F/∂ξ̃², kept for the next Newton steps while they converge fast.
+  Eigen::Matrix<double, 6, 6> aligned_hessian_ = Eigen::Matrix<double, 6, 6>::Zero();
+  bool aligned_hessian_fresh_ = false;  // computed at the current alignment's iterate
+  bool aligned_hessian_set_ = false;
   /// F(w_b, ξ) less the energy term (constant in ξ), and its gradient in ξ̃ = (δt / L, δφ).
   double aligned_cost(const Vector6d& xi_scaled, Vector6d* gradient);
 };
