@@ -5,7 +5,6 @@
 //   ∇_x F = (Bᵀ ∇_w F, Jᵀ ∇_ξ F + ∇ motion term),   dg/dx = (dg/dw B, dg/dξ J).
 // Every block is linear in the configuration's derivative arrays (the chain rule), so evaluated on
 // the configuration of base_pose_derivatives it gives dg/dξ.
-#include <Eigen/Cholesky>
 #include <cmath>
 
 #include "optimisation/blocks/constraint_blocks.hpp"
@@ -149,127 +148,6 @@ void ShapeProblem::evaluate_moving_constraints() {
   dg_dx_.middleCols<3>(3).noalias() = dg_dw_.middleCols<3>(3) * R0;
   dg_dx_.middleCols<3>(6) = dg_dxi_.leftCols<3>();
   dg_dx_.rightCols<3>().noalias() = dg_dxi_.rightCols<3>() * J;
-}
-
-bool ShapeProblem::rigid_alignment_applies() const {
-  return base_motion_ && rod_.load.force.isZero(0.0) && rod_.load.moment.isZero(0.0) &&
-         target_.distance_weight > 0.0 &&
-         (target_.squared_distances || target_.distance_smoothing > 0.0);
-}
-
-namespace {
-/// align_base() stops at |∂F/∂ξ̃|∞ below this (ξ̃ = (δt / L, δφ)).
-constexpr double kAlignedGradient = 1e-12;
-}  // namespace
-
-double ShapeProblem::aligned_cost(const Vector6d& xi_scaled, Vector6d* gradient) {
-  const double L = rod_.properties.length;
-  const Pose& reference = base_motion_->reference;
-  const Eigen::Vector3d dt = L * xi_scaled.head<3>(), dphi = xi_scaled.tail<3>();
-  const Eigen::Matrix3d R0 = exp_so3(dphi) * reference.rotation;
-  const Eigen::Vector3d p0 = reference.position + dt;
-  const double Wb = base_motion_->motion_weight * target_.distance_weight;
-  double cost = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
-  Eigen::Vector3d g_t = (2.0 * Wb / L) * dt, g_e = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& point : target_.points) {
-    // The point in the base's frame, q = R0ᵀ (p - p0), and its distance to the body-frame curve.
-    const Eigen::Vector3d arm = point - p0;
-    const Eigen::Vector3d q = R0.transpose() * arm;
-    const CurveProjection projection = project_onto_curve(body_, q, body_balls_);
-    const double d = projection.distance;
-    cost += target_.distance_weight * distance_penalty(d);
-    if (gradient == nullptr || !(d > 0.0)) continue;
-    // d(dist)/dq = r̂ᵀ (the closest point's own motion is along the curve, normal to r); dq/dδt =
-    // -R0ᵀ; dq/dε = R0ᵀ [p - p0]× for a world turn ε of R0.
-    const Eigen::Vector3d normal = (q - projection.closest) / d;
-    const double slope = distance_term_slope(d);
-    g_t -= slope * (R0 * normal);
-    g_e += slope * (R0 * normal).cross(arm);
-  }
-  if (gradient != nullptr) {
-    // ε = J_l(δφ) dδφ; back to ξ̃ = (δt / L, δφ).
-    gradient->head<3>() = L * g_t;
-    gradient->tail<3>() = left_jacobian_so3(dphi).transpose() * g_e + (2.0 * Wb * L) * dphi;
-  }
-  return cost;
-}
-
-bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
-  ClampedRod body = rod_;
-  body.clamp = Pose{};
-  integrate(body, BaseWrench::from_vector(w_b), body_, Derivatives::None);
-  interval_balls(body_, body_balls_);
-  const double L = rod_.properties.length;
-  Vector6d at;
-  at << xi.head<3>() / L, xi.tail<3>();
-  Vector6d gradient;
-  double cost = aligned_cost(at, &gradient);
-  if (!std::isfinite(cost) || !gradient.allFinite()) return false;
-  using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  // Newton's method from the last ξ*, to a gradient at the rounding level of F's: ξ* enters the
-  // reduced gradient through H_wξ δξ. The Hessian (forward differences of the exact gradient, no
-  // integration) is kept from step to step and from one w_b to the next while the steps descend
-  // and the gradient falls by 4 or more a step; otherwise it is differenced again.
-  const auto difference = [&]() {
-    for (int j = 0; j < 6; ++j) {
-      constexpr double h = 1e-7;
-      Vector6d shifted = at, g_shifted;
-      shifted[j] += h;
-      aligned_cost(shifted, &g_shifted);
-      aligned_hessian_.col(j) = (g_shifted - gradient) / h;
-    }
-    aligned_hessian_ = 0.5 * (aligned_hessian_ + aligned_hessian_.transpose()).eval();
-    aligned_hessian_set_ = true;
-    aligned_hessian_fresh_ = true;
-    return aligned_hessian_.allFinite();
-  };
-  aligned_hessian_fresh_ = false;
-  if (!aligned_hessian_set_ && !difference()) return false;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    if (gradient.lpNorm<Eigen::Infinity>() <= kAlignedGradient) break;
-    // Newton's step, shifted towards a gradient step until it descends (Armijo); with a kept
-    // Hessian that fails, differenced again first.
-    double shift = 0.0;
-    bool moved = false;
-    for (int trial = 0; trial < 12 && !moved; ++trial) {
-      const Eigen::LDLT<Matrix6> ldlt(aligned_hessian_ + shift * Matrix6::Identity());
-      const Vector6d step = -ldlt.solve(gradient);
-      if (ldlt.isPositive() && step.allFinite()) {
-        const Vector6d next = at + step;
-        Vector6d next_gradient;
-        const double next_cost = aligned_cost(next, &next_gradient);
-        // Armijo, or, where F's differences are at its rounding, a gradient that falls.
-        const bool descends =
-            next_cost <= cost + 1e-4 * gradient.dot(step) ||
-            (next_cost <= cost + 1e-14 * std::abs(cost) &&
-             next_gradient.lpNorm<Eigen::Infinity>() < 0.5 * gradient.lpNorm<Eigen::Infinity>());
-        if (std::isfinite(next_cost) && next_gradient.allFinite() && descends) {
-          const bool slow =
-              next_gradient.lpNorm<Eigen::Infinity>() > 0.25 * gradient.lpNorm<Eigen::Infinity>();
-          at = next;
-          cost = next_cost;
-          gradient = next_gradient;
-          moved = true;
-          if (slow) {
-            if (!difference()) return false;
-          } else {
-            aligned_hessian_fresh_ = false;
-          }
-          break;
-        }
-      }
-      if (!aligned_hessian_fresh_) {
-        if (!difference()) return false;
-        shift = 0.0;
-        continue;
-      }
-      const double top = std::max(1.0, aligned_hessian_.diagonal().cwiseAbs().maxCoeff());
-      shift = shift == 0.0 ? 1e-8 * top : 10.0 * shift;
-    }
-    if (!moved) break;  // no descent left: at the minimiser to rounding
-  }
-  xi << L * at.head<3>(), at.tail<3>();
-  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6;
 }
 
 }  // namespace rodshape
