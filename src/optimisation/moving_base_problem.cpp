@@ -5,7 +5,6 @@
 //   ∇_x F = (Bᵀ ∇_w F, Jᵀ ∇_ξ F + ∇ motion term),   dg/dx = (dg/dw B, dg/dξ J).
 // Every block is linear in the configuration's derivative arrays (the chain rule), so evaluated on
 // the configuration of base_pose_derivatives it gives dg/dξ.
-#include <Eigen/Cholesky>
 #include <cmath>
 
 #include "optimisation/blocks/constraint_blocks.hpp"
@@ -149,124 +148,6 @@ void ShapeProblem::evaluate_moving_constraints() {
   dg_dx_.middleCols<3>(3).noalias() = dg_dw_.middleCols<3>(3) * R0;
   dg_dx_.middleCols<3>(6) = dg_dxi_.leftCols<3>();
   dg_dx_.rightCols<3>().noalias() = dg_dxi_.rightCols<3>() * J;
-}
-
-bool ShapeProblem::rigid_alignment_applies() const {
-  return base_motion_ && rod_.load.force.isZero(0.0) && rod_.load.moment.isZero(0.0) &&
-         target_.distance_weight > 0.0 &&
-         (target_.squared_distances || target_.distance_smoothing > 0.0);
-}
-
-namespace {
-/// align_base() stops at |∂F/∂ξ̃|∞ below this (ξ̃ = (δt / L, δφ)).
-constexpr double kAlignedGradient = 1e-12;
-}  // namespace
-
-double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
-                                  Vector6d* gradient,
-                                  Eigen::Matrix<double, 6, 6>* hessian) {
-  const double L = rod_.properties.length;
-  const Pose& reference = base_motion_->reference;
-  const Eigen::Vector3d dt = L * xi_scaled.head<3>(), dphi = xi_scaled.tail<3>();
-  const Eigen::Matrix3d R0 = exp_so3(dphi) * reference.rotation;
-  const Eigen::Matrix3d Jl = left_jacobian_so3(dphi);
-  const Eigen::Vector3d p0 = reference.position + dt;
-  const double Wb = base_motion_->motion_weight * target_.distance_weight;
-  const double W2 = target_.distance_weight, delta = target_.distance_smoothing;
-  double cost = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
-  Vector6d g = Vector6d::Zero();
-  g << 2.0 * Wb * dt, (2.0 * Wb * L) * dphi;  // in ξ̃ = (δt / L, δφ)
-  Eigen::Matrix<double, 6, 6> H = (2.0 * Wb * L) * Eigen::Matrix<double, 6, 6>::Identity();
-  for (const Eigen::Vector3d& point : target_.points) {
-    // The point in the base's frame, q = R0ᵀ (p - p0), and its distance to the body-frame curve.
-    const Eigen::Vector3d q = R0.transpose() * (point - p0);
-    const CurveProjection projection = project_onto_curve(body_, q, body_balls_);
-    const double d = projection.distance;
-    cost += W2 * distance_penalty(d);
-    if (gradient == nullptr) continue;
-    // The closest point c moves with the base by J ξ̃, J = [L I, -[c - p0]× J_l] (world); d(dist)
-    // = -n̂ · dc with n̂ the unit normal from c to the point (c's own motion along the curve is
-    // normal to it).
-    Eigen::Matrix<double, 3, 6> J;
-    J << L * Eigen::Matrix3d::Identity(), -hat(R0 * projection.closest) * Jl;
-    const double slope = distance_term_slope(d);  // W2 ρ'(d)
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-    if (d > 0.0) {
-      normal = R0 * (q - projection.closest) / d;
-      g -= slope * (J.transpose() * normal);
-    }
-    if (hessian == nullptr) continue;
-    // Gauss–Newton in the normal plane of the curve: W2 ρ'' along n̂, W2 ρ'/d across it.
-    const int node =
-        std::min(projection.interval + (projection.t > 0.5 ? 1 : 0), body_.nodes() - 1);
-    const Eigen::Vector3d tangent = (R0 * (body_.R[node] * body_.v[node])).normalized();
-    double along = 0.0, across = 0.0;
-    if (target_.squared_distances) {
-      along = across = 2.0 * W2;
-    } else if (delta > 0.0) {
-      const double root = std::sqrt(d * d + delta * delta);
-      along = W2 * delta * delta / (root * root * root);
-      across = W2 / root;
-    } else if (d > 0.0) {
-      across = W2 / d;
-    }
-    const Eigen::Matrix3d across_plane =
-        Eigen::Matrix3d::Identity() - tangent * tangent.transpose() - normal * normal.transpose();
-    const Eigen::Matrix3d M = along * normal * normal.transpose() + across * across_plane;
-    H.noalias() += J.transpose() * M * J;
-  }
-  if (gradient != nullptr) *gradient = g;
-  if (hessian != nullptr) *hessian = 0.5 * (H + H.transpose());
-  return cost;
-}
-
-bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
-  ClampedRod body = rod_;
-  body.clamp = Pose{};
-  integrate(body, BaseWrench::from_vector(w_b), body_, Derivatives::None);
-  interval_balls(body_, body_balls_);
-  const double L = rod_.properties.length;
-  using Matrix6 = Eigen::Matrix<double, 6, 6>;
-  Vector6d at;
-  at << xi.head<3>() / L, xi.tail<3>();
-  Vector6d gradient;
-  Matrix6 hessian;
-  double cost = aligned_cost(at, &gradient, &hessian);
-  if (!std::isfinite(cost) || !gradient.allFinite() || !hessian.allFinite()) return false;
-  // Gauss–Newton steps from the last ξ*, to a gradient at the rounding level of F's: ξ* enters
-  // the reduced gradient through H_wξ δξ. Shifted towards a gradient step until it descends.
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    if (gradient.lpNorm<Eigen::Infinity>() <= kAlignedGradient) break;
-    double shift = 0.0;
-    bool moved = false;
-    for (int trial = 0; trial < 12 && !moved; ++trial) {
-      const Eigen::LDLT<Matrix6> ldlt(hessian + shift * Matrix6::Identity());
-      const Vector6d step = -ldlt.solve(gradient);
-      if (ldlt.isPositive() && step.allFinite()) {
-        Vector6d next_gradient;
-        Matrix6 next_hessian;
-        const double next_cost = aligned_cost(at + step, &next_gradient, &next_hessian);
-        // Armijo, or, where F's differences are at its rounding, a gradient that falls.
-        const bool descends =
-            next_cost <= cost + 1e-4 * gradient.dot(step) ||
-            (next_cost <= cost + 1e-14 * std::abs(cost) &&
-             next_gradient.lpNorm<Eigen::Infinity>() < 0.5 * gradient.lpNorm<Eigen::Infinity>());
-        if (std::isfinite(next_cost) && next_gradient.allFinite() && next_hessian.allFinite() &&
-            descends) {
-          at += step;
-          cost = next_cost;
-          gradient = next_gradient;
-          hessian = next_hessian;
-          moved = true;
-        }
-      }
-      const double top = std::max(1.0, hessian.diagonal().cwiseAbs().maxCoeff());
-      shift = shift == 0.0 ? 1e-8 * top : 10.0 * shift;
-    }
-    if (!moved) break;  // no descent left: at the minimiser to rounding
-  }
-  xi << L * at.head<3>(), at.tail<3>();
-  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6;
 }
 
 }  // namespace rodshape

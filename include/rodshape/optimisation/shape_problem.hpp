@@ -117,15 +117,6 @@ class ShapeProblem {
   /// |δφ_i| ≤ BaseMotion::kMaxTurn.
   Vector12d variable_lower() const;
   Vector12d variable_upper() const;
-  /// Whether the base pose can be aligned without integrating (align_base): a moving base, no
-  /// distributed load (the shape in the base's frame then depends on w_b alone), a smooth distance
-  /// term (distance_smoothing > 0 or squared distances) and W2 > 0.
-  bool rigid_alignment_applies() const;
-  /// ξ minimising F(w_b, ξ) for the base-frame wrench w_b (the best rigid placement of its shape,
-  /// the motion term included): Newton steps from `xi`, which returns the minimiser. The shape is
-  /// integrated once in the base's frame and moved rigidly; evaluate_with_base()'s state is left as
-  /// it was. False when no descent is found or a value is not finite.
-  bool align_base(const Vector6d& w_b, Vector6d& xi);
 
   // Results of the last evaluate().
   double cost() const { return breakdown_.cost; }
@@ -177,13 +168,6 @@ class ShapeProblem {
   void set_clamp(const Vector12d& x);
   Vector6d distance_gradient_sum(const RodConfiguration& derivatives) const;
   void evaluate_moving_constraints();
-  // align_base(): the shape in the base's frame and its balls.
-  RodConfiguration body_;
-  std::vector<IntervalBall> body_balls_;
-  /// F(w_b, ξ) less the energy term (constant in ξ), and its gradient in ξ̃ = (δt / L, δφ).
-  double aligned_cost(const Vector6d& xi_scaled,
-                      Vector6d* gradient,
-                      Eigen::Matrix<double, 6, 6>* hessian = nullptr);
 };
 
 }  // namespace rodshape
