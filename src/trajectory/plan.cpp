@@ -527,10 +527,12 @@ detour::Reoptimise reoptimised_goal(const PlanProblem& problem,
 
 /// The target's optimum: the given Shape plan's last step, or the Shape sets' (untracked) when it
 /// has none; `reference` holds the latter. Where the sets' optimisation fails on the way (an
-/// intermediate set of a few points on a helix can pull the optimum beyond the rod's scale), twice
-/// as many sets (each a smaller move), and then the target's set alone from the initial rod, where
-/// they reach the points (within 1 % of the rod's length): the target's optimum is what Pose and
-/// Search need, not the sets' way there.
+/// intermediate set of a few points on a helix can pull the optimum beyond the rod's scale) or
+/// ends on an optimum off the points (more than 1 % of the rod's length: untracked, the sets can
+/// lead to another local optimum), twice as many sets (each a smaller move), and then the target's
+/// set alone from the initial rod, where they reach the points (within 1 % of the rod's length;
+/// a failed reference: within reached_within): the target's optimum is what Pose and Search need,
+/// not the sets' way there.
 const PlanResult& optimum_plan(const PlanProblem& problem,
                                const PlanOptions& options,
                                const plan_stages::InitialEquilibrium& initial,
@@ -541,14 +543,21 @@ const PlanResult& optimum_plan(const PlanProblem& problem,
   PlanOptions untracked = with_interpolation(options, ObjectiveInterpolation::Shape);
   untracked.track_between_waypoints = false;
   reference = plan_by_sets(problem, untracked, initial);
+  const double near = 0.01 * problem.rod.properties.length;
+  const auto failed = [](const PlanResult& r) {
+    return r.status == PlanStatus::Partial || r.steps.empty();
+  };
+  const auto off_points = [&](const PlanResult& r) {
+    return failed(r) || r.steps.back().solution.cost.max_distance > near;
+  };
   for (const int steps : {std::min(2 * options.steps, PlanOptions::kMaxSteps), 1}) {
-    if (reference.status != PlanStatus::Partial || steps == options.steps) break;
+    if (!off_points(reference) || steps == options.steps) break;
     untracked.steps = steps;
     PlanResult finer = plan_by_sets(problem, untracked, initial);
     // an optimum off the points (a target the rod cannot reach) is no goal for Pose or Search
-    if (finer.status != PlanStatus::Partial && !finer.steps.empty() &&
-        finer.steps.back().solution.cost.max_distance <=
-            plan_stages::reached_within(reference, problem))
+    const double within =
+        failed(reference) ? plan_stages::reached_within(reference, problem) : near;
+    if (!failed(finer) && finer.steps.back().solution.cost.max_distance <= within)
       reference = std::move(finer);
   }
   return reference;
