@@ -194,7 +194,13 @@ def test_two_pandas_plan_and_its_files(tmp_path):
     document = json.loads(plan.to_json())
     assert document["base_joint_trajectory"]["file"] == "base_joint_trajectory.csv"
     assert document["base_robot"]["status"] == "reachable"
-    assert document["scene"]["robot_min_gap_at"]["obstacle"] == "other_arm"
+    # At the first sample the two hands are 131.46 mm apart (the initial poses' IK, before any
+    # optimisation), so the least gap over the path, rod and other arm both checked, is no larger.
+    # Which pair is least depends on the steps' optima in the moving base's flat valley (with the
+    # dense KKT solver: the base arm's link 2 and the rod at step 4, 118.96 mm).
+    scene = document["scene"]
+    assert scene["robot_min_gap_at"]["obstacle"] in ("other_arm", "rod")
+    assert scene["robot_clear"] and scene["robot_min_gap"] <= 0.13147
 
 
 def test_two_pandas_validation_drives_the_base_by_its_arm(tmp_path):
