@@ -31,39 +31,11 @@ void dsytrs_(const char* uplo,
              std::size_t uplo_length);
 
 // IPOPT's linear-solver loader (HSLLoader.h, not shipped by Debian): MA27's entries for
-// Ma27TSolverInterface.
-using Ma27ad = void (*)(int*,
-                        int*,
-                        const int*,
-                        const int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        double*,
-                        int*,
-                        double*);
-using Ma27bd = void (*)(int*,
-                        int*,
-                        const int*,
-                        const int*,
-                        double*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        int*,
-                        double*,
-                        int*);
-using Ma27cd =
-    void (*)(int*, double*, int*, int*, int*, double*, int*, double*, int*, int*, int*, double*);
-using Ma27id = void (*)(int*, double*);
+// Ma27TSolverInterface, whose signatures are those of dense_kkt's four functions.
+using Ma27ad = decltype(&rodshape::detail::dense_kkt::analyse);
+using Ma27bd = decltype(&rodshape::detail::dense_kkt::factorise);
+using Ma27cd = decltype(&rodshape::detail::dense_kkt::solve);
+using Ma27id = decltype(&rodshape::detail::dense_kkt::defaults);
 void LSL_setMA27(Ma27ad ma27ad, Ma27bd ma27bd, Ma27cd ma27cd, Ma27id ma27id);
 }
 

@@ -530,9 +530,8 @@ detour::Reoptimise reoptimised_goal(const PlanProblem& problem,
 /// intermediate set of a few points on a helix can pull the optimum beyond the rod's scale) or
 /// ends on an optimum off the points (more than 1 % of the rod's length: untracked, the sets can
 /// lead to another local optimum), twice as many sets (each a smaller move), and then the target's
-/// set alone from the initial rod, where they reach the points (within 1 % of the rod's length;
-/// a failed reference: within reached_within): the target's optimum is what Pose and Search need,
-/// not the sets' way there.
+/// set alone from the initial rod, where they reach the points (within 1 % of the rod's length):
+/// the target's optimum is what Pose and Search need, not the sets' way there.
 const PlanResult& optimum_plan(const PlanProblem& problem,
                                const PlanOptions& options,
                                const plan_stages::InitialEquilibrium& initial,
@@ -555,10 +554,7 @@ const PlanResult& optimum_plan(const PlanProblem& problem,
     untracked.steps = steps;
     PlanResult finer = plan_by_sets(problem, untracked, initial);
     // an optimum off the points (a target the rod cannot reach) is no goal for Pose or Search
-    const double within =
-        failed(reference) ? plan_stages::reached_within(reference, problem) : near;
-    if (!failed(finer) && finer.steps.back().solution.cost.max_distance <= within)
-      reference = std::move(finer);
+    if (!off_points(finer)) reference = std::move(finer);
   }
   return reference;
 }

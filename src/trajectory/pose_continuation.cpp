@@ -27,6 +27,12 @@ struct FollowedPath {
   std::optional<SceneGap> least;
 };
 
+/// The start of every refusal of a way: "the rod cannot follow <its path> to the target's
+/// optimum: ".
+std::string cannot_follow(const Way& way) {
+  return std::string("the rod cannot follow ") + way.path_name() + " to the target's optimum: ";
+}
+
 /// The end effector's waypoints W_0 = `from` … W_n = `to` of the way `way`: with a twist, the
 /// tip's poses interpolated from `from`'s to `to`'s with `way.twist` more turn about the rod's
 /// tangent at the tip spread along them, T(σ) = interpolate(T_from, T_to · Rz(φ), σ) · Rz(-φσ)
@@ -206,9 +212,7 @@ Refusal not_followed(const PlanProblem& problem, const FollowedPath& path, const
                   problem.scene.obstacles[static_cast<std::size_t>(path.least->obstacle)].label(
                       path.least->obstacle)
             : path.followed.message;
-  return {
-      scene ? PlanStatus::Collision : PlanStatus::SnapThrough,
-      std::string("the rod cannot follow ") + way.path_name() + " to the target's optimum: " + why};
+  return {scene ? PlanStatus::Collision : PlanStatus::SnapThrough, cannot_follow(way) + why};
 }
 
 /// The path's segments as the plan's tracking (each arriving at its waypoint's equilibrium, the
@@ -260,11 +264,11 @@ std::optional<PlanResult> plan_along(const PlanProblem& problem,
   PlanResult result;
   result.status = PlanStatus::Complete;
   result.message = "complete: " + std::to_string(n) +
-                   " steps on the end effector's straight path to the target's optimum";
-  if (way.wrench_line)
-    result.message = "complete: " + std::to_string(n) +
-                     " steps through the equilibria whose base wrenches lie on the straight line "
-                     "from the initial rod's to the target's optimum's";
+                   (way.wrench_line ? " steps through the equilibria whose base wrenches lie on "
+                                      "the straight line from the initial rod's to the target's "
+                                      "optimum's"
+                                    : " steps on the end effector's straight path to the target's "
+                                      "optimum");
   if (way.twist != 0.0)
     result.message += ", its tip turned " +
                       detail::format_value(way.twist * 180.0 / std::numbers::pi) +
@@ -291,8 +295,7 @@ std::optional<PlanResult> plan_along(const PlanProblem& problem,
   record_path(result, problem, path, way);
   result.end_effector_path = plan_stages::time_waypoints(from, result.steps, options.end_effector);
   if (!plan_stages::follows_timed_path(problem, result)) {
-    refusal.why = std::string("the rod cannot follow ") + way.path_name() +
-                  " to the target's optimum: "
+    refusal.why = cannot_follow(way) +
                   "along the timed path's samples it snaps on the way or arrives elsewhere (the "
                   "path passes where the equilibrium's branch divides)";
     return std::nullopt;
@@ -328,9 +331,7 @@ std::optional<PlanResult> plan(const PlanProblem& problem,
     std::optional<PlanResult> tried =
         plan_along(problem, options, initial, reference, reoptimise, way, why);
     if (tried && !(tried->steps.back().solution.cost.max_distance <= reach)) {
-      why.why = std::string("the rod cannot follow ") + way.path_name() +
-                " to the target's optimum: "
-                "it arrives on another equilibrium, whose optimum is " +
+      why.why = cannot_follow(way) + "it arrives on another equilibrium, whose optimum is " +
                 detail::format_value(tried->steps.back().solution.cost.max_distance * 1e3) +
                 " mm from the target";
       tried.reset();

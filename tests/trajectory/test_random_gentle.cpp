@@ -275,13 +275,9 @@ void expect_gentle(const GentleCase& c, const PlanResult& plan) {
             kReachFraction * c.task.problem.rod.properties.length);
 }
 
-// Case 247 (the cable with its weight wound into a helix): every scheme's straight way snapped or
-// arrived elsewhere (the target's optimum is the least twisted equilibrium through its points,
-// turned from the one they were taken from; the straight path winds the rod onto another
-// equilibrium at the optimum's pose). Pose turning the tip about the rod's tangent on the way was
-// gentle (1.00 ×); the wrench line, tried before the twists, is too.
-TEST(RandomGentleTargets, PoseLeavesTheStraightPathWhereItWindsTheRodElsewhere) {
-  GentleCase c = draw_case(247);
+/// Case k planned by Pose alone: gentle, along the wrench line.
+void expect_gentle_by_wrench_line(int k) {
+  GentleCase c = draw_case(k);
   c.task.options.interpolation = ObjectiveInterpolation::Pose;
   const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
   EXPECT_NE(plan.message.find("base wrenches lie on the straight line"), std::string::npos)
@@ -289,17 +285,21 @@ TEST(RandomGentleTargets, PoseLeavesTheStraightPathWhereItWindsTheRodElsewhere) 
   expect_gentle(c, plan);
 }
 
+// Case 247 (the cable with its weight wound into a helix): every scheme's straight way snapped or
+// arrived elsewhere (the target's optimum is the least twisted equilibrium through its points,
+// turned from the one they were taken from; the straight path winds the rod onto another
+// equilibrium at the optimum's pose). Pose turning the tip about the rod's tangent on the way was
+// gentle (1.00 ×); the wrench line, tried before the twists, is too.
+TEST(RandomGentleTargets, PoseLeavesTheStraightPathWhereItWindsTheRodElsewhere) {
+  expect_gentle_by_wrench_line(247);
+}
+
 // Case 490 (the band with its weight, a bend of 7 points): the Shape sets' optima bend the rod to
 // 1.42 x its final energy on the way and the straight path to the optimum's pose (twisted or not)
 // compresses it; the equilibria whose base wrenches lie on the straight line from the initial
 // rod's to the optimum's grow steadily to the goal's energy.
 TEST(RandomGentleTargets, PoseTakesTheWrenchLineWhereTheStraightPathsAreNotGentle) {
-  GentleCase c = draw_case(490);
-  c.task.options.interpolation = ObjectiveInterpolation::Pose;
-  const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
-  EXPECT_NE(plan.message.find("base wrenches lie on the straight line"), std::string::npos)
-      << plan.message;
-  expect_gentle(c, plan);
+  expect_gentle_by_wrench_line(490);
 }
 
 // Case 492 (the band wound into a helix through 5 points): the first Shape set's optimum lies
