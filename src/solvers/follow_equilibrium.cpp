@@ -9,6 +9,8 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/solvers/shooting_residual.hpp"
+#include "secant_start.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -101,16 +103,35 @@ BaseWrench carried(const EquilibriumPath& path, double from, double to, const Ba
   return {turn * w.force, turn * w.moment};
 }
 
-/// One substep: the direct solve at σ from `guess`, with the derivatives `derivatives`.
+/// One substep: the direct solve at σ from `guess`, with the derivatives `derivatives` (and the
+/// last substep's Jacobian estimate when `secant` is given and valid).
 ShootingResult solve_at(const ClampedRod& rod,
                         const EquilibriumPath& path,
                         double sigma,
                         const BaseWrench& guess,
                         ShootingOptions shooting,
-                        Derivatives derivatives) {
+                        Derivatives derivatives,
+                        detail::SecantStart* secant = nullptr) {
   shooting.continuation = false;  // a failure here is what the caller wants to see
   shooting.output_derivatives = derivatives;
-  return solve_equilibrium(rod_at(rod, path, sigma), path.tip_at(sigma), guess, shooting);
+  return detail::solve_equilibrium(rod_at(rod, path, sigma), path.tip_at(sigma), guess, shooting,
+                                   secant);
+}
+
+/// The Euler predictor's data for the substep to σ from the last one (whose root `result` holds):
+/// with the rod unchanged along the path (no moving clamp, no ramped load) and the last shape
+/// integrated on the rod's own sub-steps, the new tip condition's residual at the last root is
+/// that shape's residual, no integration needed; -B⁻¹ r is then the path's tangent dw/dσ Δσ
+/// (dr/dw dw + ∂r/∂σ Δσ = 0), the solve's Euler predictor.
+void predict(const ClampedRod& rod,
+             const EquilibriumPath& path,
+             double sigma,
+             const FollowResult& result,
+             detail::SecantStart& secant) {
+  secant.residual_at_guess.reset();
+  if (!secant.valid || path.clamp_at || path.ramp_loads || result.states.empty()) return;
+  if (result.states.back().solve.substeps != rod.substeps) return;
+  secant.residual_at_guess = shooting_residual(path.tip_at(sigma), result.configuration);
 }
 
 /// The rod as the solve integrated it (with the sub-steps its accuracy check asked for).
@@ -164,11 +185,15 @@ void follow_fixed(const ClampedRod& rod,
                   FollowResult& result) {
   const Derivatives every =
       options.stability_every_substep ? Derivatives::AllNodes : Derivatives::None;
+  detail::SecantStart secant;         // the Jacobian estimate carried from substep to substep
+  const bool carry = !path.clamp_at;  // with a moving clamp w turns, and its Jacobian with it
   for (int j = 1; j <= options.substeps; ++j) {
     const double sigma = static_cast<double>(j) / options.substeps;
     const Derivatives derivatives = j == options.substeps ? options.final_derivatives : every;
     const BaseWrench guess = carried(path, result.sigma, sigma, result.base_wrench);
-    ShootingResult solved = solve_at(rod, path, sigma, guess, options.shooting, derivatives);
+    predict(rod, path, sigma, result, secant);
+    ShootingResult solved =
+        solve_at(rod, path, sigma, guess, options.shooting, derivatives, carry ? &secant : nullptr);
     add_counts(result.total, solved.summary);
     if (!solved.summary.converged()) {
       result.event = FollowEvent::Lost;

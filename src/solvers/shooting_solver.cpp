@@ -13,6 +13,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
+#include "secant_start.hpp"
 #include "validation.hpp"
 
 #include "overloaded.hpp"
@@ -87,7 +88,8 @@ Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
 }
 
 /// The shooting residual as Eigen's Levenberg–Marquardt sees it. Every evaluation integrates with
-/// tip derivatives and keeps the Jacobian, so that df() at an accepted point costs nothing.
+/// tip derivatives and keeps the Jacobian, so that df() at an accepted point costs nothing (and
+/// so does operator() at the cached point, e.g. minimizeInit() at the Euler predictor's point).
 class ShootingProblem : public Eigen::DenseFunctor<double> {
  public:
   ShootingProblem(const ClampedRod& rod, const TipCondition& tip, RodConfiguration& work)
@@ -98,7 +100,7 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
         row_scale_(residual_row_scale(rod, tip)) {}
 
   int operator()(const InputType& w, ValueType& f) {
-    evaluate(w);
+    if (!has_cache_ || Vector6d(w) != w_cached_) evaluate(w);
     // A non-finite shape is a very bad point, not an error: the trust region shrinks.
     if (residual_.allFinite()) {
       f = row_scale_.cwiseProduct(residual_);
@@ -180,45 +182,82 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   int jacobian_evaluations_ = 0;
 };
 
-/// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point,
-/// then quasi-Newton steps whose Jacobian B starts at J(x) and takes Broyden's rank-one update
-/// B += (Δr - B Δw) Δwᵀ / (Δwᵀ Δw) after each step, each checked by an integration without
-/// derivatives (about a third of the cost of one with them). Near the root this converges
-/// superlinearly without another derivative integration.
-/// Returns true, with x at the root, when ||r||_∞ ≤ tolerance; false, with x unchanged, when a
-/// step fails to halve the scaled residual first.
-bool chord_endgame(ShootingProblem& problem,
+/// Below this scaled residual (positions 1% of L, angles 0.01 rad) Newton's and quasi-Newton
+/// steps take over from Levenberg–Marquardt.
+constexpr double kChordThreshold = 1e-2;
+
+/// Quasi-Newton steps from (w, r = r(w)) with B ≈ dr/dw: w ← w - B⁻¹ r, each checked by an
+/// integration without derivatives (about a third of the cost of one with them) and accepted when
+/// it halves the scaled residual; then B takes Broyden's rank-one update
+/// B += (Δr - B Δw) Δwᵀ / (Δwᵀ Δw). Near the root this converges superlinearly without another
+/// derivative integration. True when ||r||_∞ ≤ tolerance; false when a step fails first (or
+/// after kMaxChordSteps). (w, r, B) end at the last accepted point either way.
+bool broyden_steps(ShootingProblem& problem,
                    const ShootingOptions& options,
-                   Eigen::VectorXd& x,
+                   Matrix6d& B,
+                   Vector6d& w,
+                   Vector6d& r,
                    ShootingSummary& result) {
   constexpr int kMaxChordSteps = 8;
-  const ShootingProblem::Snapshot at_x = problem.snapshot();
-  Matrix6d B = at_x.J;
-  Vector6d w = x;
-  Vector6d r = at_x.r;
   for (int k = 0; k < kMaxChordSteps; ++k) {
     const Eigen::PartialPivLU<Matrix6d> lu(B);
-    if (!(std::abs(lu.determinant()) > 0.0)) break;
+    if (!(std::abs(lu.determinant()) > 0.0)) return false;
     const Vector6d step = -lu.solve(r);
     const Vector6d w_next = w + step;
     const Vector6d r_next = problem.residual_without_jacobian(w_next);
     ++result.chord_steps;
-    if (!r_next.allFinite() || problem.scaled_norm(r_next) > 0.5 * problem.scaled_norm(r)) break;
+    if (!r_next.allFinite() || problem.scaled_norm(r_next) > 0.5 * problem.scaled_norm(r))
+      return false;
     B += (r_next - r - B * step) * step.transpose() / step.squaredNorm();  // Broyden
     w = w_next;
     r = r_next;
     result.residual_norm = r.lpNorm<Eigen::Infinity>();
-    if (result.residual_norm <= options.residual_tolerance) {
-      x = w;
-      return true;
-    }
+    if (result.residual_norm <= options.residual_tolerance) return true;
+  }
+  return false;
+}
+
+/// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point,
+/// then Broyden's steps (broyden_steps()). Returns true, with x at the root and B the updated
+/// Jacobian there, when ||r||_∞ ≤ tolerance; false, with x and the problem's cache unchanged, when
+/// a step fails to halve the scaled residual first.
+bool chord_endgame(ShootingProblem& problem,
+                   const ShootingOptions& options,
+                   Eigen::VectorXd& x,
+                   Matrix6d& B,
+                   ShootingSummary& result) {
+  const ShootingProblem::Snapshot at_x = problem.snapshot();
+  B = at_x.J;
+  Vector6d w = x;
+  Vector6d r = at_x.r;
+  if (broyden_steps(problem, options, B, w, r, result)) {
+    x = w;
+    return true;
   }
   problem.restore(at_x);  // Levenberg–Marquardt goes on from x as if nothing happened
   result.residual_norm = at_x.r.lpNorm<Eigen::Infinity>();
   return false;
 }
 
-/// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame.
+/// The Euler predictor of a continuation substep (detail::SecantStart): from the guess w (the
+/// last root) with the residual r of the new tip condition there and B ≈ dr/dw, the step
+/// -B⁻¹ r is the path's tangent times the step (dr/dw dw + ∂r/∂σ dσ = 0). The solve starts from
+/// the predicted point when its residual (integrated with derivatives, which Levenberg–Marquardt's
+/// first evaluation then re-uses) is smaller than r in the trust region's units; else from w.
+void predict(ShootingProblem& problem, const detail::SecantStart& start, Vector6d& w) {
+  if (!start.residual_at_guess) return;
+  const Vector6d& r = *start.residual_at_guess;
+  const Eigen::PartialPivLU<Matrix6d> lu(start.jacobian);
+  if (!r.allFinite() || !(std::abs(lu.determinant()) > 0.0)) return;
+  const Vector6d predicted = w - lu.solve(r);
+  const Vector6d& r_predicted = problem.residual_at(predicted);
+  if (r_predicted.allFinite() && problem.scaled_norm(r_predicted) < problem.scaled_norm(r))
+    w = predicted;
+}
+
+/// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame; from the
+/// Euler predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
+/// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
 /// `work_is_output`: true when `work` ends as integrate(rod, w, options.output_derivatives) (the
 /// last integration was at the last iterate, with that level), so the caller need not integrate
 /// again.
@@ -227,8 +266,12 @@ ShootingSummary solve_direct(const ClampedRod& rod,
                              const ShootingOptions& options,
                              RodConfiguration& work,
                              Vector6d& w,
-                             bool& work_is_output) {
+                             bool& work_is_output,
+                             detail::SecantStart* secant) {
   ShootingProblem problem(rod, tip, work);
+  ShootingSummary result;
+  if (secant && secant->valid) predict(problem, *secant, w);
+  if (secant) secant->valid = false;
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
   // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
   lm.setFtol(0.0);
@@ -243,9 +286,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   lm.diag() = rod.properties.bending_wrench_units().cwiseInverse();
   lm.setFactor(1.0);
 
-  // Below this scaled residual (positions 1% of L, angles 0.01 rad) the chord endgame takes over.
-  constexpr double kChordThreshold = 1e-2;
-  ShootingSummary result;
+  Matrix6d B;  // the Jacobian estimate at the root, when converged
   Eigen::VectorXd x = w;
   auto lm_status = lm.minimizeInit(x);
   bool tried_chord_here = false;
@@ -256,6 +297,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     if (result.residual_norm <= options.residual_tolerance) {
       result.status = SolveStatus::Converged;
       result.message = "converged";
+      B = problem.snapshot().J;  // residual_at(x) integrated with derivatives at x
       break;
     }
     if (!x.allFinite()) {
@@ -265,7 +307,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     }
     if (!tried_chord_here && problem.scaled_norm(r) <= kChordThreshold) {
       tried_chord_here = true;
-      if (chord_endgame(problem, options, x, result)) {
+      if (chord_endgame(problem, options, x, B, result)) {
         result.status = SolveStatus::Converged;
         result.message = "converged";
         break;
@@ -294,6 +336,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
       if (result.residual_norm <= options.residual_tolerance) {
         result.status = SolveStatus::Converged;
         result.message = "converged";
+        B = problem.snapshot().J;
       } else {
         result.status = SolveStatus::Singular;
         result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
@@ -303,6 +346,11 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     }
   }
   w = x;
+  if (secant && result.converged()) {
+    secant->valid = true;
+    secant->jacobian = B;
+    secant->residual_at_guess.reset();
+  }
   work_is_output = problem.work_holds(w, options.output_derivatives);
   result.integrations = problem.integrations();
   result.jacobian_evaluations = problem.jacobian_evaluations();
@@ -438,6 +486,14 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
                                  const TipCondition& tip,
                                  const BaseWrench& guess,
                                  const ShootingOptions& options) {
+  return detail::solve_equilibrium(rod, tip, guess, options, nullptr);
+}
+
+ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
+                                         const TipCondition& tip,
+                                         const BaseWrench& guess,
+                                         const ShootingOptions& options,
+                                         SecantStart* secant) {
   rod.validate();
   validate_tip(tip);
   options.validate();
@@ -452,7 +508,7 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
 
   Vector6d w = guess.to_vector();
   bool work_is_output = false;
-  summary = solve_direct(rod, tip, options, work, w, work_is_output);
+  summary = solve_direct(rod, tip, options, work, w, work_is_output, secant);
 
   if (!summary.converged() && options.continuation) {
     continue_from_rest(rod, tip, options, summary, w);
@@ -467,6 +523,7 @@ ShootingResult solve_equilibrium(const ClampedRod& rod,
   else
     integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
   detail::confirm_converged(rod, tip, options, solution);  // finite, accurate, or a status
+  if (secant && !solution.summary.converged()) secant->valid = false;
   return solution;
 }
 
