@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
@@ -239,24 +240,30 @@ bool chord_endgame(ShootingProblem& problem,
   return false;
 }
 
-/// The Euler predictor of a continuation substep (detail::SecantStart): from the guess w (the
-/// last root) with the residual r of the new tip condition there and B ≈ dr/dw, the step
-/// -B⁻¹ r is the path's tangent times the step (dr/dw dw + ∂r/∂σ dσ = 0). The solve starts from
-/// the predicted point when its residual (integrated with derivatives, which Levenberg–Marquardt's
+/// The predictor of a continuation substep (detail::SecantStart): from the guess w (the last
+/// root) with the residual r of the new tip condition there and B ≈ dr/dw, Euler's step -B⁻¹ r is
+/// the path's tangent times the step (dr/dw dw + ∂r/∂σ dσ = 0); the last substep's Euler error
+/// (≈ ½ w'' dσ² on equal steps) added makes it of second order. The solve starts from the
+/// predicted point when its residual (integrated with derivatives, which Levenberg–Marquardt's
 /// first evaluation then re-uses) is smaller than r in the trust region's units; else from w.
-void predict(ShootingProblem& problem, const detail::SecantStart& start, Vector6d& w) {
-  if (!start.residual_at_guess) return;
+/// Returns Euler's point (to measure its error at the root), empty when there is no prediction.
+std::optional<Vector6d> predict(ShootingProblem& problem,
+                                const detail::SecantStart& start,
+                                Vector6d& w) {
+  if (!start.residual_at_guess) return std::nullopt;
   const Vector6d& r = *start.residual_at_guess;
   const Eigen::PartialPivLU<Matrix6d> lu(start.jacobian);
-  if (!r.allFinite() || !(std::abs(lu.determinant()) > 0.0)) return;
-  const Vector6d predicted = w - lu.solve(r);
+  if (!r.allFinite() || !(std::abs(lu.determinant()) > 0.0)) return std::nullopt;
+  const Vector6d euler = w - lu.solve(r);
+  const Vector6d predicted = start.euler_error ? Vector6d(euler + *start.euler_error) : euler;
   const Vector6d& r_predicted = problem.residual_at(predicted);
   if (r_predicted.allFinite() && problem.scaled_norm(r_predicted) < problem.scaled_norm(r))
     w = predicted;
+  return euler;
 }
 
 /// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame; from the
-/// Euler predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
+/// predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
 /// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
 /// `work_is_output`: true when `work` ends as integrate(rod, w, options.output_derivatives) (the
 /// last integration was at the last iterate, with that level), so the caller need not integrate
@@ -270,7 +277,8 @@ ShootingSummary solve_direct(const ClampedRod& rod,
                              detail::SecantStart* secant) {
   ShootingProblem problem(rod, tip, work);
   ShootingSummary result;
-  if (secant && secant->valid) predict(problem, *secant, w);
+  const std::optional<Vector6d> euler =
+      secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
   if (secant) secant->valid = false;
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
   // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
@@ -350,6 +358,8 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     secant->valid = true;
     secant->jacobian = B;
     secant->residual_at_guess.reset();
+    secant->euler_error.reset();
+    if (euler) secant->euler_error = w - *euler;
   }
   work_is_output = problem.work_holds(w, options.output_derivatives);
   result.integrations = problem.integrations();
