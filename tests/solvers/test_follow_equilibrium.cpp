@@ -169,6 +169,41 @@ TEST(FollowEquilibrium, HeldTipPathEndsAtTheDirectSolveAndHoldsTheInterpolatedPo
   EXPECT_GT(sum.integrations, 0);
 }
 
+// The substeps after the first start from the predictor (the last root plus the path's tangent
+// -B⁻¹ r from the last Jacobian estimate; from the third on, plus the last Euler error, which makes
+// it of second order): on this smooth path of small equal steps the second-order prediction is
+// within the endgame's range, so each substep from the third on is one integration with
+// derivatives and no Levenberg–Marquardt step; and every root is the one the direct solve finds
+// from the last root (the predictor changes the start, not the branch), within the bound of two
+// residuals within τ.
+TEST(FollowEquilibrium, SubstepsAfterTheFirstStartFromThePredictorAndFindTheDirectSolvesRoot) {
+  const ClampedRod rod = testing::rubber_band();
+  const BaseWrench wA = scaled_wrench(rod, vec6(0.3, -0.2, 0.1, 0.5, 0.8, -0.3));
+  const BaseWrench wB = scaled_wrench(rod, vec6(-0.4, 0.5, 0.2, -0.6, 0.4, 0.7));
+  const Pose A = integrate(rod, wA).tip(), B = integrate(rod, wB).tip();
+  constexpr int K = 32;  // steps of about 0.06 rad
+  FollowOptions options;
+  options.substeps = K;
+  const FollowResult result = follow_equilibrium(rod, held_tip_path(A, B), wA, options);
+  ASSERT_TRUE(result.followed()) << result.brief();
+  ASSERT_EQ(result.states.size(), static_cast<std::size_t>(K));
+
+  const Vector6d dr = Vector6d::Constant(2.0 * (kTau + residual_round_off(rod)));
+  for (int j = 1; j < K; ++j) {
+    SCOPED_TRACE("substep " + std::to_string(j + 1));
+    const FollowedState& state = result.states[j];
+    if (j >= 2) {
+      EXPECT_EQ(state.solve.jacobian_evaluations, 1) << state.solve.brief();
+      EXPECT_EQ(state.solve.iterations, 0) << state.solve.brief();
+    }
+    const ClampedTip tip{interpolate(A, B, state.sigma)};
+    const ShootingResult direct = solve_equilibrium(rod, tip, result.states[j - 1].base_wrench);
+    ASSERT_TRUE(direct.summary.converged()) << direct.brief();
+    EXPECT_TRUE(WithinBound(state.base_wrench.to_vector(), direct.base_wrench.to_vector(),
+                            wrench_bound(rod, tip, direct.base_wrench, dr)));
+  }
+}
+
 // ---- analytical oracle: the circular arc under a pure end moment
 // ---------------------------------
 
