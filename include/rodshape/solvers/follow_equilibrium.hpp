@@ -51,7 +51,9 @@ struct FollowOptions {
   /// derivatives of the last substep's configuration, see final_derivatives).
   ShootingOptions shooting;
   /// Fixed schedule: σ_j = j / substeps, j = 1 … substeps; the first failed substep ends the
-  /// path. Used when `adaptive` is false.
+  /// path. Used when `adaptive` is false. Without a moving clamp or ramped loads, each substep
+  /// after the first starts from a predictor along the path's tangent (-B⁻¹ r from the last
+  /// root's Jacobian estimate, second order from the third substep on) where it is closer.
   int substeps = 10;
   /// Adaptive schedule: the first step is initial_step, a step is doubled after it converges and
   /// halved after it fails, down to 1 / max_substeps; a secant predictor extrapolates the last
