@@ -77,6 +77,28 @@ IpoptRun with_status(Ipopt::ApplicationReturnStatus status) {
 
 }  // namespace
 
+IpoptRun run_ended(IpoptEnd end) {
+  switch (end) {
+    case IpoptEnd::SolveSucceeded:
+      return with_status(Ipopt::Solve_Succeeded);
+    case IpoptEnd::SolvedToAcceptableLevel:
+      return with_status(Ipopt::Solved_To_Acceptable_Level);
+    case IpoptEnd::MaximumIterationsExceeded:
+      return with_status(Ipopt::Maximum_Iterations_Exceeded);
+    case IpoptEnd::UserRequestedStop:
+      return with_status(Ipopt::User_Requested_Stop);
+    case IpoptEnd::DivergingIterates:
+      return with_status(Ipopt::Diverging_Iterates);
+    case IpoptEnd::InvalidNumberDetected:
+      return with_status(Ipopt::Invalid_Number_Detected);
+    case IpoptEnd::ErrorInStepComputation:
+      return with_status(Ipopt::Error_In_Step_Computation);
+    case IpoptEnd::SearchDirectionBecomesTooSmall:
+      return with_status(Ipopt::Search_Direction_Becomes_Too_Small);
+  }
+  return with_status(Ipopt::Internal_Error);
+}
+
 struct IpoptSession::Application {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
 };

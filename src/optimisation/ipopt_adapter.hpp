@@ -28,6 +28,21 @@ struct IpoptRun {
   Vector12d x = Vector12d::Zero();           // with a moving base: the final (w_b, ξ)
 };
 
+/// How a solve ended, named by IPOPT's return statuses: those unconstrained_newton.hpp reports.
+enum class IpoptEnd {
+  SolveSucceeded,
+  SolvedToAcceptableLevel,
+  MaximumIterationsExceeded,
+  UserRequestedStop,
+  DivergingIterates,
+  InvalidNumberDetected,
+  ErrorInStepComputation,
+  SearchDirectionBecomesTooSmall,
+};
+
+/// A run that ended so: its SolveStatus, IPOPT's status number and name (as an IPOPT run's).
+IpoptRun run_ended(IpoptEnd end);
+
 class ShapeNlp;
 
 class IpoptSession {
@@ -45,6 +60,7 @@ class IpoptSession {
   static IpoptSession& for_this_thread(const ShapeOptimiserOptions& options,
                                        bool finite_difference_hessian);
 
+  bool finite_difference_hessian() const { return finite_difference_hessian_; }
   /// Set when IPOPT could not be initialised (run() must not be called then): its status.
   const std::optional<IpoptRun>& initialisation_failure() const { return failure_; }
 

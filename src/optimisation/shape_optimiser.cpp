@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "optimisation/ipopt_adapter.hpp"
+#include "optimisation/unconstrained_newton.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -27,10 +28,8 @@ namespace {
 
 using detail::IpoptRun;
 using detail::IpoptSession;
-using detail::uses_finite_difference_hessian;
-
-using detail::IpoptRun;
-using detail::IpoptSession;
+using detail::unconstrained_newton;
+using detail::unconstrained_newton_serves;
 using detail::uses_finite_difference_hessian;
 
 /// The guess, then `count` extra starts, deterministic. Bending moments are the components of m(0)
@@ -118,6 +117,10 @@ StartResult run_start(IpoptSession& session,
     result.run = session.run(problem, *moving_start,
                              admissible_box(problem, moving_start->head<6>(), options));
     problem.evaluate_with_base(result.run.x);
+  } else if (unconstrained_newton_serves(problem, session.finite_difference_hessian())) {
+    result.run =
+        unconstrained_newton(problem, start, options, admissible_box(problem, start, options));
+    problem.evaluate(result.run.w);
   } else {
     result.run = session.run(problem, start, admissible_box(problem, start, options));
     // Judge the final iterate ourselves, on the problem as posed.
@@ -163,8 +166,8 @@ std::size_t pick_best(const std::vector<StartResult>& results) {
 std::string describe(const StartResult& r, int starts, const ShapeOptimiserOptions& options) {
   std::ostringstream out;
   out.precision(3);
-  out << "IPOPT " << r.run.details.application_status_name << " after " << r.run.details.iterations
-      << " iterations";
+  out << r.run.details.solver << " " << r.run.details.application_status_name << " after "
+      << r.run.details.iterations << " iterations";
   if (starts > 1) out << " (start " << r.start_index + 1 << " of " << starts << ")";
   out << "; F = " << r.cost << ", max constraint violation " << r.violation;
   if (r.status == SolveStatus::ConstraintViolated)

@@ -49,8 +49,13 @@ struct ShapeOptimiserOptions {
   void validate() const;
 };
 
-/// IPOPT's own account of the solve, kept whole (not collapsed to a bool).
+/// IPOPT's own account of the solve, kept whole (not collapsed to a bool). A problem without
+/// constraint rows or wrench bounds (with the differenced Hessian) is solved by the iteration IPOPT
+/// would perform there, Newton's method with its inertia correction and line search, without
+/// IPOPT's overhead: `solver` says "dense Newton", and the status, iterations and objective read
+/// as IPOPT's would.
 struct IpoptDetails {
+  std::string solver = "IPOPT";         // or "dense Newton"
   int application_status = 0;           // Ipopt::ApplicationReturnStatus as an int
   std::string application_status_name;  // e.g. "Solve_Succeeded"
   int iterations = 0;

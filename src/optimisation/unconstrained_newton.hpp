@@ -1,0 +1,56 @@
+// unconstrained_newton.hpp (private): the iteration IPOPT performs on min_w F(w) when the problem
+// has no constraint rows and no finite wrench bounds, done directly on the 6 unknowns. Without
+// rows or bounds IPOPT's interior-point method reduces to Newton's method with a line search:
+// no barrier, no slacks, the filter reduces to Armijo's condition on F, and its KKT system is the
+// Hessian alone, perturbed by δ I until positive definite (its inertia correction). Doing the same
+// here leaves out IPOPT's per-iteration overhead (its timing of every task by getrusage, its
+// vector and matrix objects, their allocations): on the paper's experiment that overhead was about
+// a third of a plan's time (BENCHMARKS.md, issue 26).
+//
+// Kept from IPOPT, so that optima agree to the tolerance and results read the same:
+//   * the scaled problem: F is multiplied by s_f = min(1, 100 / |∇F(w0)|_∞) (gradient-based
+//     scaling, nlp_scaling_max_gradient), bounded below by 1e-8 (nlp_scaling_min_value);
+//   * the stopping test: s_f |∇F|_∞ ≤ tol and |∇F|_∞ ≤ 1 (IPOPT's tol and dual_inf_tol); 15
+//     iterations in a row within 1e-6 (acceptable_tol, acceptable_iter) stop at an acceptable
+//     point;
+//   * the Hessian: forward differences of the exact gradient (as ShapeNlp::eval_h);
+//   * the inertia correction: δ = 0 first, then 1e-4 (or a third of the last δ) growing ×100 (×8
+//     after a first δ) until the Cholesky factorisation succeeds, giving up past 1e40
+//     (first_hessian_perturbation, perturb_dec_fact, perturb_inc_fact(_first), max_hessian_
+//     perturbation);
+//   * the line search: α = 1, halved until s_f F decreases by 1e-8 α s_f ∇Fᵀd (eta_phi,
+//     alpha_red_factor), a failed evaluation (non-finite, or refused outside the admissible box)
+//     counting as a rejected trial;
+//   * the iteration count, the statuses and their names (IpoptDetails::application_status_name):
+//     Solve_Succeeded, Solved_To_Acceptable_Level, Maximum_Iterations_Exceeded,
+//     User_Requested_Stop (beyond the rod's scale, NlpOutcome::kMaxRefusals refusals),
+//     Diverging_Iterates (|w|_∞ > 1e20), Invalid_Number_Detected (F or a derivative non-finite at
+//     an accepted point or in the Hessian), Error_In_Step_Computation (no δ up to 1e40 made the
+//     Hessian positive definite); when the line search finds no decrease before the step falls
+//     below round-off (at the noise floor of F, where Σ dist can leave |∇F| a little above tol),
+//     IPOPT's restoration phase returns the last acceptable iterate (scaled |∇F|_∞ ≤ 1e-6) as
+//     Solved_To_Acceptable_Level, and so does this; without one, Search_Direction_Becomes_Too_Small
+//     (IPOPT's restoration has nothing to restore without rows).
+#pragma once
+
+#include <optional>
+
+#include "optimisation/ipopt_adapter.hpp"
+#include "rodshape/optimisation/shape_optimiser.hpp"
+#include "rodshape/optimisation/shape_problem.hpp"
+
+namespace rodshape::detail {
+
+/// Whether unconstrained_newton() serves `problem`: a fixed clamp, no constraint rows, no finite
+/// wrench bound, and the differenced Hessian (ShapeOptimiserOptions::hessian).
+bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian);
+
+/// Minimises F from `start` (F not evaluated outside `admissible`, when given; `start` lies
+/// inside). The result reads as an IPOPT run's (IpoptDetails::solver says which solver it was);
+/// the problem is left evaluated at some iterate. The iterations do not allocate.
+IpoptRun unconstrained_newton(ShapeProblem& problem,
+                              const Vector6d& start,
+                              const ShapeOptimiserOptions& options,
+                              const std::optional<WrenchBounds>& admissible = std::nullopt);
+
+}  // namespace rodshape::detail
