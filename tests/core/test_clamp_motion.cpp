@@ -1,7 +1,7 @@
 // test_clamp_motion.cpp: move_with_clamp against integrate() at the moved clamp. Without a load
 // both are the same configuration (clamp_motion.hpp), so the only difference is round-off: the
 // integration's over 20–40 Runge–Kutta steps and the move's few products, a few ε per unit of each
-// quantity's size (seen: ≤ 2e-15). The tolerance is 1e-12 per unit size; a wrong factor (Bᵀ
+// quantity's size (seen: ≤ 4e-15). The tolerance is 1e-12 per unit size; a wrong factor (Bᵀ
 // missing on the right, Q applied to a body-frame angle) errs by O(1), and with gravity (which
 // does not turn with the clamp) the move errs by ~1e-3 m.
 #include <gtest/gtest.h>
