@@ -352,10 +352,7 @@ bool ShapeNlp::differenced_hessian(const Ipopt::Number* x,
   Vector at_w;
   if (!lagrangian_gradient(w, obj_factor, multipliers, at_w)) return false;
   Matrix H;
-  for (int column = 0; column < kN; ++column) {
-    // With 12 unknowns the base pose's columns first: at x's wrench the shape only moves rigidly
-    // (ShapeProblem::evaluate_with_base integrates once for all six).
-    const int j = kN == 12 ? (column + 6) % 12 : column;
+  for (int j = 0; j < kN; ++j) {
     const double h =
         std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(w[j]), units[j]);
     Vector shifted = w, at_shifted;

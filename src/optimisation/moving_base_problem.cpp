@@ -9,7 +9,6 @@
 
 #include "optimisation/blocks/constraint_blocks.hpp"
 #include "rodshape/core/base_pose_derivatives.hpp"
-#include "rodshape/core/clamp_motion.hpp"
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
@@ -46,8 +45,6 @@ void ShapeProblem::move_base(BaseMotion motion) {
   dg_dx_ = Eigen::MatrixXd::Zero(constraint_count_, 12);
   gradient_x_ = Eigen::VectorXd::Zero(12);
   pose_tangent_.resize(rod_.nodes(), Derivatives::AllNodes);
-  integrated_.resize(rod_.nodes(), Derivatives::AllNodes);
-  integration_reusable_ = false;
   evaluated_ = false;
 }
 
@@ -55,7 +52,6 @@ void ShapeProblem::set_base_reference(const Pose& reference) {
   detail::require_pose("BaseMotion.reference", reference);
   base_motion_->reference = reference;
   rod_.clamp = reference;
-  integration_reusable_ = false;
   evaluated_ = false;
 }
 
@@ -114,7 +110,7 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   set_clamp(x);
   const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
   const BaseWrench w{R0 * x.segment<3>(0), R0 * x.segment<3>(3)};  // world_wrench(x), R0 once
-  integrate_or_move(x, w);
+  integrate(rod_, w, configuration_, Derivatives::AllNodes);
   base_pose_derivatives(rod_, configuration_, pose_tangent_);
   evaluate_cost();  // F, ∇_w F (world wrench), the projections
   evaluate_moving_constraints();
@@ -134,24 +130,6 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   gradient_x_.segment<3>(9) = J.transpose() * gradient_xi_.tail<3>() + (2.0 * Wb * L) * dphi;
   w_ = w.to_vector();
   evaluated_ = true;
-}
-
-void ShapeProblem::integrate_or_move(const Vector12d& x, const BaseWrench& w) {
-  const bool unloaded =
-      rod_.load.force == Eigen::Vector3d::Zero() && rod_.load.moment == Eigen::Vector3d::Zero();
-  if (unloaded && integration_reusable_ && x.head<6>() == integrated_body_) {
-    if (integrated_in_place_) {  // keep the integration itself: every move starts from it
-      std::swap(integrated_, configuration_);
-      integrated_in_place_ = false;
-    }
-    move_with_clamp(integrated_, integrated_clamp_, rod_.clamp, configuration_);
-    return;
-  }
-  integrate(rod_, w, configuration_, Derivatives::AllNodes);
-  integration_reusable_ = unloaded;
-  integrated_in_place_ = true;
-  integrated_body_ = x.head<6>();
-  integrated_clamp_ = rod_.clamp;
 }
 
 void ShapeProblem::evaluate_moving_constraints() {

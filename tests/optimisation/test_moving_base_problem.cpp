@@ -153,47 +153,5 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   EXPECT_GT(clamped.cost.max_distance, 0.01) << clamped.brief();
 }
 
-// Without a load evaluate_with_base integrates only when w_b changes and otherwise moves the last
-// integration with the base (clamp_motion.hpp). A sequence of pose-only and wrench changes must
-// give what a fresh problem integrating at each x gives, to round-off (1e-12 per unit size: a stale
-// or doubly moved configuration errs by the pose change, ~1e-2).
-TEST(MovingBaseProblem, PoseOnlyChangesGiveTheFreshIntegrationsValues) {
-  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 20, false);
-  const RodConfiguration c = integrate(rod, Wrench::from_vector(body_wrench(rod)));
-  BaseMotion motion;
-  motion.reference = rod.clamp;
-  motion.workspace = base_workspace(rod.clamp.position);
-  motion.motion_weight = 0.3;
-  ShapeProblem reused(rod, target_beside(c));
-  reused.move_base(motion);
-  Vector12d x;
-  x << body_wrench(rod), 0.01, -0.02, 0.015, 0.1, -0.2, 0.15;
-  Vector12d pose_change, wrench_change;
-  pose_change << Vector6d::Zero(), 0.004, 0.01, -0.006, -0.05, 0.08, 0.03;
-  wrench_change << 0.1 * body_wrench(rod), Vector6d::Zero();
-  const Vector12d sequence[] = {x,
-                                x + pose_change,
-                                x + 2.0 * pose_change,
-                                x + 2.0 * pose_change + wrench_change,
-                                x + pose_change + wrench_change,
-                                x - pose_change + wrench_change,
-                                x};
-  for (const Vector12d& at : sequence) {
-    reused.evaluate_with_base(at);
-    ShapeProblem fresh(rod, target_beside(c));
-    fresh.move_base(motion);
-    fresh.evaluate_with_base(at);
-    const double F = std::max(std::abs(fresh.cost()), 1.0);
-    EXPECT_NEAR(reused.cost(), fresh.cost(), 1e-12 * F);
-    const double G = fresh.variable_gradient().cwiseAbs().maxCoeff();
-    EXPECT_TRUE(CompareMatrices(reused.variable_gradient(), fresh.variable_gradient(), 1e-12 * G));
-    EXPECT_TRUE(CompareMatrices(reused.constraints(), fresh.constraints(), 1e-12));
-    const double J = fresh.variable_jacobian().cwiseAbs().maxCoeff();
-    EXPECT_TRUE(CompareMatrices(reused.variable_jacobian(), fresh.variable_jacobian(), 1e-12 * J));
-    EXPECT_TRUE(
-        CompareMatrices(reused.configuration().p.back(), fresh.configuration().p.back(), 1e-13));
-  }
-}
-
 }  // namespace
 }  // namespace rodshape

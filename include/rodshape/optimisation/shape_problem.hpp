@@ -165,15 +165,6 @@ class ShapeProblem {
   Eigen::VectorXd gradient_x_;
   Eigen::MatrixXd dg_dx_, dg_dxi_;
   Vector6d gradient_xi_ = Vector6d::Zero();
-  // Without a load the shape moves rigidly with the base (clamp_motion.hpp): the last integration,
-  // its body-frame wrench and clamp, reused when only the base pose changes.
-  // `integrated_in_place_`: configuration_ still holds it (moved into integrated_ only when first
-  // reused).
-  RodConfiguration integrated_;
-  Vector6d integrated_body_ = Vector6d::Zero();
-  Pose integrated_clamp_;
-  bool integration_reusable_ = false, integrated_in_place_ = false;
-  void integrate_or_move(const Vector12d& x, const BaseWrench& w);
   void set_clamp(const Vector12d& x);
   Vector6d distance_gradient_sum(const RodConfiguration& derivatives) const;
   void evaluate_moving_constraints();
