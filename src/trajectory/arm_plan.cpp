@@ -467,9 +467,47 @@ Arms prepare_arms(const PlanProblem& problem,
   return arms;
 }
 
+/// Per sample, the arm's link capsules in the world along its joint trajectory.
+std::vector<std::vector<Obstacle>> capsules_along(const ArmState& state) {
+  std::vector<std::vector<Obstacle>> capsules;
+  capsules.reserve(state.result.joints.q.size());
+  for (const Eigen::VectorXd& q : state.result.joints.q)
+    capsules.push_back(world_capsules(state.side.model(), state.side.placement().world_T_base, q));
+  return capsules;
+}
+
+/// Rounds of keep_arms_apart: the tip's arm, then the base's, then the tip's again.
+constexpr int kArmArmRounds = 3;
+
+/// The two arms kept apart through their redundancy (issue 21 item 4). The base arm's IK already
+/// kept off the tip arm's links; when their least gap (arm_arm_gap) is still below the clearance,
+/// the arms take turns: one arm's joint trajectory is solved again with the other's capsules at
+/// each sample as obstacles (IkClearance::others, the null-space push), the tip's first (the
+/// links pinned by the base gripper's pose, its link 7 and hand, can only be avoided by the
+/// tip's arm). A turn is kept when the arm stays reachable (every pose, the scene and the rod
+/// clear) and the least margin grew; the turns stop when the gap is clear. What is left short is
+/// reported by report_arms (status collision).
+void keep_arms_apart(const PlanResult& plan, const JointTrajectoryOptions& rods, Arms& arms) {
+  const double clearance = arms.tip->start.joint_options.clearance->scene().clearance;
+  ArmArmGap least = arm_arm_gap(*arms.tip, *arms.base, clearance);
+  for (int round = 0; round < kArmArmRounds && least.sample >= 0 && !least.gap.clear(); ++round) {
+    const bool tip_turn = round % 2 == 0;
+    ArmState& moved = tip_turn ? *arms.tip : *arms.base;
+    const ArmState& still = tip_turn ? *arms.base : *arms.tip;
+    ArmState trial = moved;
+    if (check_reach(plan, rods, capsules_along(still), trial)) continue;
+    const ArmArmGap gap = tip_turn ? arm_arm_gap(trial, *arms.base, clearance)
+                                   : arm_arm_gap(*arms.tip, trial, clearance);
+    if (!(gap.gap.margin > least.gap.margin)) continue;
+    moved = std::move(trial);
+    least = gap;
+  }
+}
+
 /// Checks the arms along `plan`: the tip's arm first, then the base's (whose IK keeps its links
-/// off the tip arm's at each sample), and with both reachable their joint trajectories re-timed
-/// on one clock. The first pose an arm cannot reach (its status set), or nothing.
+/// off the tip arm's at each sample), the two kept apart (keep_arms_apart), and with both
+/// reachable their joint trajectories re-timed on one clock. The first pose an arm cannot reach
+/// (its status set), or nothing.
 std::optional<Unreachable> check_plan(const PlanResult& plan, Arms& arms) {
   JointTrajectoryOptions rods;
   set_rods(plan, rods);
@@ -500,6 +538,8 @@ std::optional<Unreachable> check_plan(const PlanResult& plan, Arms& arms) {
       return u;
   }
   if (arms.tip && arms.base && arms.tip->result.reachable() && arms.base->result.reachable()) {
+    if (arms.tip->start.joint_options.clearance && arms.base->start.joint_options.clearance)
+      keep_arms_apart(plan, rods, arms);
     std::vector<double> t;
     for (const TimedPose& sample : plan.end_effector_path) t.push_back(sample.t);
     retime_together(arms.tip->side.model(), arms.tip->result.joints, arms.base->side.model(),
@@ -534,6 +574,10 @@ void report_arms(const PlanProblem& problem, Arms& arms, PlanResult& result) {
       failure << "the two arms come too near each other at step " << rods.sample_waypoint[i]
               << " (sample " << i << ", t = " << arms.tip->result.joints.t[i]
               << " s): " << describe_arm_arm(*arms.tip, *arms.base, least.gap);
+      if (arms.tip->start.joint_options.clearance->fixed_to_hand(least.gap.capsule) &&
+          arms.base->start.joint_options.clearance->fixed_to_hand(least.gap.other_capsule))
+        failure << "; both links are fixed to their hands, whose poses the rod's plan sets: no "
+                   "joint positions keep them apart";
       for (ArmState* state : {&*arms.tip, &*arms.base}) {
         state->result.status = ArmPlanStatus::Collision;
         state->result.message = failure.str();

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -315,3 +316,47 @@ TEST(ArmClearance, IkKeepsTheLinksOffTheOtherArm) {
 }
 
 }  // namespace
+
+TEST(ArmClearance, TwoArmsIkKeepsTheirLinksTheClearanceApartAtAKnownNearCollision) {
+  // examples/plan_two_pandas.yaml's cell: the tip's arm at x = 0.4 facing -x, the base's at
+  // x = -0.4 facing +x. The joints are the last sample of the two-arm sweep's case 583
+  // (tests/trajectory/test_random_two_arm.cpp) as main planned it before the tip's arm kept off
+  // the base arm: the tip arm's forearm (panda_link5) 0.05 mm into the base arm's hand.
+  const ArmModel arm = samples::panda();
+  const Pose world_T_tip{Eigen::Vector3d(0.4, 0.0, 0.0),
+                         Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ()).matrix()};
+  const Pose world_T_base{Eigen::Vector3d(-0.4, 0.0, 0.0), Eigen::Matrix3d::Identity()};
+  Eigen::VectorXd q_tip(7), q_base(7);
+  q_tip << 0.10982531147011051, 0.92459421564264233, -0.64272418649757546, -2.1118524660502889,
+      1.438645152876934, 0.62441093269878023, 1.2864523885445844;
+  q_base << -0.33921267565997792, -1.0205783443352137, 1.2600011279526664, -2.8323177370036809,
+      -0.53127562069349532, 1.7130854110313223, 2.0119355304069679;
+  Scene scene;
+  scene.clearance = 0.005;  // the example's
+  const LinkGap before = arm_arm_gap(arm, world_T_tip, q_tip, arm, world_T_base, q_base, 0.005);
+  ASSERT_LT(before.gap, 0.0);
+  ASSERT_EQ(arm.link_capsules()[static_cast<std::size_t>(before.capsule)].link, "panda_link5");
+  const IkOptions options;
+  const auto keep_off = [&](const Pose& world_T_arm, const Eigen::VectorXd& q,
+                            const Pose& world_T_other, const Eigen::VectorXd& q_other) {
+    const ArmClearance clearance(arm, world_T_arm, scene, q);
+    const std::vector<Obstacle> others = world_capsules(arm, world_T_other, q_other);
+    IkClearance push;
+    push.clearance = &clearance;
+    push.others = &others;
+    const Pose target = arm.forward_kinematics(q);  // the hand stays where it is
+    const IkResult ik = solve_ik(arm, target, q, options, push);
+    EXPECT_TRUE(ik.converged()) << ik.message;
+    const Pose reached = arm.forward_kinematics(ik.q);
+    EXPECT_LE((reached.position - target.position).norm(), options.position_tolerance);
+    EXPECT_LE(Eigen::AngleAxisd(reached.rotation.transpose() * target.rotation).angle(),
+              options.rotation_tolerance);
+    return ik.q;
+  };
+  // The arms in turn, each keeping off the other where it stands (as the planner does).
+  const Eigen::VectorXd tip_apart = keep_off(world_T_tip, q_tip, world_T_base, q_base);
+  const Eigen::VectorXd base_apart = keep_off(world_T_base, q_base, world_T_tip, tip_apart);
+  const LinkGap after =
+      arm_arm_gap(arm, world_T_tip, tip_apart, arm, world_T_base, base_apart, 0.005);
+  EXPECT_GE(after.gap, scene.clearance) << "pair " << after.capsule << "/" << after.other_capsule;
+}

@@ -365,3 +365,75 @@ TEST(RandomTwoArmTargets, BothArmsHaveIkAtEverySampleOrAreReported) {
 
 }  // namespace
 }  // namespace rodshape
+
+namespace rodshape {
+namespace {
+
+/// The least gap between the two arms' links over the plan's joint samples.
+LinkGap least_arm_arm_gap(const PlanProblem& problem, const PlanResult& plan) {
+  LinkGap least;
+  const std::vector<Eigen::VectorXd>& q_tip = plan.arm->joints.q;
+  const std::vector<Eigen::VectorXd>& q_base = plan.base_arm->joints.q;
+  for (std::size_t i = 0; i < q_tip.size() && i < q_base.size(); ++i) {
+    const LinkGap gap = arm_arm_gap(
+        problem.arm->model, problem.arm->placement.world_T_base, q_tip[i], problem.base_arm->model,
+        problem.base_arm->placement.world_T_base, q_base[i], problem.scene.clearance);
+    if (gap.margin < least.margin) least = gap;
+  }
+  return least;
+}
+
+/// |flange pose of q - the flange pose that puts the end effector at world_T_ee|, m.
+double flange_off(const PlanArm& arm, const Eigen::VectorXd& q, const Pose& world_T_ee) {
+  return (arm.model.forward_kinematics(q).position -
+          flange_target(arm.placement, world_T_ee).position)
+      .norm();
+}
+
+// Issue 21 item 4 on the full sweep's arm–arm collisions (scripts/two_arm_sweep.sh on 34b8a9d:
+// 23 plans ended with status collision at step 7). Case 583 ended with the tip arm's forearm
+// (panda_link5) 0.05 mm into the base arm's hand: the tip arm's IK, kept off the base arm's
+// links at each sample, swings its elbow away and the plan completes with every pair of links
+// the clearance apart and both hands on their poses.
+TEST(TwoArmSweepCollisions, TheTipArmsForearmKeepsOffTheBaseArmsHand) {
+  const TwoArmCase c = draw_case(583);
+  ASSERT_TRUE(c.drawn);
+  const PlanProblem& problem = c.task.problem;
+  const PlanResult plan = rodshape::plan(problem, c.task.options);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.message;
+  ASSERT_TRUE(plan.arm && plan.arm->reachable()) << arm_brief(plan.arm);
+  ASSERT_TRUE(plan.base_arm && plan.base_arm->reachable()) << arm_brief(plan.base_arm);
+  const LinkGap least = least_arm_arm_gap(problem, plan);
+  EXPECT_GE(least.gap, problem.scene.clearance);
+  // IK's tolerance is 1e-10 m; the flange is where the gripper's pose puts it.
+  EXPECT_LE(flange_off(*problem.arm, plan.arm->joints.q.back(), plan.steps.back().end_effector),
+            1e-9);
+  EXPECT_LE(flange_off(*problem.base_arm, plan.base_arm->joints.q.back(),
+                       plan.steps.back().base_end_effector),
+            1e-9);
+}
+
+// Case 70 ends with the two arms' link 7 4.3 mm apart (the clearance is 5 mm). Link 7 carries
+// the flange: where each hand is on its pose (the rod's last step sets both), neither arm's
+// joints move it, so no IK keeps the clearance there: the plan says so (status collision,
+// never hidden), with IK at every sample of both arms.
+TEST(TwoArmSweepCollisions, LinksFixedToBothHandsAreReportedWithTheReason) {
+  const TwoArmCase c = draw_case(70);
+  ASSERT_TRUE(c.drawn);
+  const PlanResult plan = rodshape::plan(c.task.problem, c.task.options);
+  EXPECT_EQ(plan.status, PlanStatus::Collision);
+  ASSERT_TRUE(plan.arm && plan.base_arm);
+  EXPECT_EQ(plan.arm->status, ArmPlanStatus::Collision);
+  EXPECT_EQ(plan.base_arm->status, ArmPlanStatus::Collision);
+  EXPECT_TRUE(plan.arm->joints.complete() && plan.base_arm->joints.complete());
+  EXPECT_NE(plan.message.find("link panda_link7 of the arm and link panda_link7 of the base arm"),
+            std::string::npos)
+      << plan.message;
+  EXPECT_NE(plan.message.find("both links are fixed to their hands"), std::string::npos)
+      << plan.message;
+  const LinkGap least = least_arm_arm_gap(c.task.problem, plan);
+  EXPECT_LT(least.gap, c.task.problem.scene.clearance);
+}
+
+}  // namespace
+}  // namespace rodshape

@@ -71,6 +71,9 @@ class ArmClearance {
   const Scene& scene() const { return scene_; }
   /// Whether capsule c is checked against the rod (not part of the hand holding it).
   bool checks_rod(int c) const { return checks_rod_[static_cast<std::size_t>(c)]; }
+  /// Whether capsule c is fixed to the tip link (every joint moves it: the last joint's link, the
+  /// flange, the hand): where the hand is on its pose, no joint positions move it.
+  bool fixed_to_hand(int c) const { return !checks_rod(c); }
   /// The gap capsule c must keep from obstacle j.
   double required_gap(int c, int j) const;
 
