@@ -191,6 +191,35 @@ void BM_ForwardWithDerivatives(benchmark::State& state) {
   state.SetComplexityN(state.range(0));
 }
 
+/// BM_Forward's integration storing only the base and the tip, without the energy (Output::Tip):
+/// what a shooting solver's residual needs.
+void BM_ForwardTip(benchmark::State& state) {
+  const ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
+  RodConfiguration out;
+  const BaseWrench w = generic_wrench();
+  integrate(rod, w, out, Derivatives::None, Output::Tip);
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    integrate(rod, w, out, Derivatives::None, Output::Tip);
+    benchmark::DoNotOptimize(out.p.back().data());
+  }
+  report_kernel_ratio(state, static_cast<int>(state.range(0)), start);
+}
+
+/// BM_ForwardWithDerivatives with Output::Tip: a shooting solver's Jacobian.
+void BM_ForwardWithDerivativesTip(benchmark::State& state) {
+  const ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
+  RodConfiguration out;
+  const BaseWrench w = generic_wrench();
+  integrate(rod, w, out, Derivatives::Tip, Output::Tip);
+  const double start = thread_seconds();
+  for (auto _ : state) {
+    integrate(rod, w, out, Derivatives::Tip, Output::Tip);
+    benchmark::DoNotOptimize(out.tip_dp_dw.data());
+  }
+  report_kernel_ratio(state, static_cast<int>(state.range(0)), start);
+}
+
 void BM_ForwardWithAllNodeDerivatives(benchmark::State& state) {
   const ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
   RodConfiguration out;
@@ -271,6 +300,8 @@ void BM_SolveClampedClampedWarm(benchmark::State& state) {
 BENCHMARK(BM_PlainRk4Kernel)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Forward)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ForwardWithDerivatives)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ForwardTip)->Arg(100)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ForwardWithDerivativesTip)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ForwardWithAllNodeDerivatives)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BasePoseDerivatives)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolveClampedClampedCold)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
