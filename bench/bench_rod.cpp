@@ -130,10 +130,9 @@ double thread_seconds() {
 /// The plain kernel's CPU time per run at `intervals`, s: the mean over at least `seconds` of CPU
 /// time, measured where it is asked for (so that a case's ratio compares with this moment's
 /// machine). The caller passes its own loop's CPU time, so that both sides of the ratio average
-/// over as long a stretch as the CPU column does: one 10 ms sample (1000 runs, as before) read up
-/// to 1.85 times the kernel's median when other work shared the core (its sibling thread busy for a
-/// few ms), so x_kernel strayed from the ratio of the CPU columns (0.68 printed where the medians
-/// gave 1.25).
+/// over as long a stretch as the CPU column does: one 10 ms sample (1000 runs, as before) read 1.0
+/// to 1.9 times the kernel's median right after a case's loop (0.67 printed where the medians gave
+/// 1.26; BENCHMARKS.md).
 double kernel_seconds(int intervals, double seconds) {
   PlainRk4Kernel kernel(rubber_band(intervals));
   const BaseWrench w = generic_wrench();
