@@ -40,7 +40,8 @@ struct CosseratOde {
   Eigen::Vector3d C_tra;  // K_tra⁻¹ (diagonal)
   Eigen::Vector3d C_rot;  // K_rot⁻¹ (diagonal)
   Eigen::Vector3d v_rest, u_rest, f, l;
-  bool extensible;  // Cosserat: shear and extension; Kirchhoff: v = ṽ
+  Eigen::Vector3d half_C_rot, half_u_rest;  // ½K_rot⁻¹, ½ũ (q' = ½ q ⊗ (0, u))
+  bool extensible;                          // Cosserat: shear and extension; Kirchhoff: v = ṽ
 
   explicit CosseratOde(const ClampedRod& rod)
       : C_tra(rod.properties.K_tra.cwiseInverse()),
@@ -49,6 +50,8 @@ struct CosseratOde {
         u_rest(rod.properties.u_rest),
         f(rod.load.force),
         l(rod.load.moment),
+        half_C_rot(0.5 * C_rot),
+        half_u_rest(0.5 * u_rest),
         extensible(rod.properties.model == ConstitutiveModel::Cosserat) {}
 };
 
@@ -72,7 +75,9 @@ inline Eigen::Matrix3d rotation_of(const Eigen::Vector4d& q, double q_scale) {
 }
 
 /// y' = F(y); fills `point` with R, n̄, m̄, v, u, p'. Written in scalars: on 3-vectors this is about
-/// half the instructions of Eigen's packet code.
+/// half the instructions of Eigen's packet code. Without Energy, e' = 0 (the caller does not want
+/// E).
+template <bool Energy = true>
 RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
                                             const OdeState& y,
                                             OdeState& dy,
@@ -121,10 +126,15 @@ RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
   const double pz = r20 * v0 + r21 * v1 + r22 * v2;
   point.p_prime[0] = px, point.p_prime[1] = py, point.p_prime[2] = pz;
   // q' = ½ q ⊗ (0, u) = ½ (-x·u, w u + x × u)
-  dy[0] = -0.5 * (x * u0 + yq * u1 + z * u2);
-  dy[1] = 0.5 * (w * u0 + yq * u2 - z * u1);
-  dy[2] = 0.5 * (w * u1 + z * u0 - x * u2);
-  dy[3] = 0.5 * (w * u2 + x * u1 - yq * u0);
+  // with ½u = ½K_rot⁻¹ m̄ + ½ũ: bitwise ½ times u (powers of two scale exactly), one multiply
+  // fewer on the chain from q to the next stage's q
+  const double hu0 = ode.half_C_rot[0] * mb0 + ode.half_u_rest[0];
+  const double hu1 = ode.half_C_rot[1] * mb1 + ode.half_u_rest[1];
+  const double hu2 = ode.half_C_rot[2] * mb2 + ode.half_u_rest[2];
+  dy[0] = -(x * hu0 + yq * hu1 + z * hu2);
+  dy[1] = w * hu0 + yq * hu2 - z * hu1;
+  dy[2] = w * hu1 + z * hu0 - x * hu2;
+  dy[3] = w * hu2 + x * hu1 - yq * hu0;
   dy[Slot::p] = px;
   dy[Slot::p + 1] = py;
   dy[Slot::p + 2] = pz;
@@ -136,8 +146,8 @@ RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
   dy[Slot::m] = -(py * nz - pz * ny) - ode.l[0];
   dy[Slot::m + 1] = -(pz * nx - px * nz) - ode.l[1];
   dy[Slot::m + 2] = -(px * ny - py * nx) - ode.l[2];
-  // e' = ½ ΔvᵀK_traΔv + ½ ΔuᵀK_rotΔu
-  dy[Slot::e] = e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2);
+  // e' = ½ ΔvᵀK_traΔv + ½ ΔuᵀK_rotΔu (not integrated without Energy)
+  dy[Slot::e] = Energy ? e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2) : 0.0;
 }
 
 /// Four and two doubles side by side (GCC and Clang vector extensions; a scalar operand is
@@ -184,8 +194,8 @@ inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
 /// Y. Load directions (LoadForcing = true: j < 3 is δf = e_j, j ≥ 3 is δl = e_{j-3}, started from
 /// a zero tangent): δn is read from Y and the load's own terms are added, δn' = -δf and
 /// δm' = ... - δl (δe' has none). The base-wrench path's arithmetic is unchanged by the flag.
-/// Returns θ (see above).
-template <bool LoadForcing = false>
+/// Without Energy, δe' = 0. Returns θ (see above).
+template <bool LoadForcing = false, bool Energy = true>
 RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
                                                          const OdeState& y,
                                                          const OdePoint& point,
@@ -302,12 +312,14 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
       store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2);
     }
     // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
-    store(out + 6 * Slot::e, j,
-          ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
+    if constexpr (Energy)
+      store(out + 6 * Slot::e, j,
+            ev0 * dnb0 + ev1 * dnb1 + ev2 * dnb2 + eu0 * dmb0 + eu1 * dmb1 + eu2 * dmb2);
   };
   directions(std::type_identity<Lanes4>{}, 0);  // directions 0–3
   directions(std::type_identity<Lanes2>{}, 4);  // directions 4–5
   dY.middleCols<3>(Slot::n).setZero();          // f is constant
+  if constexpr (!Energy) dY.col(Slot::e).setZero();
   if constexpr (LoadForcing) {
     for (int k = 0; k < 3; ++k) dY(k, Slot::n + k) = -1.0;  // δn' = -δf
   }

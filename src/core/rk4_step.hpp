@@ -36,8 +36,8 @@ RODSHAPE_ALWAYS_INLINE inline void tangent_update(double sixth,
 /// Advances `state` by h. `start` receives the first stage's evaluation, i.e. R, v, u, ... at the
 /// node the step starts from, and `start_theta` the body rotation tangent there (with tangents).
 /// LoadForcing: the tangent's six directions are the distributed load's (f, l) instead of the base
-/// wrench's (evaluate_tangent).
-template <bool WithTangent, bool LoadForcing = false>
+/// wrench's (evaluate_tangent). Without Energy, e and its tangent stay where they are.
+template <bool WithTangent, bool LoadForcing = false, bool Energy = true>
 RODSHAPE_ALWAYS_INLINE inline void rk4_step(
     const CosseratOde& ode, double h, NodeState& state, OdePoint& start, Matrix63d& start_theta) {
   OdeState k1, k2, k3, k4, y_stage;
@@ -45,29 +45,29 @@ RODSHAPE_ALWAYS_INLINE inline void rk4_step(
   OdePoint point;
   const double half = 0.5 * h;
 
-  evaluate(ode, state.y, k1, start);
+  evaluate<Energy>(ode, state.y, k1, start);
   if constexpr (WithTangent)
-    start_theta = evaluate_tangent<LoadForcing>(ode, state.y, start, state.Y, K1);
+    start_theta = evaluate_tangent<LoadForcing, Energy>(ode, state.y, start, state.Y, K1);
 
   y_stage = state.y + half * k1;
-  evaluate(ode, y_stage, k2, point);
+  evaluate<Energy>(ode, y_stage, k2, point);
   if constexpr (WithTangent) {
     tangent_stage(state.Y, half, K1, Y_stage);
-    evaluate_tangent<LoadForcing>(ode, y_stage, point, Y_stage, K2);
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K2);
   }
 
   y_stage = state.y + half * k2;
-  evaluate(ode, y_stage, k3, point);
+  evaluate<Energy>(ode, y_stage, k3, point);
   if constexpr (WithTangent) {
     tangent_stage(state.Y, half, K2, Y_stage);
-    evaluate_tangent<LoadForcing>(ode, y_stage, point, Y_stage, K3);
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K3);
   }
 
   y_stage = state.y + h * k3;
-  evaluate(ode, y_stage, k4, point);
+  evaluate<Energy>(ode, y_stage, k4, point);
   if constexpr (WithTangent) {
     tangent_stage(state.Y, h, K3, Y_stage);
-    evaluate_tangent<LoadForcing>(ode, y_stage, point, Y_stage, K4);
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K4);
   }
 
   const double sixth = h / 6.0;

@@ -5,7 +5,7 @@
 namespace rodshape {
 
 bool RodConfiguration::finite() const {
-  if (!std::isfinite(energy)) return false;
+  if (output == Output::Full && !std::isfinite(energy)) return false;
   for (int i = 0; i < nodes(); ++i) {
     if (!std::isfinite(s[i]) || !p[i].allFinite() || !R[i].allFinite() || !n[i].allFinite() ||
         !m[i].allFinite() || !v[i].allFinite() || !u[i].allFinite())
@@ -14,7 +14,7 @@ bool RodConfiguration::finite() const {
   return true;
 }
 
-void RodConfiguration::resize(int nodes, Derivatives with) {
+void RodConfiguration::resize(int nodes, Derivatives with, Output stored) {
   s.resize(nodes);
   p.resize(nodes);
   R.resize(nodes);
@@ -28,6 +28,7 @@ void RodConfiguration::resize(int nodes, Derivatives with) {
   dn_dw.resize(derivative_nodes);
   dm_dw.resize(derivative_nodes);
   derivatives = with;
+  output = stored;
 }
 
 }  // namespace rodshape

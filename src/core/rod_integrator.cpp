@@ -1,5 +1,7 @@
 #include "rodshape/core/rod_integrator.hpp"
 
+#include <limits>
+
 #include "load_tangent.hpp"
 #include "rk4_step.hpp"
 
@@ -35,38 +37,43 @@ void store_node_tangent(const NodeState& state, int i, RodConfiguration& out) {
 }
 
 /// LoadForcing: the tangent is with respect to the distributed load (f, l) (load_tangent.hpp).
-template <bool WithTangent, bool LoadForcing = false>
+/// TipOnly (Output::Tip): node 0 and the tip only, at indices 0 and 1, and no energy.
+template <bool WithTangent, bool LoadForcing = false, bool TipOnly = false>
 RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
                                                    NodeState& state,
                                                    RodConfiguration& out) {
+  constexpr bool energy = !TipOnly;
   const detail::CosseratOde ode(rod);
   const int N = rod.intervals;
   const double h = rod.step();
   // One step per interval unless the rod asks for sub-steps (same h, bitwise, when substeps = 1).
   const double h_step = rod.properties.length / (static_cast<double>(N) * rod.substeps);
-  const bool all_nodes = out.derivatives == Derivatives::AllNodes;
+  const bool all_nodes = !TipOnly && out.derivatives == Derivatives::AllNodes;
   OdePoint point, inner_point;
   Matrix63d theta, inner_theta;
   for (int i = 0; i < N; ++i) {
-    store_node_state(state, i, i * h, out);
+    const bool stored = !TipOnly || i == 0;
+    if (stored) store_node_state(state, i, i * h, out);
     if (WithTangent && all_nodes) store_node_tangent(state, i, out);
     // One call site, so that the step stays inlined; the first sub-step's start is node i.
     detail::OdePoint* start = &point;
     Matrix63d* start_theta = &theta;
     for (int k = 0; k < rod.substeps; ++k) {
-      detail::rk4_step<WithTangent, LoadForcing>(ode, h_step, state, *start, *start_theta);
+      detail::rk4_step<WithTangent, LoadForcing, energy>(ode, h_step, state, *start, *start_theta);
       start = &inner_point;
       start_theta = &inner_theta;
     }
-    store_node_point(point, i, out);  // `point` and `theta` are at node i
+    if (stored) store_node_point(point, i, out);  // `point` and `theta` are at node i
     if (WithTangent && all_nodes) out.dtheta_dw[i] = theta.transpose();
   }
   // The tip: one more evaluation for R, v, u at s = L (no step).
+  const int tip = TipOnly ? 1 : N;
   detail::OdeState unused;
-  detail::evaluate(ode, state.y, unused, point);
-  store_node_state(state, N, rod.properties.length, out);
-  store_node_point(point, N, out);
-  out.energy = state.y[Slot::e];
+  detail::evaluate<energy>(ode, state.y, unused, point);
+  store_node_state(state, tip, rod.properties.length, out);
+  store_node_point(point, tip, out);
+  constexpr double not_integrated = std::numeric_limits<double>::quiet_NaN();
+  out.energy = energy ? state.y[Slot::e] : not_integrated;
   if constexpr (WithTangent) {
     theta = detail::body_rotation_tangent(state.y.segment<4>(Slot::q), point.q_scale, state.Y);
     if (all_nodes) {
@@ -77,7 +84,10 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
     out.tip_dtheta_dw = theta.transpose();
     out.tip_dn_dw = state.Y.middleCols<3>(Slot::n).transpose();
     out.tip_dm_dw = state.Y.middleCols<3>(Slot::m).transpose();
-    out.denergy_dw = state.Y.col(Slot::e).transpose();
+    if constexpr (energy)
+      out.denergy_dw = state.Y.col(Slot::e).transpose();
+    else
+      out.denergy_dw.setConstant(not_integrated);
   }
 }
 
@@ -86,7 +96,9 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 // on, so the portable build puts four of the six tangent directions in one 256-bit register where
 // AVX2 exists (the path without the tangent gains a few per cent from the wider scalar code's
 // vectorisation). The clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise
-// the baseline's (tests/core/test_integrator_dispatch.cpp). A build for one CPU (RODSHAPE_NATIVE)
+// the baseline's (tests/core/test_integrator_dispatch.cpp). An x86-64-v3 clone (with FMA) is on
+// branch integ-fma: about 10 % faster, results within rounding, but one IPOPT test's path flips
+// (BENCHMARKS.md, 2026-11-26 "The integrator at the floor"). A build for one CPU (RODSHAPE_NATIVE)
 // has no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before
 // TSan's run time is set up and the program crashes at load (segfault, seen with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
@@ -106,6 +118,18 @@ RODSHAPE_DISPATCHED void integrate_without_tangent(const ClampedRod& rod,
                                                    NodeState& state,
                                                    RodConfiguration& out) {
   integrate_nodes<false>(rod, state, out);
+}
+
+RODSHAPE_DISPATCHED void integrate_tip_with_tangent(const ClampedRod& rod,
+                                                    NodeState& state,
+                                                    RodConfiguration& out) {
+  integrate_nodes<true, false, true>(rod, state, out);
+}
+
+RODSHAPE_DISPATCHED void integrate_tip_without_tangent(const ClampedRod& rod,
+                                                       NodeState& state,
+                                                       RodConfiguration& out) {
+  integrate_nodes<false, false, true>(rod, state, out);
 }
 
 RODSHAPE_DISPATCHED void integrate_with_load_tangent(const ClampedRod& rod,
@@ -132,21 +156,26 @@ void integrate_load_tangent(const ClampedRod& rod,
 void integrate(const ClampedRod& rod,
                const BaseWrench& base_wrench,
                RodConfiguration& out,
-               Derivatives derivatives) {
-  out.resize(rod.nodes(), derivatives);
+               Derivatives derivatives,
+               Output stored) {
+  const bool tip_only = stored == Output::Tip && derivatives != Derivatives::AllNodes;
+  out.resize(tip_only ? 2 : rod.nodes(), derivatives, tip_only ? Output::Tip : Output::Full);
   NodeState state = detail::initial_node_state(rod, base_wrench.force, base_wrench.moment);
-  if (derivatives == Derivatives::None) {
-    integrate_without_tangent(rod, state, out);
+  const bool tangent = derivatives != Derivatives::None;
+  if (tip_only) {
+    tangent ? integrate_tip_with_tangent(rod, state, out)
+            : integrate_tip_without_tangent(rod, state, out);
   } else {
-    integrate_with_tangent(rod, state, out);
+    tangent ? integrate_with_tangent(rod, state, out) : integrate_without_tangent(rod, state, out);
   }
 }
 
 RodConfiguration integrate(const ClampedRod& rod,
                            const BaseWrench& base_wrench,
-                           Derivatives derivatives) {
+                           Derivatives derivatives,
+                           Output stored) {
   RodConfiguration out;
-  integrate(rod, base_wrench, out, derivatives);
+  integrate(rod, base_wrench, out, derivatives, stored);
   return out;
 }
 

@@ -86,6 +86,24 @@ TEST(NoAlloc, SecondIntegrationIntoASizedConfigurationAllocatesNothing) {
   }
 }
 
+TEST(NoAlloc, SecondTipOnlyIntegrationIntoASizedConfigurationAllocatesNothing) {
+  const ClampedRod rod = make_rod();
+  for (Derivatives level : {Derivatives::Tip, Derivatives::None}) {
+    RodConfiguration c;
+    integrate(rod, {{0.3, -0.2, 0.1}, {0.05, 0.02, -0.01}}, c, level, Output::Tip);  // sizes c
+    const DataPointers before(c);
+    const BaseWrench other{{-0.1, 0.4, 0.2}, {0.01, -0.03, 0.02}};
+    const auto [news, mallocs] =
+        count_allocations([&] { integrate(rod, other, c, level, Output::Tip); });
+    EXPECT_EQ(news, 0) << "operator new calls, level " << static_cast<int>(level);
+    EXPECT_EQ(mallocs, 0) << "malloc calls, level " << static_cast<int>(level);
+    const DataPointers after(c);
+    EXPECT_EQ(before.pointers, after.pointers) << "a vector of the configuration was reallocated";
+    EXPECT_EQ(c.nodes(), 2);
+    EXPECT_EQ(c.n.front(), other.force);  // the call did run
+  }
+}
+
 TEST(NoAlloc, SecondBasePoseDerivativesIntoASizedConfigurationAllocatesNothing) {
   ClampedRod rod = make_rod();
   // With the load pass (gravity and a moment load) and without it (no load).

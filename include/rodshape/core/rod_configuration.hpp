@@ -17,6 +17,15 @@ enum class Derivatives {
   AllNodes,  // also dp_i/dw, dθ_i/dw, dn_i/dw, dm_i/dw at every node (stability, shape cost)
 };
 
+/// Which values integrate() stores. The Runge–Kutta steps are the same, so the tip, the tip
+/// wrench and the tip derivatives are bitwise those of Output::Full; a caller that reads only the
+/// tip (a shooting solver's inner iterations) saves the per-node stores and the energy.
+enum class Output {
+  Full,  // s, p, R, n, m, v, u at every node, and the energy (with its derivative)
+  Tip,   // nodes() == 2: the base (s = 0) and the tip (s = L); energy and denergy_dw NaN (not
+         // integrated). Derivatives::AllNodes ignores it (every node is stored).
+};
+
 struct RodConfiguration {
   // Node values, world frame except u and v (body frame, as in the paper).
   std::vector<double> s;
@@ -26,7 +35,8 @@ struct RodConfiguration {
   std::vector<Eigen::Vector3d> m;  // internal moment
   std::vector<Eigen::Vector3d> v;  // v = K_tra⁻¹ Rᵀ n + ṽ
   std::vector<Eigen::Vector3d> u;  // u = K_rot⁻¹ Rᵀ m + ũ
-  double energy = 0.0;             // E = ∫ ½ΔvᵀK_traΔv + ½ΔuᵀK_rotΔu ds, J
+  double energy = 0.0;  // E = ∫ ½ΔvᵀK_traΔv + ½ΔuᵀK_rotΔu ds, J (NaN with Output::Tip)
+  Output output = Output::Full;  // what was stored (Output::Tip: two nodes, no energy)
 
   // Derivatives with respect to w (6 columns: n(0) then m(0)). A rotation's derivative is the
   // body-frame angle: δR = R θ̂ with θ = dθ_dw δw.
@@ -50,12 +60,13 @@ struct RodConfiguration {
   /// n(0), m(0).
   BaseWrench base_wrench() const { return {n.front(), m.front()}; }
 
-  /// Every node value (s, p, R, n, m, v, u) and the energy are finite; the derivatives are not
-  /// looked at. One pass over the nodes: for the end of a solve, not its inner loop.
+  /// Every node value (s, p, R, n, m, v, u) and the energy (unless Output::Tip) are finite; the
+  /// derivatives are not looked at. One pass over the nodes: for the end of a solve, not its inner
+  /// loop.
   bool finite() const;
 
   /// Sizes every array for `nodes` nodes; allocates only when the size changes.
-  void resize(int nodes, Derivatives derivatives);
+  void resize(int nodes, Derivatives derivatives, Output stored = Output::Full);
 };
 
 }  // namespace rodshape

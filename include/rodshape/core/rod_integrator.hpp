@@ -17,14 +17,19 @@ namespace rodshape {
 
 /// Integrates into `out`, which is resized once and then reused without allocating.
 /// The rod is not validated here (hot path): validate it once with ClampedRod::validate().
+/// `stored` = Output::Tip keeps only the base and the tip and skips the energy
+/// (rod_configuration.hpp): e.g. integrate(rod, w, out, Derivatives::Tip, Output::Tip) for a
+/// solver's Jacobian.
 void integrate(const ClampedRod& rod,
                const BaseWrench& base_wrench,
                RodConfiguration& out,
-               Derivatives derivatives = Derivatives::None);
+               Derivatives derivatives = Derivatives::None,
+               Output stored = Output::Full);
 
 /// Convenience overload that returns a fresh configuration.
 RodConfiguration integrate(const ClampedRod& rod,
                            const BaseWrench& base_wrench,
-                           Derivatives derivatives = Derivatives::None);
+                           Derivatives derivatives = Derivatives::None,
+                           Output stored = Output::Full);
 
 }  // namespace rodshape
