@@ -256,7 +256,8 @@ TEST_F(CliPlanRobot, AnUnknownKeyAndAMissingUrdfAreBadInput) {
   EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
   EXPECT_NE(outcome.err.find("robot.links.influence = -0.5 must be >= 0"), std::string::npos)
       << outcome.err;
-  EXPECT_NE(outcome.err.find(":" + std::to_string(line_of(links, "  links:")) + ":"),
+  EXPECT_NE(outcome.err.find(
+                std::string(":").append(std::to_string(line_of(links, "  links:"))).append(":")),
             std::string::npos)
       << outcome.err;
   outcome = plan(write_task("links2.yaml", example_text() + "  links: {clearence: false}\n"),

@@ -114,7 +114,7 @@ Outcome run_case(int k) {
         blocks_target |= obstacle.distance(p).distance < scene.rod_radius + keep;
       if (blocks_target) continue;
     }
-    obstacle.name += " " + std::to_string(scene.obstacles.size());
+    obstacle.name.append(" ").append(std::to_string(scene.obstacles.size()));
     scene.obstacles.push_back(obstacle);
   }
   Outcome outcome;
