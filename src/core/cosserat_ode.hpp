@@ -187,6 +187,78 @@ inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
   return theta;
 }
 
+/// θ = (2/|q|²)(w δx - δw x - x × δx) for the lanes' directions (body_rotation_tangent's formula).
+template <class V>
+RODSHAPE_ALWAYS_INLINE inline void rotation_variation(
+    double s, const double* q, const V& qw, const V& q0, const V& q1, const V& q2, V* t) {
+  const double w = q[0], x0 = q[1], x1 = q[2], x2 = q[3];
+  t[0] = s * (w * q0 - x0 * qw - x1 * q2 + x2 * q1);
+  t[1] = s * (w * q1 - x1 * qw - x2 * q0 + x0 * q2);
+  t[2] = s * (w * q2 - x2 * qw - x0 * q1 + x1 * q0);
+}
+
+/// δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu)), stored into the lanes' rows of the q columns of `out`.
+template <class V>
+RODSHAPE_ALWAYS_INLINE inline void store_quaternion_rate_variation(double* out,
+                                                                   int j,
+                                                                   const double* q,
+                                                                   const Eigen::Vector3d& u,
+                                                                   const V& qw,
+                                                                   const V& q0,
+                                                                   const V& q1,
+                                                                   const V& q2,
+                                                                   const V* du) {
+  const double w = q[0], x0 = q[1], x1 = q[2], x2 = q[3];
+  const double u0 = u[0], u1 = u[1], u2 = u[2];
+  store(out + 6 * Slot::q, j,
+        -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du[0] + x1 * du[1] + x2 * du[2]));
+  store(out + 6 * (Slot::q + 1), j,
+        0.5 * (u0 * qw + u2 * q1 - u1 * q2 + w * du[0] + x1 * du[2] - x2 * du[1]));
+  store(out + 6 * (Slot::q + 2), j,
+        0.5 * (u1 * qw + u0 * q2 - u2 * q0 + w * du[1] + x2 * du[0] - x0 * du[2]));
+  store(out + 6 * (Slot::q + 3), j,
+        0.5 * (u2 * qw + u1 * q0 - u0 * q1 + w * du[2] + x0 * du[1] - x1 * du[0]));
+}
+
+/// The load directions' δn terms, read from Y: Rᵀδn and p' × δn.
+template <class V>
+RODSHAPE_ALWAYS_INLINE inline void load_direction_force_terms(
+    const OdeTangent& Y, int j, const OdePoint& point, V* rt_dn, V* pp_dn) {
+  const Eigen::Matrix3d& R = point.R;
+  const double pp0 = point.p_prime[0], pp1 = point.p_prime[1], pp2 = point.p_prime[2];
+  V dn0, dn1, dn2;
+  load(dn0, Y.data() + 6 * Slot::n, j);
+  load(dn1, Y.data() + 6 * (Slot::n + 1), j);
+  load(dn2, Y.data() + 6 * (Slot::n + 2), j);
+  rt_dn[0] = R(0, 0) * dn0 + R(1, 0) * dn1 + R(2, 0) * dn2;
+  rt_dn[1] = R(0, 1) * dn0 + R(1, 1) * dn1 + R(2, 1) * dn2;
+  rt_dn[2] = R(0, 2) * dn0 + R(1, 2) * dn1 + R(2, 2) * dn2;
+  pp_dn[0] = pp1 * dn2 - pp2 * dn1;
+  pp_dn[1] = pp2 * dn0 - pp0 * dn2;
+  pp_dn[2] = pp0 * dn1 - pp1 * dn0;
+}
+
+/// δm' = n × δp' - p' × δn (- δl for the load directions: j ≥ 3 is δl = e_{j-3}), stored into the
+/// lanes' rows of the m columns of `out`.
+template <bool LoadForcing, class V>
+RODSHAPE_ALWAYS_INLINE inline void store_moment_rate_variation(
+    double* out, int j, const double* n, const V* dp, const V* pp_dn) {
+  V m0 = n[1] * dp[2] - n[2] * dp[1] - pp_dn[0];
+  V m1 = n[2] * dp[0] - n[0] * dp[2] - pp_dn[1];
+  V m2 = n[0] * dp[1] - n[1] * dp[0] - pp_dn[2];
+  if constexpr (LoadForcing) {
+    alignas(16) static constexpr double unit_l0[6] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0};
+    alignas(16) static constexpr double unit_l1[6] = {0.0, 0.0, 0.0, 0.0, 1.0, 0.0};
+    alignas(16) static constexpr double unit_l2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 1.0};
+    V dl0, dl1, dl2;
+    load(dl0, unit_l0, j), load(dl1, unit_l1, j), load(dl2, unit_l2, j);
+    m0 = m0 - dl0, m1 = m1 - dl1, m2 = m2 - dl2;
+  }
+  store(out + 6 * Slot::m, j, m0);
+  store(out + 6 * (Slot::m + 1), j, m1);
+  store(out + 6 * (Slot::m + 2), j, m2);
+}
+
 /// Y' = dF(y)[Y]: the variational equations. Each direction j (row of Y) is independent; the
 /// directions run four and two at a time in SIMD lanes.
 /// Base-wrench directions (LoadForcing = false): since f is constant, δn = e_j for the force
@@ -201,8 +273,6 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
                                                          const OdePoint& point,
                                                          const OdeTangent& Y,
                                                          OdeTangent& dY) {
-  const double w = y[0], x0 = y[1], x1 = y[2], x2 = y[3];
-  const double n0 = y[Slot::n], n1 = y[Slot::n + 1], n2 = y[Slot::n + 2];
   const double s = point.q_scale;
   const Eigen::Matrix3d& R = point.R;
   const double r00 = R(0, 0), r01 = R(0, 1), r02 = R(0, 2);
@@ -211,7 +281,6 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   const double nb0 = point.n_body[0], nb1 = point.n_body[1], nb2 = point.n_body[2];
   const double mb0 = point.m_body[0], mb1 = point.m_body[1], mb2 = point.m_body[2];
   const double v0 = point.v[0], v1 = point.v[1], v2 = point.v[2];
-  const double u0 = point.u[0], u1 = point.u[1], u2 = point.u[2];
   const double pp0 = point.p_prime[0], pp1 = point.p_prime[1], pp2 = point.p_prime[2];
   const double cr0 = ode.C_rot[0], cr1 = ode.C_rot[1], cr2 = ode.C_rot[2];
   const double ct0 = ode.extensible ? ode.C_tra[0] : 0.0;  // Kirchhoff: δv = 0
@@ -242,75 +311,41 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   // Directions j, j + 1, ... side by side, one per lane of V (Lanes4 or Lanes2).
   const auto directions = [&](auto lanes_tag, int j) RODSHAPE_ALWAYS_INLINE {
     using V = typename decltype(lanes_tag)::type;
-    V qw, q0, q1, q2, m0, m1, m2, rt_dn0, rt_dn1, rt_dn2, pp_dn0, pp_dn1, pp_dn2;
+    V qw, q0, q1, q2, m0, m1, m2, rt_dn[3], pp_dn[3], t[3];
     load(qw, dw, j), load(q0, dx0, j), load(q1, dx1, j), load(q2, dx2, j);
     load(m0, dm0, j), load(m1, dm1, j), load(m2, dm2, j);
     if constexpr (LoadForcing) {
-      // δn from Y: Rᵀδn and p' × δn.
-      V dn0, dn1, dn2;
-      load(dn0, Y.data() + 6 * Slot::n, j);
-      load(dn1, Y.data() + 6 * (Slot::n + 1), j);
-      load(dn2, Y.data() + 6 * (Slot::n + 2), j);
-      rt_dn0 = r00 * dn0 + r10 * dn1 + r20 * dn2;
-      rt_dn1 = r01 * dn0 + r11 * dn1 + r21 * dn2;
-      rt_dn2 = r02 * dn0 + r12 * dn1 + r22 * dn2;
-      pp_dn0 = pp1 * dn2 - pp2 * dn1;
-      pp_dn1 = pp2 * dn0 - pp0 * dn2;
-      pp_dn2 = pp0 * dn1 - pp1 * dn0;
+      load_direction_force_terms(Y, j, point, rt_dn, pp_dn);
     } else {
-      load(rt_dn0, Rt_dn0, j), load(rt_dn1, Rt_dn1, j), load(rt_dn2, Rt_dn2, j);
-      load(pp_dn0, pp_x_dn0, j), load(pp_dn1, pp_x_dn1, j), load(pp_dn2, pp_x_dn2, j);
+      load(rt_dn[0], Rt_dn0, j), load(rt_dn[1], Rt_dn1, j), load(rt_dn[2], Rt_dn2, j);
+      load(pp_dn[0], pp_x_dn0, j), load(pp_dn[1], pp_x_dn1, j), load(pp_dn[2], pp_x_dn2, j);
     }
-    // θ = (2/|q|²)(w δx - δw x - x × δx)
-    const V t0 = s * (w * q0 - x0 * qw - x1 * q2 + x2 * q1);
-    const V t1 = s * (w * q1 - x1 * qw - x2 * q0 + x0 * q2);
-    const V t2 = s * (w * q2 - x2 * qw - x0 * q1 + x1 * q0);
+    rotation_variation(s, y.data(), qw, q0, q1, q2, t);
+    const V t0 = t[0], t1 = t[1], t2 = t[2];
     store(theta.data(), j, t0);
     store(theta.data() + 6, j, t1);
     store(theta.data() + 12, j, t2);
     // δn̄ = n̄ × θ + Rᵀδn,  δm̄ = m̄ × θ + Rᵀδm
-    const V dnb0 = nb1 * t2 - nb2 * t1 + rt_dn0;
-    const V dnb1 = nb2 * t0 - nb0 * t2 + rt_dn1;
-    const V dnb2 = nb0 * t1 - nb1 * t0 + rt_dn2;
+    const V dnb0 = nb1 * t2 - nb2 * t1 + rt_dn[0];
+    const V dnb1 = nb2 * t0 - nb0 * t2 + rt_dn[1];
+    const V dnb2 = nb0 * t1 - nb1 * t0 + rt_dn[2];
     const V dmb0 = mb1 * t2 - mb2 * t1 + r00 * m0 + r10 * m1 + r20 * m2;
     const V dmb1 = mb2 * t0 - mb0 * t2 + r01 * m0 + r11 * m1 + r21 * m2;
     const V dmb2 = mb0 * t1 - mb1 * t0 + r02 * m0 + r12 * m1 + r22 * m2;
     // δu = K_rot⁻¹ δm̄;  a = δv - v × θ with δv = K_tra⁻¹ δn̄;  δp' = R a
-    const V du0 = cr0 * dmb0, du1 = cr1 * dmb1, du2 = cr2 * dmb2;
+    const V du[3] = {cr0 * dmb0, cr1 * dmb1, cr2 * dmb2};
     const V a0 = ct0 * dnb0 + v2 * t1 - v1 * t2;
     const V a1 = ct1 * dnb1 + v0 * t2 - v2 * t0;
     const V a2 = ct2 * dnb2 + v1 * t0 - v0 * t1;
     const V dp0 = r00 * a0 + r01 * a1 + r02 * a2;
     const V dp1 = r10 * a0 + r11 * a1 + r12 * a2;
     const V dp2 = r20 * a0 + r21 * a1 + r22 * a2;
-    // δq' = ½ (δq ⊗ (0, u) + q ⊗ (0, δu))
-    store(out + 6 * Slot::q, j,
-          -0.5 * (u0 * q0 + u1 * q1 + u2 * q2 + x0 * du0 + x1 * du1 + x2 * du2));
-    store(out + 6 * (Slot::q + 1), j,
-          0.5 * (u0 * qw + u2 * q1 - u1 * q2 + w * du0 + x1 * du2 - x2 * du1));
-    store(out + 6 * (Slot::q + 2), j,
-          0.5 * (u1 * qw + u0 * q2 - u2 * q0 + w * du1 + x2 * du0 - x0 * du2));
-    store(out + 6 * (Slot::q + 3), j,
-          0.5 * (u2 * qw + u1 * q0 - u0 * q1 + w * du2 + x0 * du1 - x1 * du0));
+    store_quaternion_rate_variation(out, j, y.data(), point.u, qw, q0, q1, q2, du);
     store(out + 6 * Slot::p, j, dp0);
     store(out + 6 * (Slot::p + 1), j, dp1);
     store(out + 6 * (Slot::p + 2), j, dp2);
-    // δm' = n × δp' - p' × δn (- δl for the load directions)
-    if constexpr (LoadForcing) {
-      // The load directions' δl (j ≥ 3: e_{j-3}), as columns.
-      alignas(16) static constexpr double unit_l0[6] = {0.0, 0.0, 0.0, 1.0, 0.0, 0.0};
-      alignas(16) static constexpr double unit_l1[6] = {0.0, 0.0, 0.0, 0.0, 1.0, 0.0};
-      alignas(16) static constexpr double unit_l2[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 1.0};
-      V dl0, dl1, dl2;
-      load(dl0, unit_l0, j), load(dl1, unit_l1, j), load(dl2, unit_l2, j);
-      store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0 - dl0);
-      store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1 - dl1);
-      store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2 - dl2);
-    } else {
-      store(out + 6 * Slot::m, j, n1 * dp2 - n2 * dp1 - pp_dn0);
-      store(out + 6 * (Slot::m + 1), j, n2 * dp0 - n0 * dp2 - pp_dn1);
-      store(out + 6 * (Slot::m + 2), j, n0 * dp1 - n1 * dp0 - pp_dn2);
-    }
+    const V dp[3] = {dp0, dp1, dp2};
+    store_moment_rate_variation<LoadForcing>(out, j, y.data() + Slot::n, dp, pp_dn);
     // δe' = Δvᵀ δn̄ + Δuᵀ δm̄
     if constexpr (Energy)
       store(out + 6 * Slot::e, j,
