@@ -85,38 +85,39 @@ RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
   const double w = y[0], x = y[1], yq = y[2], z = y[3];
   const double nx = y[Slot::n], ny = y[Slot::n + 1], nz = y[Slot::n + 2];
   const double mx = y[Slot::m], my = y[Slot::m + 1], mz = y[Slot::m + 2];
-  const double s = 2.0 / (w * w + x * x + yq * yq + z * z);
+  const double s = 2.0 / ((w * w + x * x) + (yq * yq + z * z));  // two short sums in parallel
   point.q_scale = s;
-  // R = R(q/|q|)
-  const double r00 = 1.0 - s * (yq * yq + z * z), r01 = s * (x * yq - w * z),
-               r02 = s * (x * z + w * yq);
-  const double r10 = s * (x * yq + w * z), r11 = 1.0 - s * (x * x + z * z),
-               r12 = s * (yq * z - w * x);
-  const double r20 = s * (x * z - w * yq), r21 = s * (yq * z + w * x),
-               r22 = 1.0 - s * (x * x + yq * yq);
+  // R = I + s B with B = w x̂ + x̂² (its entries do not wait for the division)
+  const double b00 = -(yq * yq + z * z), b01 = x * yq - w * z, b02 = x * z + w * yq;
+  const double b10 = x * yq + w * z, b11 = -(x * x + z * z), b12 = yq * z - w * x;
+  const double b20 = x * z - w * yq, b21 = yq * z + w * x, b22 = -(x * x + yq * yq);
+  const double r00 = 1.0 + s * b00, r01 = s * b01, r02 = s * b02;
+  const double r10 = s * b10, r11 = 1.0 + s * b11, r12 = s * b12;
+  const double r20 = s * b20, r21 = s * b21, r22 = 1.0 + s * b22;
   double* const R = point.R.data();  // column-major
   R[0] = r00, R[1] = r10, R[2] = r20, R[3] = r01, R[4] = r11, R[5] = r21, R[6] = r02, R[7] = r12,
   R[8] = r22;
-  // n̄ = Rᵀn, m̄ = Rᵀm
-  const double nb0 = r00 * nx + r10 * ny + r20 * nz;
-  const double nb1 = r01 * nx + r11 * ny + r21 * nz;
-  const double nb2 = r02 * nx + r12 * ny + r22 * nz;
-  const double mb0 = r00 * mx + r10 * my + r20 * mz;
-  const double mb1 = r01 * mx + r11 * my + r21 * mz;
-  const double mb2 = r02 * mx + r12 * my + r22 * mz;
+  // n̄ = Rᵀn = n + s Bᵀn, m̄ = Rᵀm = m + s Bᵀm: Bᵀn and Bᵀm run beside the division, so that the
+  // chain from q to u (which feeds the next stage) is one multiply-add after it rather than a dot
+  // product after R.
+  const double bn0 = b00 * nx + b10 * ny + b20 * nz;
+  const double bn1 = b01 * nx + b11 * ny + b21 * nz;
+  const double bn2 = b02 * nx + b12 * ny + b22 * nz;
+  const double bm0 = b00 * mx + b10 * my + b20 * mz;
+  const double bm1 = b01 * mx + b11 * my + b21 * mz;
+  const double bm2 = b02 * mx + b12 * my + b22 * mz;
+  const double nb0 = nx + s * bn0, nb1 = ny + s * bn1, nb2 = nz + s * bn2;
+  const double mb0 = mx + s * bm0, mb1 = my + s * bm1, mb2 = mz + s * bm2;
   point.n_body[0] = nb0, point.n_body[1] = nb1, point.n_body[2] = nb2;
   point.m_body[0] = mb0, point.m_body[1] = mb1, point.m_body[2] = mb2;
   // Δu = K_rot⁻¹ m̄, u = Δu + ũ;  Δv = K_tra⁻¹ n̄, v = Δv + ṽ (Kirchhoff: v = ṽ)
-  const double du0 = ode.C_rot[0] * mb0, du1 = ode.C_rot[1] * mb1, du2 = ode.C_rot[2] * mb2;
-  const double u0 = du0 + ode.u_rest[0], u1 = du1 + ode.u_rest[1], u2 = du2 + ode.u_rest[2];
+  const double u0 = ode.C_rot[0] * mb0 + ode.u_rest[0], u1 = ode.C_rot[1] * mb1 + ode.u_rest[1],
+               u2 = ode.C_rot[2] * mb2 + ode.u_rest[2];
   double v0 = ode.v_rest[0], v1 = ode.v_rest[1], v2 = ode.v_rest[2];
-  double e_tra = 0.0;
   if (ode.extensible) {
-    const double dv0 = ode.C_tra[0] * nb0, dv1 = ode.C_tra[1] * nb1, dv2 = ode.C_tra[2] * nb2;
-    v0 += dv0;
-    v1 += dv1;
-    v2 += dv2;
-    e_tra = 0.5 * (nb0 * dv0 + nb1 * dv1 + nb2 * dv2);
+    v0 += ode.C_tra[0] * nb0;
+    v1 += ode.C_tra[1] * nb1;
+    v2 += ode.C_tra[2] * nb2;
   }
   point.v[0] = v0, point.v[1] = v1, point.v[2] = v2;
   point.u[0] = u0, point.u[1] = u1, point.u[2] = u2;
@@ -146,15 +147,25 @@ RODSHAPE_ALWAYS_INLINE inline void evaluate(const CosseratOde& ode,
   dy[Slot::m] = -(py * nz - pz * ny) - ode.l[0];
   dy[Slot::m + 1] = -(pz * nx - px * nz) - ode.l[1];
   dy[Slot::m + 2] = -(px * ny - py * nx) - ode.l[2];
-  // e' = ½ ΔvᵀK_traΔv + ½ ΔuᵀK_rotΔu (not integrated without Energy)
-  dy[Slot::e] = Energy ? e_tra + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2) : 0.0;
+  // e' = ½ ΔvᵀK_traΔv + ½ ΔuᵀK_rotΔu = ½ n̄ᵀΔv + ½ m̄ᵀΔu, with Δv = v - ṽ and Δu = u - ũ read back,
+  // so that each product K⁻¹n̄, K⁻¹m̄ has one use and a multiply-add clone fuses it alike with and
+  // without the energy (Output::Tip is bitwise Output::Full at the tip)
+  if constexpr (Energy) {
+    const double dv0 = v0 - ode.v_rest[0], dv1 = v1 - ode.v_rest[1], dv2 = v2 - ode.v_rest[2];
+    const double du0 = u0 - ode.u_rest[0], du1 = u1 - ode.u_rest[1], du2 = u2 - ode.u_rest[2];
+    dy[Slot::e] =
+        0.5 * (nb0 * dv0 + nb1 * dv1 + nb2 * dv2) + 0.5 * (mb0 * du0 + mb1 * du1 + mb2 * du2);
+  } else {
+    dy[Slot::e] = 0.0;
+  }
 }
 
 /// Four and two doubles side by side (GCC and Clang vector extensions; a scalar operand is
 /// broadcast). The tangent's six directions go through the same arithmetic, four in one vector and
 /// two in another: a 32-byte vector is one AVX register where the code is compiled for AVX2 (the
 /// integrator's dispatched clone, rod_integrator.cpp) and two SSE2 registers elsewhere. The lanes
-/// never mix, so every direction's result is bitwise that of scalar code in the same order.
+/// never mix, so every direction's result is bitwise that of scalar code in the same order compiled
+/// for the same target (the x86-64-v3 clone fuses multiply-adds in both alike).
 typedef double Lanes4 __attribute__((vector_size(32)));
 typedef double Lanes2 __attribute__((vector_size(16)));
 

@@ -92,18 +92,19 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 }
 
 // Runtime dispatch (GCC's function multiversioning): every path (also the load tangent's) is
-// compiled for the x86-64 baseline and for AVX2, and the loader picks the clone for the CPU it runs
-// on, so the portable build puts four of the six tangent directions in one 256-bit register where
-// AVX2 exists (the path without the tangent gains a few per cent from the wider scalar code's
-// vectorisation). The clone is AVX2 without FMA: no a·b + c is fused, so its results are bitwise
-// the baseline's (tests/core/test_integrator_dispatch.cpp). An x86-64-v3 clone (with FMA) is on
-// branch integ-fma: about 10 % faster, results within rounding, but one IPOPT test's path flips
-// (BENCHMARKS.md, 2026-11-26 "The integrator at the floor"). A build for one CPU (RODSHAPE_NATIVE)
-// has no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before
-// TSan's run time is set up and the program crashes at load (segfault, seen with a 5-line program).
+// compiled for the x86-64 baseline and for x86-64-v3 (AVX2 with FMA), and the loader picks the
+// clone for the CPU it runs on, so the portable build puts four of the six tangent directions in
+// one 256-bit register and fuses a·b + c where the CPU can. The fused clone rounds once where the
+// baseline rounds twice: its results are the baseline's within a bound derived from the number of
+// operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip seen on the test
+// rod); a CPU without FMA gets the baseline, bitwise. No AVX-512 clone yet: the six directions
+// would fit one 8-lane register, but it needs a padded tangent layout (untried). A build for one
+// CPU (RODSHAPE_NATIVE) has no clones. Nor has a ThreadSanitizer build:
+// with GCC 12 the clones' resolver runs before TSan's run time is set up and the program crashes at
+// load (segfault, seen with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
     !defined(__SANITIZE_THREAD__)
-#define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "avx2")))
+#define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "arch=x86-64-v3")))
 #else
 #define RODSHAPE_DISPATCHED
 #endif
