@@ -140,12 +140,11 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   }
   int jacobian_evaluations() const { return jacobian_evaluations_; }
   /// True when the work configuration holds integrate(rod, w, derivatives)'s values, bit for bit:
-  /// the last integration was at w, with that level or with Tip when None is asked (the shape's
-  /// arithmetic is the same with and without the tangent).
+  /// the last integration was a chord step's (every node, no derivatives) at w and None is asked.
+  /// The evaluations with derivatives store the tip only (Output::Tip).
   bool work_holds(const Vector6d& w, Derivatives derivatives) const {
-    const bool level = work_derivatives_ == derivatives ||
-                       (derivatives == Derivatives::None && work_derivatives_ == Derivatives::Tip);
-    return integrations_ > 0 && level && work_w_ == w;
+    return integrations_ > 0 && derivatives == Derivatives::None &&
+           work_derivatives_ == Derivatives::None && work_w_ == w;
   }
 
   /// The residual at w from a forward integration without derivatives (a chord step's check).
@@ -159,8 +158,9 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   }
 
  private:
+  /// r and J need the tip only: the shape's other nodes and the energy are not stored.
   void evaluate(const Vector6d& w) {
-    integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip);
+    integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip, Output::Tip);
     work_w_ = w, work_derivatives_ = Derivatives::Tip;
     shooting_residual(tip_, work_, residual_, jacobian_);
     w_cached_ = w;
