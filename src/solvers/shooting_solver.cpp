@@ -262,6 +262,17 @@ std::optional<Vector6d> predict(ShootingProblem& problem,
   return euler;
 }
 
+/// Without a predictor, Euler's point w - J⁻¹ r from the exact (r, J) at the guess w (the first
+/// evaluation's, no integration): its distance from the root is the Euler error that makes the
+/// next substep's predictor of second order. Empty when J is singular or r not finite.
+std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w) {
+  const ShootingProblem::Snapshot at_guess = problem.snapshot();
+  if (!at_guess.valid || at_guess.w != w || !at_guess.r.allFinite()) return std::nullopt;
+  const Eigen::PartialPivLU<Matrix6d> lu(at_guess.J);
+  if (!(std::abs(lu.determinant()) > 0.0)) return std::nullopt;
+  return Vector6d(w - lu.solve(at_guess.r));
+}
+
 /// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame; from the
 /// predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
 /// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
@@ -277,7 +288,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
                              detail::SecantStart* secant) {
   ShootingProblem problem(rod, tip, work);
   ShootingSummary result;
-  const std::optional<Vector6d> euler =
+  std::optional<Vector6d> euler =
       secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
   if (secant) secant->valid = false;
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
@@ -297,6 +308,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   Matrix6d B;  // the Jacobian estimate at the root, when converged
   Eigen::VectorXd x = w;
   auto lm_status = lm.minimizeInit(x);
+  if (secant && !euler) euler = euler_point(problem, w);
   bool tried_chord_here = false;
   while (true) {
     const Vector6d& r = problem.residual_at(x);
