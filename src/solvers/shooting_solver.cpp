@@ -140,12 +140,11 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   }
   int jacobian_evaluations() const { return jacobian_evaluations_; }
   /// True when the work configuration holds integrate(rod, w, derivatives)'s values, bit for bit:
-  /// the last integration was at w, with that level or with Tip when None is asked (the shape's
-  /// arithmetic is the same with and without the tangent).
+  /// the last integration was a chord step's (every node, no derivatives) at w and None is asked.
+  /// The evaluations with derivatives store the tip only (Output::Tip).
   bool work_holds(const Vector6d& w, Derivatives derivatives) const {
-    const bool level = work_derivatives_ == derivatives ||
-                       (derivatives == Derivatives::None && work_derivatives_ == Derivatives::Tip);
-    return integrations_ > 0 && level && work_w_ == w;
+    return integrations_ > 0 && derivatives == Derivatives::None &&
+           work_derivatives_ == Derivatives::None && work_w_ == w;
   }
 
   /// The residual at w from a forward integration without derivatives (a chord step's check).
@@ -159,8 +158,9 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   }
 
  private:
+  /// r and J need the tip only: the shape's other nodes and the energy are not stored.
   void evaluate(const Vector6d& w) {
-    integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip);
+    integrate(rod_, Wrench::from_vector(w), work_, Derivatives::Tip, Output::Tip);
     work_w_ = w, work_derivatives_ = Derivatives::Tip;
     shooting_residual(tip_, work_, residual_, jacobian_);
     w_cached_ = w;
@@ -262,6 +262,17 @@ std::optional<Vector6d> predict(ShootingProblem& problem,
   return euler;
 }
 
+/// Without a predictor, Euler's point w - J⁻¹ r from the exact (r, J) at the guess w (the first
+/// evaluation's, no integration): its distance from the root is the Euler error that makes the
+/// next substep's predictor of second order. Empty when J is singular or r not finite.
+std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w) {
+  const ShootingProblem::Snapshot at_guess = problem.snapshot();
+  if (!at_guess.valid || at_guess.w != w || !at_guess.r.allFinite()) return std::nullopt;
+  const Eigen::PartialPivLU<Matrix6d> lu(at_guess.J);
+  if (!(std::abs(lu.determinant()) > 0.0)) return std::nullopt;
+  return Vector6d(w - lu.solve(at_guess.r));
+}
+
 /// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame; from the
 /// predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
 /// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
@@ -277,7 +288,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
                              detail::SecantStart* secant) {
   ShootingProblem problem(rod, tip, work);
   ShootingSummary result;
-  const std::optional<Vector6d> euler =
+  std::optional<Vector6d> euler =
       secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
   if (secant) secant->valid = false;
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
@@ -297,6 +308,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   Matrix6d B;  // the Jacobian estimate at the root, when converged
   Eigen::VectorXd x = w;
   auto lm_status = lm.minimizeInit(x);
+  if (secant && !euler) euler = euler_point(problem, w);
   bool tried_chord_here = false;
   while (true) {
     const Vector6d& r = problem.residual_at(x);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "rodshape/core/pose_between_nodes.hpp"
 #include "rodshape/core/rod_integrator.hpp"
@@ -78,6 +79,44 @@ TEST(ConfigurationFinite, TrueForAShapeFalseForAnyNonFiniteNodeOrEnergy) {
   EXPECT_FALSE(c.finite());
   // A base wrench that overflows the integration (curvature 1e300 / 0.04 per metre).
   EXPECT_FALSE(integrate(rod, BaseWrench{{0, 0, 0}, {1e300, 0, 0}}).finite());
+}
+
+// finite() sums x · 0 over each array (0, or NaN for a ±inf or NaN entry): every array, every
+// entry of a node's vector or matrix, the first and the last node are looked at; derivatives are
+// not, nor the energy of an Output::Tip configuration (not integrated).
+TEST(ConfigurationFinite, EveryNodeArrayAndEveryEntryIsLookedAt) {
+  const ClampedRod rod = band(10);
+  const RodConfiguration shape = integrate(rod, kWrench, Derivatives::AllNodes);
+  ASSERT_TRUE(shape.finite());
+  const double kInf = std::numeric_limits<double>::infinity();
+  const double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (const int i : {0, 5, 10}) {
+    for (const double bad : {kNaN, kInf, -kInf}) {
+      SCOPED_TRACE("node " + std::to_string(i) + ", value " + std::to_string(bad));
+      RodConfiguration c = shape;
+      c.s[i] = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.p[i].z() = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.R[i](2, 1) = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.n[i].x() = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.m[i].y() = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.v[i].z() = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.u[i].x() = bad;
+      EXPECT_FALSE(c.finite());
+      c = shape, c.dp_dw[i](0, 0) = bad;
+      EXPECT_TRUE(c.finite());
+    }
+  }
+  RodConfiguration tip;
+  integrate(rod, kWrench, tip, Derivatives::None, Output::Tip);
+  EXPECT_TRUE(tip.finite());  // energy NaN: not integrated
+  tip.m[1].z() = kInf;
+  EXPECT_FALSE(tip.finite());
 }
 
 TEST(StrainExtremes, AxialForceStretchesByFOverEAAndShearForceShearsByFOverGA) {
