@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev            # core linear algebra
+  libboost-dev             # Boost.Math's Brent minimiser (solvers/stability.cpp), header-only
   libyaml-cpp-dev          # task files
   nlohmann-json3-dev       # results
   libcli11-dev             # command line
