@@ -114,6 +114,7 @@ ShapeProblem::~ShapeProblem() = default;
 void ShapeProblem::evaluate(const Vector6d& w) {
   if (evaluated_ && w == w_) return;
   integrate(rod_, BaseWrench::from_vector(w), configuration_, Derivatives::AllNodes);
+  ++integrations_;
   evaluate_cost();
   evaluate_constraints();
   w_ = w;

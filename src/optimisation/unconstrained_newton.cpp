@@ -60,6 +60,20 @@ class Newton {
     return std::isfinite(at.cost) && at.gradient.allFinite();
   }
 
+  /// The model B of ∇²F: differenced at `at` (false when a gradient is not finite), or updated by
+  /// the SR1 formula with the step just taken from `from` to `to`.
+  bool difference_model(const Iterate& at) {
+    differenced_ = hessian(at, model_);
+    return differenced_;
+  }
+  void update_model(const Iterate& from, const Iterate& to) {
+    sr1_update(to.w - from.w, to.gradient - from.gradient, model_);
+    differenced_ = false;
+  }
+  const Matrix6d& model() const { return model_; }
+  /// Whether the model is a fresh difference, not yet updated.
+  bool model_differenced() const { return differenced_; }
+
   /// ∇²F by forward differences of ∇F, symmetrised, with ShapeNlp::eval_h's steps
   /// h_j = √ε max(|w_j|, unit_j) (the bending wrench units); false when a gradient is not finite.
   bool hessian(const Iterate& at, Matrix6d& H) {
@@ -101,6 +115,8 @@ class Newton {
   const std::optional<WrenchBounds>& admissible_;
   int refusals_ = 0;
   double last_delta_ = 0.0;  // the last nonzero δ (IPOPT's delta_x_last)
+  Matrix6d model_ = Matrix6d::Zero();
+  bool differenced_ = false;
 };
 
 /// s_f: F scaled so that its gradient at the start is at most kMaxGradient in the max-norm.
@@ -119,7 +135,39 @@ IpoptRun ended(IpoptEnd end, const Iterate& at, int iterations, bool beyond_scal
   return run;
 }
 
+enum class Search { Accepted, Refused, TooSmall };
+
+/// IPOPT's backtracking line search on φ = s_f F along d from `at`: α = 1, halved until Armijo's
+/// condition holds, compared with a round-off allowance of 10 ε |φ| (IPOPT's Compare_le); the
+/// accepted point into `trial`. TooSmall when α d falls below round-off of w first, Refused when
+/// the refusals reach kMaxRefusals.
+Search line_search(
+    Newton& newton, const Iterate& at, const Vector6d& d, double scaling, Iterate& trial) {
+  const double slope = scaling * at.gradient.dot(d);
+  const double phi = scaling * at.cost;
+  for (double alpha = 1.0;; alpha *= kBacktrack) {
+    if (alpha * d.lpNorm<Eigen::Infinity>() <=
+        10.0 * kEpsilon * (1.0 + at.w.lpNorm<Eigen::Infinity>()))
+      return Search::TooSmall;
+    if (newton.refusals() >= kMaxRefusals) return Search::Refused;
+    if (!newton.evaluate(at.w + alpha * d, trial)) continue;
+    if (scaling * trial.cost - phi <= kArmijo * alpha * slope + 10.0 * kEpsilon * std::abs(phi))
+      return Search::Accepted;
+  }
+}
+
 }  // namespace
+
+// Unlike BFGS, SR1 keeps B indefinite where ∇²F is, which the inertia correction then treats as it
+// treats the differenced Hessian.
+void sr1_update(const Vector6d& s, const Vector6d& y, Matrix6d& B) {
+  constexpr double kSr1Skip = 1e-8;
+  const Vector6d r = y - B * s;
+  const double denominator = r.dot(s);
+  if (!std::isfinite(denominator) || std::abs(denominator) <= kSr1Skip * s.norm() * r.norm())
+    return;                                          // also r = 0: B s = y already
+  B.noalias() += (r * r.transpose()) / denominator;  // r_i r_j = r_j r_i: B stays symmetric
+}
 
 bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian) {
   const WrenchBounds& bounds = problem.wrench_bounds();
@@ -155,26 +203,28 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
     if (iteration >= options.max_iterations)
       return ended(IpoptEnd::MaximumIterationsExceeded, at, iteration, false);
 
-    Matrix6d H;
-    if (!newton.hessian(at, H)) return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
-    Vector6d d;
-    if (!newton.step(scaling * H, scaling * at.gradient, d))
-      return ended(IpoptEnd::ErrorInStepComputation, at, iteration, false);
-    // Armijo on φ = s_f F, compared with a round-off allowance of 10 ε |φ| (IPOPT's Compare_le).
-    const double slope = scaling * at.gradient.dot(d);
-    const double phi = scaling * at.cost;
-    for (double alpha = 1.0;; alpha *= kBacktrack) {
-      if (alpha * d.lpNorm<Eigen::Infinity>() <=
-          10.0 * kEpsilon * (1.0 + at.w.lpNorm<Eigen::Infinity>()))
-        return last_acceptable
-                   ? ended(IpoptEnd::SolvedToAcceptableLevel, *last_acceptable, iteration, false)
-                   : ended(IpoptEnd::SearchDirectionBecomesTooSmall, at, iteration, false);
-      if (newton.refusals() >= kMaxRefusals)
-        return ended(IpoptEnd::UserRequestedStop, at, iteration, true);
-      if (!newton.evaluate(at.w + alpha * d, trial)) continue;
-      if (scaling * trial.cost - phi <= kArmijo * alpha * slope + 10.0 * kEpsilon * std::abs(phi))
+    // The model: differenced at the start, SR1-updated after every step.
+    if (iteration == 0 && !newton.difference_model(at))
+      return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
+    Search search = Search::TooSmall;
+    for (;;) {
+      Vector6d d;
+      const bool stepped = newton.step(scaling * newton.model(), scaling * at.gradient, d);
+      if (stepped) search = line_search(newton, at, d, scaling, trial);
+      if ((stepped && search != Search::TooSmall) || newton.model_differenced()) {
+        if (!stepped) return ended(IpoptEnd::ErrorInStepComputation, at, iteration, false);
         break;
+      }
+      // An updated model may point nowhere useful: the step again from a fresh difference.
+      if (!newton.difference_model(at))
+        return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
     }
+    if (search == Search::Refused) return ended(IpoptEnd::UserRequestedStop, at, iteration, true);
+    if (search == Search::TooSmall)
+      return last_acceptable
+                 ? ended(IpoptEnd::SolvedToAcceptableLevel, *last_acceptable, iteration, false)
+                 : ended(IpoptEnd::SearchDirectionBecomesTooSmall, at, iteration, false);
+    newton.update_model(at, trial);
     at = trial;
   }
 }

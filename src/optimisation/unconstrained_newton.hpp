@@ -13,7 +13,7 @@
 //   * the stopping test: s_f |∇F|_∞ ≤ tol and |∇F|_∞ ≤ 1 (IPOPT's tol and dual_inf_tol); 15
 //     iterations in a row within 1e-6 (acceptable_tol, acceptable_iter) stop at an acceptable
 //     point;
-//   * the Hessian: forward differences of the exact gradient (as ShapeNlp::eval_h);
+//   * the first Hessian: forward differences of the exact gradient (as ShapeNlp::eval_h);
 //   * the inertia correction: δ = 0 first, then 1e-4 (or a third of the last δ) growing ×100 (×8
 //     after a first δ) until the Cholesky factorisation succeeds, giving up past 1e40
 //     (first_hessian_perturbation, perturb_dec_fact, perturb_inc_fact(_first), max_hessian_
@@ -31,6 +31,16 @@
 //     IPOPT's restoration phase returns the last acceptable iterate (scaled |∇F|_∞ ≤ 1e-6) as
 //     Solved_To_Acceptable_Level, and so does this; without one, Search_Direction_Becomes_Too_Small
 //     (IPOPT's restoration has nothing to restore without rows).
+//
+// Not kept: IPOPT differences the Hessian at every iteration (6 more integrations with all-node
+// derivatives, 6/7 of an iteration's cost). Here the differenced Hessian of the first iteration
+// is carried on by symmetric rank-one (SR1) updates from each accepted step's change of the
+// exact gradient, and differenced again only when a step from the updated model finds no
+// decrease. On the paper's experiment (BENCHMARKS.md, branch hess) that is 7 Hessians in place
+// of 46 and about 160 integrations in place of 360 for the same optima; the iterations are more
+// (superlinear, not quadratic, convergence: 79 against 46). SR1, not BFGS: the Hessian is
+// indefinite away from the optimum and BFGS's positive definite model needed more integrations
+// (damped BFGS 220, SR1 187, refreshed when |∇F| fell by less than half: both about 290).
 #pragma once
 
 #include <optional>
@@ -44,6 +54,12 @@ namespace rodshape::detail {
 /// Whether unconstrained_newton() serves `problem`: a fixed clamp, no constraint rows, no finite
 /// wrench bound, and the differenced Hessian (ShapeOptimiserOptions::hessian).
 bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian);
+
+/// The symmetric rank-one update of the Hessian model B with the step s and the change of
+/// gradient y (Nocedal and Wright, Numerical Optimization, eq. 6.24): B + r rᵀ / (rᵀs), r = y - B
+/// s, so that B s = y afterwards (the secant equation). Left out when |rᵀs| ≤ 1e-8 |s| |r| (their
+/// eq. 6.26: the update would be huge or undefined) or not finite.
+void sr1_update(const Vector6d& s, const Vector6d& y, Matrix6d& B);
 
 /// Minimises F from `start` (F not evaluated outside `admissible`, when given; `start` lies
 /// inside). The result reads as an IPOPT run's (IpoptDetails::solver says which solver it was);

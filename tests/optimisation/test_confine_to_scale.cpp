@@ -35,7 +35,9 @@ TEST(WrenchBoundsFromScale, AreTheDocumentedMultiplesOfTheStiffnesses) {
 
 /// Six points scattered around the band's clamp, some behind it, far from any shape the band can
 /// take (found by a seeded search of random point sets), fitted by squared distance alone: the
-/// unconfined optimum coils the band with a base wrench 8.75 times the box.
+/// unconfined optimum coils the band with a base wrench beyond the box (8.75 times it when the
+/// dense Newton differenced its Hessian at every iteration, 1.25 times with its SR1 model: a
+/// different local optimum of the same far-fetched fit, both outside).
 ShapeTarget scattered_target() {
   ShapeTarget target;
   target.points = {{-0.21437055311548173, -0.1922538628363058, 0.27474823702620077},
@@ -63,7 +65,7 @@ TEST(ConfineToScale, AnOptimumBeyondTheRodsScaleIsNotConverged) {
   const ShapeResult unconfined = optimise_shape(problem, BaseWrench{}, free);
   // The premise: left alone, IPOPT "converges" on a coiled band far beyond the box.
   ASSERT_TRUE(unconfined.converged()) << unconfined.brief();
-  EXPECT_GT(box_ratio(unconfined, box), 5.0);
+  EXPECT_GT(box_ratio(unconfined, box), 1.0);
 
   const ShapeResult confined = optimise_shape(problem, BaseWrench{});
   EXPECT_FALSE(confined.converged());

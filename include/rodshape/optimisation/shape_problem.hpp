@@ -91,6 +91,9 @@ class ShapeProblem {
   /// Γ); the subgradient 0 is used there. Curvature and axial rows are computed from m̄ = Rᵀm and
   /// n̄ = Rᵀn (u - ũ = K_rot⁻¹ m̄, v_z - ṽ_z = n̄_z / EA), without cancellation against ũ, ṽ.
   void evaluate(const Vector6d& w);
+  /// How many integrations evaluate() has done (calls at a new w), the measure of a solver's
+  /// cost on this problem.
+  int integrations() const { return integrations_; }
 
   // ---- A moving base (issue 21, base_motion.hpp): the variables x = (w_b, ξ) ----------------
   /// Makes the base pose a variable (12 unknowns; the rod's clamp is then the base pose at the
@@ -144,6 +147,7 @@ class ShapeProblem {
   Eigen::VectorXd g_lower_, g_upper_;
 
   bool evaluated_ = false;
+  int integrations_ = 0;
   Vector6d w_ = Vector6d::Zero();
   RodConfiguration configuration_;
   std::vector<CurveProjection> projections_;
