@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -107,6 +108,33 @@ std::vector<Vector12d> moving_starts(const ShapeProblem& problem,
   return x;
 }
 
+/// Whether a moving base's start is solved by the dense Newton over w_b alone, the base pose
+/// eliminated (ShapeProblem::eliminate_base_pose): no rows, no finite bound on w_b, a shape that
+/// moves rigidly with the base (rigid_alignment_applies) and the differenced Hessian.
+bool eliminated_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian) {
+  const Vector12d lower = problem.variable_lower(), upper = problem.variable_upper();
+  if (std::getenv("TW2_NO_NEWTON")) return false;  // TEMP measurement
+  return finite_difference_hessian && problem.constraint_count() == 0 &&
+         problem.rigid_alignment_applies() && !lower.head<6>().array().isFinite().any() &&
+         !upper.head<6>().array().isFinite().any();
+}
+
+/// The dense Newton over w_b with ξ = ξ*(w_b); the run's x = (w_b, ξ*) and w its world wrench.
+IpoptRun eliminated_newton(ShapeProblem& problem,
+                           const Vector12d& start,
+                           const ShapeOptimiserOptions& options) {
+  const Vector6d w_b = start.head<6>();
+  problem.eliminate_base_pose(true);
+  IpoptRun run = unconstrained_newton(problem, w_b, options, admissible_box(problem, w_b, options));
+  problem.evaluate(run.w);  // ξ*(w_b) at the final iterate
+  const bool aligned = std::isfinite(problem.cost());
+  run.x = problem.evaluated_variables();
+  problem.eliminate_base_pose(false);
+  if (!aligned) run.status = SolveStatus::NonFinite;
+  run.w = problem.world_wrench(run.x).to_vector();
+  return run;
+}
+
 StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
@@ -114,8 +142,10 @@ StartResult run_start(IpoptSession& session,
                       const Vector12d* moving_start = nullptr) {
   StartResult result;
   if (moving_start) {
-    result.run = session.run(problem, *moving_start,
-                             admissible_box(problem, moving_start->head<6>(), options));
+    result.run = eliminated_newton_serves(problem, session.finite_difference_hessian())
+                     ? eliminated_newton(problem, *moving_start, options)
+                     : session.run(problem, *moving_start,
+                                   admissible_box(problem, moving_start->head<6>(), options));
     problem.evaluate_with_base(result.run.x);
   } else if (unconstrained_newton_serves(problem, session.finite_difference_hessian())) {
     result.run =
