@@ -336,7 +336,8 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
       }
       // Backtracking: Armijo, or, where F's differences are at its rounding, a gradient that falls.
       bool moved = false;
-      for (double alpha = 1.0; alpha >= 1e-12 && !moved; alpha *= 0.5) {
+      const double length = step.lpNorm<Eigen::Infinity>();
+      for (double alpha = 1.0; alpha * length > 1e-2 * kNegligibleStep && !moved; alpha *= 0.5) {
         Vector6d next_gradient;
         Matrix6 next_hessian;
         const double next_cost =
@@ -375,7 +376,9 @@ void ShapeProblem::eliminate_base_pose(bool eliminated) {
   evaluated_ = false;
 }
 
-void ShapeProblem::evaluate_eliminated(const Vector6d& w_b) {
+void ShapeProblem::evaluate_eliminated(const Vector6d& w_scaled) {
+  const Vector6d units = rod_.properties.bending_wrench_units();
+  const Vector6d w_b = w_scaled.cwiseProduct(units);
   if (evaluated_ && w_b == x_.head<6>()) return;
   Vector6d xi = xi_star_;
   if (!align_base(w_b, xi)) {
@@ -388,7 +391,8 @@ void ShapeProblem::evaluate_eliminated(const Vector6d& w_b) {
   Vector12d x;
   x << w_b, xi;
   evaluate_with_base(x);
-  cost_gradient_ = gradient_x_.head<6>();  // ∂F/∂w_b at ξ*: ∂F/∂ξ = 0 there
+  // ∂F/∂w̃ = D ∂F/∂w_b at ξ*: ∂F/∂ξ = 0 there.
+  cost_gradient_ = gradient_x_.head<6>().cwiseProduct(units);
 }
 
 }  // namespace rodshape

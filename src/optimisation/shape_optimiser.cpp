@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -113,7 +112,6 @@ std::vector<Vector12d> moving_starts(const ShapeProblem& problem,
 /// moves rigidly with the base (rigid_alignment_applies) and the differenced Hessian.
 bool eliminated_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian) {
   const Vector12d lower = problem.variable_lower(), upper = problem.variable_upper();
-  if (std::getenv("TW2_NO_NEWTON")) return false;  // TEMP measurement
   return finite_difference_hessian && problem.constraint_count() == 0 &&
          problem.rigid_alignment_applies() && !lower.head<6>().array().isFinite().any() &&
          !upper.head<6>().array().isFinite().any();
@@ -123,9 +121,14 @@ bool eliminated_newton_serves(const ShapeProblem& problem, bool finite_differenc
 IpoptRun eliminated_newton(ShapeProblem& problem,
                            const Vector12d& start,
                            const ShapeOptimiserOptions& options) {
-  const Vector6d w_b = start.head<6>();
+  const Vector6d units = problem.rod().properties.bending_wrench_units();
+  std::optional<WrenchBounds> box = admissible_box(problem, start.head<6>(), options);
+  if (box) {  // in w̃ = w_b / D
+    box->lower.array() /= units.array();
+    box->upper.array() /= units.array();
+  }
   problem.eliminate_base_pose(true);
-  IpoptRun run = unconstrained_newton(problem, w_b, options, admissible_box(problem, w_b, options));
+  IpoptRun run = unconstrained_newton(problem, start.head<6>().cwiseQuotient(units), options, box);
   problem.evaluate(run.w);  // ξ*(w_b) at the final iterate
   const bool aligned = std::isfinite(problem.cost());
   run.x = problem.evaluated_variables();

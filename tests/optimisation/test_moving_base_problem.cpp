@@ -222,11 +222,11 @@ TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences
   // Σ dist and for Σ dist². Points 5–20 mm from the curve, one beyond the tip (its closest point
   // is the end: a point's distance, curved along the tangent too).
   // FD error model: the shape is fixed, so F(ξ̃) is the points' distances to a cubic curve after a
-  // rigid motion; each derivative in ξ̃ brings at most a factor ~ (2L / d_min) (lever arm 2L, the
-  // curve's and the distance's curvature 1/d), so |∂⁴F| ≲ W n (2L/d)⁴ / d·d ... bounded below by
-  // the measured truncation: the error at η is taken as 2 |FD(η) - FD(η/2)| (Richardson: the
-  // truncation is O(η²), so FD(η/2) errs by a third of their difference) plus the round-off
-  // 1e3 ε |F| / η, and a wrong term of the Hessian (relative size ≥ 1e-3) would exceed it.
+  // rigid motion, smooth where no closest point changes interval. Central differences err by
+  // O(η²) (truncation) + O(ε |F| / η) (round-off): the truncation at η/2 is bounded by
+  // 2 |FD(η) - FD(η/2)| (Richardson: FD(η/2) errs by a third of their difference, with margin), the
+  // round-off by 1e3 ε |F| / (η/2) (a few hundred operations per point). A missing or wrong term of
+  // the Hessian (branch elim's, 38cb6b2: errors of 2–12 % of |H|) exceeds both by far.
   const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
   const double L = rod.properties.length;
   const Vector6d wb = 0.3 * body_wrench(rod);
@@ -279,8 +279,8 @@ TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences
       Matrix6d gradient_fd, gradient_fd_half;
       differences(kEta, cost_fd, gradient_fd);
       differences(0.5 * kEta, cost_fd_half, gradient_fd_half);
-      const double round_off = 1e3 * std::numeric_limits<double>::epsilon() * std::abs(cost) /
-                               (0.5 * kEta);
+      const double round_off =
+          1e3 * std::numeric_limits<double>::epsilon() * std::abs(cost) / (0.5 * kEta);
       const double gradient_bound =
           2.0 * (cost_fd - cost_fd_half).lpNorm<Eigen::Infinity>() + round_off;
       const double hessian_bound =

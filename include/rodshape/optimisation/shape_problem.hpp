@@ -133,12 +133,13 @@ class ShapeProblem {
                         const Vector6d& xi,
                         Vector6d* gradient,
                         Matrix6d* hessian);
-  /// The base pose eliminated (rigid_alignment_applies(), no constraint rows): evaluate(w_b) then
-  /// places the shape of the base-frame wrench w_b at ξ*(w_b) = argmin_ξ F (align_base, from the
-  /// last ξ*, ξ = 0 at the start) and evaluates at (w_b, ξ*); cost() is F(w_b, ξ*(w_b)),
-  /// cost_gradient() ∂F/∂w_b there, which is the total derivative of the reduced F (∂F/∂ξ = 0 at
-  /// ξ*), so its derivative is the reduced Hessian. A failed alignment leaves a NaN cost. For the
-  /// dense Newton over w_b alone (shape_optimiser.cpp); off again with false.
+  /// The base pose eliminated (rigid_alignment_applies(), no constraint rows): evaluate(w̃) takes
+  /// w̃ = w_b / D (D the bending wrench units, as ShapeNlp scales w_b), places the shape of the
+  /// base-frame wrench w_b at ξ*(w_b) = argmin_ξ F (align_base, from the last ξ*, ξ = 0 at the
+  /// start) and evaluates at (w_b, ξ*); cost() is F(w_b, ξ*(w_b)), cost_gradient() D ∂F/∂w_b
+  /// there, which is the total derivative of the reduced F (∂F/∂ξ = 0 at ξ*), so its derivative is
+  /// the reduced Hessian. A failed alignment leaves a NaN cost. For the dense Newton over w̃ alone
+  /// (shape_optimiser.cpp); off again with false.
   void eliminate_base_pose(bool eliminated);
   bool base_pose_eliminated() const { return eliminated_; }
   /// x = (w_b, ξ*) of the last evaluation with the pose eliminated.
