@@ -145,10 +145,13 @@ StartResult run_start(IpoptSession& session,
                       const Vector12d* moving_start = nullptr) {
   StartResult result;
   if (moving_start) {
-    result.run = eliminated_newton_serves(problem, session.finite_difference_hessian())
-                     ? eliminated_newton(problem, *moving_start, options)
-                     : session.run(problem, *moving_start,
-                                   admissible_box(problem, moving_start->head<6>(), options));
+    // Where the dense Newton over w_b does not converge (a start far down the moving base's flat
+    // valley), IPOPT from the same start.
+    const bool newton = eliminated_newton_serves(problem, session.finite_difference_hessian());
+    if (newton) result.run = eliminated_newton(problem, *moving_start, options);
+    if (!newton || result.run.status != SolveStatus::Converged)
+      result.run = session.run(problem, *moving_start,
+                               admissible_box(problem, moving_start->head<6>(), options));
     problem.evaluate_with_base(result.run.x);
   } else if (unconstrained_newton_serves(problem, session.finite_difference_hessian())) {
     result.run =
