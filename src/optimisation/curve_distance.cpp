@@ -214,6 +214,29 @@ CurveProjection project_near_node(const RodConfiguration& configuration,
   return result;
 }
 
+CurveProjection project_from_interval(const RodConfiguration& configuration,
+                                      const Eigen::Vector3d& point,
+                                      int interval,
+                                      int reach) {
+  const RodConfiguration& c = configuration;
+  const int intervals = c.nodes() - 1;
+  if (intervals < 1) return nearest_node(c, point);
+  interval = std::clamp(interval, 0, intervals - 1);
+  int lo = std::max(interval - reach, 0), hi = std::min(interval + reach, intervals - 1);
+  CurveProjection result;
+  result.distance = std::numeric_limits<double>::infinity();
+  for (int i = lo; i <= hi; ++i) closer_on_segment(c, i, point, result);
+  // A descent along the curve: the window grows while its best lies at its first or last end
+  // (an interior minimum on the window is a local minimum of the distance along the curve).
+  constexpr double kAtEnd = 1e-12;
+  while (result.interval == lo && result.t <= kAtEnd && lo > 0)
+    closer_on_segment(c, --lo, point, result);
+  while (result.interval == hi && result.t >= 1.0 - kAtEnd && hi < intervals - 1)
+    closer_on_segment(c, ++hi, point, result);
+  set_arc_length(c, result);
+  return result;
+}
+
 namespace {
 
 /// d(p'_i)/dw = R_i (δv_i - v_i × θ_i), one column per base-wrench direction, with

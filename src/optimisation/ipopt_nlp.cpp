@@ -1,6 +1,7 @@
 #include "optimisation/ipopt_nlp.hpp"
 #include "optimisation/ipopt_derivative_test.hpp"
 
+#include <Eigen/Cholesky>
 #include <IpJournalist.hpp>
 #include <algorithm>
 #include <cassert>
@@ -150,6 +151,8 @@ ShapeNlp::ShapeNlp(ShapeProblem& problem,
   // that its regularisation and barrier treat the 12 unknowns alike.
   scale_ << problem.rod().properties.bending_wrench_units(),
       Eigen::Vector3d::Constant(problem.rod().properties.length), Eigen::Vector3d::Ones();
+  projected_ = rows_ == 0 && problem.rigid_alignment_applies();
+  xi_ = start.tail<6>();
   outcome_.x = start;
   outcome_.w = problem.world_wrench(start).to_vector();
   outcome_.constraint_multipliers.assign(static_cast<std::size_t>(rows_), 0.0);
@@ -160,11 +163,11 @@ bool ShapeNlp::get_nlp_info(Ipopt::Index& n,
                             Ipopt::Index& nnz_jac_g,
                             Ipopt::Index& nnz_h_lag,
                             IndexStyleEnum& index_style) {
-  n = n_;
+  n = unknowns();
   m = rows_;
-  nnz_jac_g = n_ * rows_;  // dg/dw is dense: every row depends on every component of w
+  nnz_jac_g = n * rows_;  // dg/dw is dense: every row depends on every component of w
   // The lower triangle of the dense n × n Hessian, or nothing for the limited-memory one.
-  nnz_h_lag = finite_difference_hessian_ ? n_ * (n_ + 1) / 2 : 0;
+  nnz_h_lag = finite_difference_hessian_ ? n * (n + 1) / 2 : 0;
   index_style = C_STYLE;
   return true;
 }
@@ -175,12 +178,12 @@ bool ShapeNlp::get_bounds_info(Ipopt::Index n,
                                Ipopt::Index m,
                                Ipopt::Number* g_l,
                                Ipopt::Number* g_u) {
-  assert(n == n_ && m == rows_);
+  assert(n == unknowns() && m == rows_);
   (void)n;
   // ±inf → ±kIpoptInfinity, which IPOPT reads as "no bound".
   if (n_ == 12) {
     const Vector12d lower = problem_.variable_lower(), upper = problem_.variable_upper();
-    for (int j = 0; j < 12; ++j) {
+    for (int j = 0; j < unknowns(); ++j) {
       x_l[j] = std::clamp(lower(j) / scale_(j), -kIpoptInfinity, kIpoptInfinity);
       x_u[j] = std::clamp(upper(j) / scale_(j), -kIpoptInfinity, kIpoptInfinity);
     }
@@ -209,12 +212,12 @@ bool ShapeNlp::get_starting_point(Ipopt::Index n,
                                   Ipopt::Index /*m*/,
                                   bool init_lambda,
                                   Ipopt::Number* /*lambda*/) {
-  assert(n == n_);
+  assert(n == unknowns());
   (void)n;
   // Only a primal start is given (warm_start_init_point stays "no"); IPOPT then initialises the
   // multipliers itself and never asks for them.
   if (!init_x || init_z || init_lambda) return false;
-  for (int j = 0; j < n_; ++j) x[j] = n_ == 12 ? start_x_(j) / scale_(j) : start_(j);
+  for (int j = 0; j < unknowns(); ++j) x[j] = n_ == 12 ? start_x_(j) / scale_(j) : start_(j);
   return true;
 }
 
@@ -228,6 +231,21 @@ bool ShapeNlp::evaluate_at(const Ipopt::Number* x) {
   // IPOPT's new_x says whether x changed since the last call; ShapeProblem::evaluate() is a no-op
   // at the last w anyway, so it is called every time: one 6-vector comparison buys independence
   // from the hint (the derivative checker, for one, moves x between calls).
+  if (projected_) {
+    const Vector6d w_b = Eigen::Map<const Vector6d>(x).cwiseProduct(scale_.head<6>());
+    if (!admissible(w_b)) {
+      ++outcome_.refusals;
+      return false;
+    }
+    if (w_b != aligned_at_) {
+      if (!problem_.align_base(w_b, xi_)) return false;
+      aligned_at_ = w_b;
+    }
+    Vector12d at;
+    at << w_b, xi_;
+    problem_.evaluate_with_base(at);
+    return std::isfinite(problem_.cost()) && problem_.variable_gradient().allFinite();
+  }
   if (n_ == 12) {
     const Vector12d at = Eigen::Map<const Vector12d>(x).cwiseProduct(scale_);
     if (!admissible(at.head<6>())) {
@@ -252,7 +270,7 @@ bool ShapeNlp::eval_f(Ipopt::Index n,
                       const Ipopt::Number* x,
                       bool /*new_x*/,
                       Ipopt::Number& obj_value) {
-  assert(n == n_);
+  assert(n == unknowns());
   (void)n;
   if (!evaluate_at(x)) return false;
   obj_value = problem_.cost();
@@ -263,9 +281,14 @@ bool ShapeNlp::eval_grad_f(Ipopt::Index n,
                            const Ipopt::Number* x,
                            bool /*new_x*/,
                            Ipopt::Number* grad_f) {
-  assert(n == n_);
+  assert(n == unknowns());
   (void)n;
   if (!evaluate_at(x)) return false;
+  if (projected_) {  // ∂F/∂w_b at ξ*(w_b): ∂F/∂ξ = 0 there
+    Eigen::Map<Vector6d> gradient(grad_f);
+    gradient = problem_.variable_gradient().head<6>().cwiseProduct(scale_.head<6>());
+    return true;
+  }
   if (n_ == 12) {
     Eigen::Map<Vector12d> gradient(grad_f);
     gradient = problem_.variable_gradient().cwiseProduct(scale_);
@@ -278,7 +301,7 @@ bool ShapeNlp::eval_grad_f(Ipopt::Index n,
 
 bool ShapeNlp::eval_g(
     Ipopt::Index n, const Ipopt::Number* x, bool /*new_x*/, Ipopt::Index m, Ipopt::Number* g) {
-  assert(n == n_ && m == rows_);
+  assert(n == unknowns() && m == rows_);
   (void)n;
   if (m == 0) return true;
   if (!evaluate_at(x)) return false;
@@ -297,12 +320,12 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
                       Ipopt::Index* iRow,
                       Ipopt::Index* jCol,
                       Ipopt::Number* values) {
-  assert(n == n_ && m == rows_ && nele_hess == n_ * (n_ + 1) / 2);
+  assert(n == unknowns() && m == rows_ && nele_hess == n * (n + 1) / 2);
   (void)n;
   (void)nele_hess;
   if (values == nullptr) {
     Ipopt::Index k = 0;  // the lower triangle, row by row
-    for (Ipopt::Index i = 0; i < n_; ++i) {
+    for (Ipopt::Index i = 0; i < unknowns(); ++i) {
       for (Ipopt::Index j = 0; j <= i; ++j, ++k) {
         iRow[k] = i;
         jCol[k] = j;
@@ -311,6 +334,7 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
     assert(k == nele_hess && "the Hessian structure does not match nnz_h_lag");
     return true;
   }
+  if (projected_) return projected_hessian(x, obj_factor, values);
   const Eigen::Map<const Eigen::VectorXd> multipliers(lambda, m);
   const Vector6d units = problem_.rod().properties.bending_wrench_units();
   if (n_ == 12) {
@@ -319,6 +343,36 @@ bool ShapeNlp::eval_h(Ipopt::Index n,
                                                                          Vector12d::Ones(), values);
   }
   return differenced_hessian<Vector6d, Matrix6d>(x, obj_factor, multipliers, units, values);
+}
+
+bool ShapeNlp::projected_hessian(const Ipopt::Number* x, double obj_factor, Ipopt::Number* values) {
+  if (!evaluate_at(x)) return false;  // ξ*(w_b)
+  using Matrix12 = Eigen::Matrix<double, 12, 12>;
+  Vector12d at;  // x̃ = (w̃_b, ξ̃*)
+  at << Eigen::Map<const Vector6d>(x), xi_.cwiseQuotient(scale_.tail<6>());
+  const Eigen::Map<const Eigen::VectorXd> none(nullptr, 0);
+  Vector12d at_x;
+  if (!lagrangian_gradient(at, obj_factor, none, at_x)) return false;
+  Matrix12 H;
+  for (int j = 0; j < 12; ++j) {
+    const double h =
+        std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(std::abs(at[j]), 1.0);
+    Vector12d shifted = at, at_shifted;
+    shifted[j] += h;
+    if (!lagrangian_gradient(shifted, obj_factor, none, at_shifted)) return false;
+    H.col(j) = (at_shifted - at_x) / h;
+  }
+  H = 0.5 * (H + H.transpose()).eval();
+  // ξ* minimises F at every w_b, so dξ*/dw_b = -H_ξξ⁻¹ H_ξw and ∇²_w F(w_b, ξ*(w_b)) is the Schur
+  // complement.
+  const Eigen::LDLT<Matrix6d> ldlt(H.bottomRightCorner<6, 6>());
+  const Matrix6d reduced =
+      H.topLeftCorner<6, 6>() - H.topRightCorner<6, 6>() * ldlt.solve(H.bottomLeftCorner<6, 6>());
+  if (!reduced.allFinite()) return false;
+  Ipopt::Index k = 0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j <= i; ++j) values[k++] = reduced(i, j);
+  return true;
 }
 
 template <class Vector>
@@ -375,7 +429,7 @@ bool ShapeNlp::eval_jac_g(Ipopt::Index n,
                           Ipopt::Index* iRow,
                           Ipopt::Index* jCol,
                           Ipopt::Number* values) {
-  assert(n == n_ && m == rows_ && nele_jac == n_ * rows_);
+  assert(n == unknowns() && m == rows_ && nele_jac == n_ * rows_);
   (void)n;
   (void)nele_jac;
   if (values == nullptr) {
@@ -433,12 +487,16 @@ void ShapeNlp::finalize_solution(Ipopt::SolverReturn status,
                                  Ipopt::Number obj_value,
                                  const Ipopt::IpoptData* /*ip_data*/,
                                  Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) {
-  assert(n == n_ && m == rows_);
+  assert(n == unknowns() && m == rows_);
   (void)n;
   outcome_.finalized = true;
   outcome_.solver_return = status;
   outcome_.objective = obj_value;
-  if (x != nullptr && n_ == 12) {
+  if (x != nullptr && projected_) {
+    evaluate_at(x);  // ξ*(w_b)
+    outcome_.x << Eigen::Map<const Vector6d>(x).cwiseProduct(scale_.head<6>()), xi_;
+    outcome_.w = problem_.world_wrench(outcome_.x).to_vector();
+  } else if (x != nullptr && n_ == 12) {
     outcome_.x = Eigen::Map<const Vector12d>(x).cwiseProduct(scale_);
     outcome_.w = problem_.world_wrench(outcome_.x).to_vector();
   } else if (x != nullptr) {

@@ -10,6 +10,7 @@
 // limited-memory (L-BFGS) approximation when ShapeOptimiserOptions::hessian says so.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include <IpIpoptApplication.hpp>
@@ -65,7 +66,10 @@ class ShapeNlp final : public Ipopt::TNLP {
            bool finite_difference_hessian,
            const std::optional<WrenchBounds>& admissible = std::nullopt);
   /// With a moving base (problem.base_moves()): the 12 unknowns x = (w_b, ξ) from `start`; the
-  /// admissible box bounds w_b.
+  /// admissible box bounds w_b. Without constraint rows, where ShapeProblem::
+  /// rigid_alignment_applies(), IPOPT sees w_b alone and ξ is eliminated: at every w_b it is the
+  /// best rigid placement of the shape, ξ*(w_b) = argmin_ξ F (ShapeProblem::align_base), and the
+  /// Hessian is the reduced one (the Schur complement of the differenced 12 × 12 Hessian).
   ShapeNlp(ShapeProblem& problem,
            const Vector12d& start,
            bool finite_difference_hessian,
@@ -171,6 +175,10 @@ class ShapeNlp final : public Ipopt::TNLP {
                            double obj_factor,
                            const Eigen::Map<const Eigen::VectorXd>& multipliers,
                            Vector& gradient);
+  /// The differenced ∇²F in x̃ at w̃ with ξ = ξ*(w_b), reduced to w̃: H_ww - H_wξ H_ξξ⁻¹ H_ξw.
+  bool projected_hessian(const Ipopt::Number* x, double obj_factor, Ipopt::Number* values);
+  /// The unknowns IPOPT sees: 6, or 12 with a moving base (6 when ξ is eliminated).
+  int unknowns() const { return projected_ ? 6 : n_; }
   template <class Vector, class Matrix>
   bool differenced_hessian(const Ipopt::Number* x,
                            double obj_factor,
@@ -187,6 +195,10 @@ class ShapeNlp final : public Ipopt::TNLP {
   bool finite_difference_hessian_;
   NlpOutcome outcome_;
   std::optional<WrenchBounds> admissible_;
+  // ξ eliminated: ξ*(w_b) of the last w_b aligned at (the next alignment's start).
+  bool projected_ = false;
+  Vector6d xi_ = Vector6d::Zero();
+  Vector6d aligned_at_ = Vector6d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 /// The name of an ApplicationReturnStatus, e.g. "Solve_Succeeded".

@@ -5,7 +5,9 @@
 //   ∇_x F = (Bᵀ ∇_w F, Jᵀ ∇_ξ F + ∇ motion term),   dg/dx = (dg/dw B, dg/dξ J).
 // Every block is linear in the configuration's derivative arrays (the chain rule), so evaluated on
 // the configuration of base_pose_derivatives it gives dg/dξ.
+#include <Eigen/Cholesky>
 #include <cmath>
+#include <limits>
 
 #include "optimisation/blocks/constraint_blocks.hpp"
 #include "rodshape/core/base_pose_derivatives.hpp"
@@ -148,6 +150,249 @@ void ShapeProblem::evaluate_moving_constraints() {
   dg_dx_.middleCols<3>(3).noalias() = dg_dw_.middleCols<3>(3) * R0;
   dg_dx_.middleCols<3>(6) = dg_dxi_.leftCols<3>();
   dg_dx_.rightCols<3>().noalias() = dg_dxi_.rightCols<3>() * J;
+}
+
+bool ShapeProblem::rigid_alignment_applies() const {
+  return base_motion_ && rod_.load.force.isZero(0.0) && rod_.load.moment.isZero(0.0) &&
+         target_.distance_weight > 0.0 &&
+         (target_.squared_distances || target_.distance_smoothing > 0.0);
+}
+
+namespace {
+/// align_base() stops at |∂F/∂ξ̃|∞ below this (ξ̃ = (δt / L, δφ)).
+constexpr double kAlignedGradient = 1e-12;
+/// align_base()'s projections start on the last closest point's interval alone.
+constexpr int kAlignReach = 0;
+/// A Newton step of align_base() this short in ξ̃ is the last (its error is its square).
+constexpr double kNegligibleStep = 1e-8;
+}  // namespace
+
+double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
+                                  Vector6d* gradient,
+                                  Matrix6d* hessian,
+                                  bool global,
+                                  std::vector<int>& intervals) {
+  intervals.resize(target_.points.size());
+  std::size_t k = 0;
+  const double L = rod_.properties.length;
+  const Pose& reference = base_motion_->reference;
+  const Eigen::Vector3d dt = L * xi_scaled.head<3>(), dphi = xi_scaled.tail<3>();
+  const Eigen::Matrix3d R0 = exp_so3(dphi) * reference.rotation;
+  const Eigen::Matrix3d Jl = left_jacobian_so3(dphi);
+  const Eigen::Vector3d p0 = reference.position + dt;
+  const double Wb = base_motion_->motion_weight * target_.distance_weight;
+  const double W2 = target_.distance_weight, delta = target_.distance_smoothing;
+  double cost = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
+  Vector6d g = Vector6d::Zero();
+  g << 2.0 * Wb * dt, (2.0 * Wb * L) * dphi;  // in ξ̃ = (δt / L, δφ)
+  Matrix6d H = (2.0 * Wb * L) * Matrix6d::Identity();
+  Eigen::Vector3d pull = Eigen::Vector3d::Zero();  // Σ W2 ρ'(d) (p - p0) × n̂
+  for (const Eigen::Vector3d& point : target_.points) {
+    // The point in the base's frame, q = R0ᵀ (p - p0), and its distance to the body-frame curve.
+    const Eigen::Vector3d q = R0.transpose() * (point - p0);
+    const CurveProjection projection =
+        global ? project_onto_curve(body_, q, body_balls_)
+               : project_from_interval(body_, q, align_intervals_[k], kAlignReach);
+    intervals[k++] = projection.interval;
+    const double d = projection.distance;
+    cost += W2 * distance_penalty(d);
+    if (gradient == nullptr) continue;
+    // The point seen from the base, q = R0ᵀ y with y = p - p0 (world), moves by dq = R0ᵀ J ξ̃,
+    // J = [-L I, [y]× J_l] (dR0 = [J_l dδφ]× R0); d dist = n̂ · R0 dq with n̂ the unit normal from
+    // the closest point c to p (world).
+    const Eigen::Vector3d y = point - p0;
+    Eigen::Matrix<double, 3, 6> J;
+    J << -L * Eigen::Matrix3d::Identity(), hat(y) * Jl;
+    const double slope = distance_term_slope(d);  // W2 ρ'(d)
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+    if (d > 0.0) {
+      normal = R0 * (q - projection.closest) / d;
+      g += slope * (J.transpose() * normal);
+    }
+    if (hessian == nullptr) continue;
+    // Newton: W2 ρ'' along n̂, W2 ρ'/d across it in the normal plane of the curve.
+    // The curve's unit tangent at the closest point: the derivative of the Hermite interpolant
+    // (curve_distance.cpp) of interval i at t.
+    const int i = projection.interval;
+    const double t = projection.t, h = body_.s[i + 1] - body_.s[i];
+    const Eigen::Vector3d d0 = body_.R[i] * body_.v[i], d1 = body_.R[i + 1] * body_.v[i + 1];
+    const Eigen::Vector3d body_tangent =
+        (6.0 * t * t - 6.0 * t) / h * (body_.p[i] - body_.p[i + 1]) +
+        (3.0 * t * t - 4.0 * t + 1.0) * d0 + (3.0 * t * t - 2.0 * t) * d1;
+    const Eigen::Vector3d tangent = (R0 * body_tangent).normalized();
+    // Across the tangent the distance curves by 1/d; along it by (1 - |Γ'|²/(|Γ'|² - r·Γ''))/d, r
+    // = q - Γ (the closest point slides as the point moves).
+    const Eigen::Vector3d body_second = (12.0 * t - 6.0) / (h * h) * (body_.p[i] - body_.p[i + 1]) +
+                                        (6.0 * t - 4.0) / h * d0 + (6.0 * t - 2.0) / h * d1;
+    const double speed = body_tangent.squaredNorm();
+    double slide = speed / (speed - (q - projection.closest).dot(body_second));
+    if (!std::isfinite(slide) || slide <= 0.0) slide = 1.0;
+    double along = 0.0, across = 0.0;
+    if (target_.squared_distances) {
+      along = across = 2.0 * W2;
+    } else if (delta > 0.0) {
+      const double root = std::sqrt(d * d + delta * delta);
+      along = W2 * delta * delta / (root * root * root);
+      across = W2 / root;
+    } else if (d > 0.0) {
+      across = W2 / d;
+    }
+    // At an end of the rod the closest point is the end itself: the distance to a point, curved
+    // along the tangent too.
+    const bool at_end = (projection.interval == 0 && projection.t == 0.0) ||
+                        (projection.interval == body_.nodes() - 2 && projection.t == 1.0);
+    const Eigen::Matrix3d across_plane =
+        Eigen::Matrix3d::Identity() - normal * normal.transpose() -
+        (at_end ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d(slide * tangent * tangent.transpose()));
+    const Eigen::Matrix3d M = along * normal * normal.transpose() + across * across_plane;
+    H.noalias() += J.transpose() * M * J;
+    // q's own second derivatives times W2 ρ'(d) n̂: ∂²q/∂a_j∂δφ = -L R0ᵀ [e_j]× J_l gives
+    // L W2 ρ' [n̂]× J_l; ∂²q/∂δφ² gives W2 ρ' J_lᵀ (n̂ yᵀ - (n̂ · y) I) J_l (symmetrised below
+    // with the J_l-derivative term, their sum being symmetric).
+    const Eigen::Matrix3d cross = (slope * L) * hat(normal) * Jl;
+    H.topRightCorner<3, 3>() += cross;
+    H.bottomLeftCorner<3, 3>() += cross.transpose();
+    const Eigen::Matrix3d turn =
+        normal * y.transpose() - normal.dot(y) * Eigen::Matrix3d::Identity();
+    H.bottomRightCorner<3, 3>().noalias() += slope * (Jl.transpose() * turn * Jl);
+    pull += slope * y.cross(normal);
+  }
+  if (hessian != nullptr) {
+    // The curvature of the parametrisation: ∂q/∂δφ = R0ᵀ [y]× J_l(δφ), J_l's own derivative
+    // (central differences) times the points' pull.
+    for (int b = 0; b < 3; ++b) {
+      constexpr double kStep = 1e-6;
+      const Eigen::Vector3d e = kStep * Eigen::Vector3d::Unit(b);
+      const Eigen::Matrix3d dJl =
+          (left_jacobian_so3(dphi + e) - left_jacobian_so3(dphi - e)) / (2.0 * kStep);
+      H.block<3, 1>(3, 3 + b).noalias() -= dJl.transpose() * pull;
+    }
+  }
+  if (gradient != nullptr) *gradient = g;
+  if (hessian != nullptr) *hessian = 0.5 * (H + H.transpose());
+  return cost;
+}
+
+void ShapeProblem::integrate_body(const Vector6d& w_b) {
+  ClampedRod body = rod_;
+  body.clamp = Pose{};
+  integrate(body, BaseWrench::from_vector(w_b), body_, Derivatives::None);
+  interval_balls(body_, body_balls_);
+}
+
+double ShapeProblem::alignment_cost(const Vector6d& w_b,
+                                    const Vector6d& xi,
+                                    Vector6d* gradient,
+                                    Matrix6d* hessian) {
+  integrate_body(w_b);
+  Vector6d at;
+  at << xi.head<3>() / rod_.properties.length, xi.tail<3>();
+  std::vector<int> intervals;
+  return aligned_cost(at, gradient, hessian, true, intervals);
+}
+
+namespace {
+double top_of(const Matrix6d& hessian) {
+  return std::max(1.0, hessian.diagonal().cwiseAbs().maxCoeff());
+}
+}  // namespace
+
+bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
+  integrate_body(w_b);
+  const double L = rod_.properties.length;
+  using Matrix6 = Matrix6d;
+  Vector6d at;
+  at << xi.head<3>() / L, xi.tail<3>();
+  Vector6d gradient;
+  Matrix6 hessian;
+  std::vector<int> found;
+  // The projections start from the last alignment's closest points (the whole curve the first
+  // time); one global projection of every point at the end catches a closest point that jumped.
+  const bool warm = align_intervals_.size() == target_.points.size();
+  double cost = aligned_cost(at, &gradient, &hessian, !warm, found);
+  align_intervals_.swap(found);
+  if (!std::isfinite(cost) || !gradient.allFinite() || !hessian.allFinite()) return false;
+  // Newton steps from the last ξ*, to a gradient at the rounding level of F's: ξ* enters
+  // the reduced gradient through H_wξ δξ. Shifted towards a gradient step until it descends. Then
+  // every point is projected onto the whole curve; where one comes closer elsewhere, again.
+  for (int round = 0; round < 4; ++round) {
+    for (int iteration = 0; iteration < 300; ++iteration) {
+      if (gradient.lpNorm<Eigen::Infinity>() <= kAlignedGradient) break;
+      // The Newton direction, the Hessian shifted until positive definite (no evaluation).
+      Vector6d step;
+      bool newton = true;
+      for (double shift = 0.0;; shift = shift == 0.0 ? 1e-8 * top_of(hessian) : 10.0 * shift) {
+        if (shift > 1e8 * top_of(hessian)) return false;
+        const Eigen::LDLT<Matrix6> ldlt(hessian + shift * Matrix6::Identity());
+        step = -ldlt.solve(gradient);
+        if (ldlt.isPositive() && step.allFinite()) break;
+        newton = false;
+      }
+      // The exact Hessian converges quadratically: a Newton step this short leaves an error of
+      // its square, below rounding, so ξ* is found without trying it.
+      if (newton && step.lpNorm<Eigen::Infinity>() <= kNegligibleStep) {
+        at += step;
+        break;
+      }
+      // Backtracking: Armijo, or, where F's differences are at its rounding, a gradient that falls.
+      bool moved = false;
+      const double length = step.lpNorm<Eigen::Infinity>();
+      for (double alpha = 1.0; alpha * length > 1e-2 * kNegligibleStep && !moved; alpha *= 0.5) {
+        Vector6d next_gradient;
+        Matrix6 next_hessian;
+        const double next_cost =
+            aligned_cost(at + alpha * step, &next_gradient, &next_hessian, false, found);
+        const bool descends =
+            next_cost <= cost + 1e-4 * alpha * gradient.dot(step) ||
+            (next_cost <= cost + 1e-14 * std::abs(cost) &&
+             next_gradient.lpNorm<Eigen::Infinity>() < 0.5 * gradient.lpNorm<Eigen::Infinity>());
+        if (std::isfinite(next_cost) && next_gradient.allFinite() && next_hessian.allFinite() &&
+            descends) {
+          at += alpha * step;
+          cost = next_cost;
+          gradient = next_gradient;
+          hessian = next_hessian;
+          align_intervals_.swap(found);
+          moved = true;
+        }
+      }
+      if (!moved) break;  // no descent left: at the minimiser to rounding
+    }
+    const double global_cost = aligned_cost(at, &gradient, &hessian, true, found);
+    if (!std::isfinite(global_cost) || !gradient.allFinite() || !hessian.allFinite()) return false;
+    align_intervals_.swap(found);
+    const bool jumped = global_cost < cost - 1e-13 * std::abs(cost);
+    cost = global_cost;
+    if (!jumped) break;
+  }
+  xi << L * at.head<3>(), at.tail<3>();
+  return gradient.lpNorm<Eigen::Infinity>() <= 1e-6;
+}
+
+void ShapeProblem::eliminate_base_pose(bool eliminated) {
+  eliminated_ = eliminated;
+  xi_star_.setZero();
+  align_intervals_.clear();
+  evaluated_ = false;
+}
+
+void ShapeProblem::evaluate_eliminated(const Vector6d& w_scaled) {
+  const Vector6d units = rod_.properties.bending_wrench_units();
+  const Vector6d w_b = w_scaled.cwiseProduct(units);
+  if (evaluated_ && w_b == x_.head<6>()) return;
+  Vector6d xi = xi_star_;
+  if (!align_base(w_b, xi)) {
+    breakdown_.cost = std::numeric_limits<double>::quiet_NaN();
+    cost_gradient_.setConstant(std::numeric_limits<double>::quiet_NaN());
+    evaluated_ = false;
+    return;
+  }
+  xi_star_ = xi;
+  Vector12d x;
+  x << w_b, xi;
+  evaluate_with_base(x);
+  // ∂F/∂w̃ = D ∂F/∂w_b at ξ*: ∂F/∂ξ = 0 there.
+  cost_gradient_ = gradient_x_.head<6>().cwiseProduct(units);
 }
 
 }  // namespace rodshape

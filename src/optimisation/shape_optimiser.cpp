@@ -107,6 +107,37 @@ std::vector<Vector12d> moving_starts(const ShapeProblem& problem,
   return x;
 }
 
+/// Whether a moving base's start is solved by the dense Newton over w_b alone, the base pose
+/// eliminated (ShapeProblem::eliminate_base_pose): no rows, no finite bound on w_b, a shape that
+/// moves rigidly with the base (rigid_alignment_applies) and the differenced Hessian.
+bool eliminated_newton_serves(const ShapeProblem& problem, bool finite_difference_hessian) {
+  const Vector12d lower = problem.variable_lower(), upper = problem.variable_upper();
+  return finite_difference_hessian && problem.constraint_count() == 0 &&
+         problem.rigid_alignment_applies() && !lower.head<6>().array().isFinite().any() &&
+         !upper.head<6>().array().isFinite().any();
+}
+
+/// The dense Newton over w_b with ξ = ξ*(w_b); the run's x = (w_b, ξ*) and w its world wrench.
+IpoptRun eliminated_newton(ShapeProblem& problem,
+                           const Vector12d& start,
+                           const ShapeOptimiserOptions& options) {
+  const Vector6d units = problem.rod().properties.bending_wrench_units();
+  std::optional<WrenchBounds> box = admissible_box(problem, start.head<6>(), options);
+  if (box) {  // in w̃ = w_b / D
+    box->lower.array() /= units.array();
+    box->upper.array() /= units.array();
+  }
+  problem.eliminate_base_pose(true);
+  IpoptRun run = unconstrained_newton(problem, start.head<6>().cwiseQuotient(units), options, box);
+  problem.evaluate(run.w);  // ξ*(w_b) at the final iterate
+  const bool aligned = std::isfinite(problem.cost());
+  run.x = problem.evaluated_variables();
+  problem.eliminate_base_pose(false);
+  if (!aligned) run.status = SolveStatus::NonFinite;
+  run.w = problem.world_wrench(run.x).to_vector();
+  return run;
+}
+
 StartResult run_start(IpoptSession& session,
                       ShapeProblem& problem,
                       const Vector6d& start,
@@ -114,8 +145,13 @@ StartResult run_start(IpoptSession& session,
                       const Vector12d* moving_start = nullptr) {
   StartResult result;
   if (moving_start) {
-    result.run = session.run(problem, *moving_start,
-                             admissible_box(problem, moving_start->head<6>(), options));
+    // Where the dense Newton over w_b does not converge (a start far down the moving base's flat
+    // valley), IPOPT from the same start.
+    const bool newton = eliminated_newton_serves(problem, session.finite_difference_hessian());
+    if (newton) result.run = eliminated_newton(problem, *moving_start, options);
+    if (!newton || result.run.status != SolveStatus::Converged)
+      result.run = session.run(problem, *moving_start,
+                               admissible_box(problem, moving_start->head<6>(), options));
     problem.evaluate_with_base(result.run.x);
   } else if (unconstrained_newton_serves(problem, session.finite_difference_hessian())) {
     result.run =

@@ -112,6 +112,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
 ShapeProblem::~ShapeProblem() = default;
 
 void ShapeProblem::evaluate(const Vector6d& w) {
+  if (eliminated_) return evaluate_eliminated(w);
   if (evaluated_ && w == w_) return;
   integrate(rod_, BaseWrench::from_vector(w), configuration_, Derivatives::AllNodes);
   ++integrations_;

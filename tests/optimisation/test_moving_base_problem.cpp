@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "optimisation/optimisation_fixtures.hpp"
@@ -151,6 +152,156 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   ShapeProblem fixed(rod, target);
   const ShapeResult clamped = optimise_shape(fixed, guess, options);
   EXPECT_GT(clamped.cost.max_distance, 0.01) << clamped.brief();
+}
+
+TEST(MovingBaseProblem, WithoutLoadsThePoseIsEliminatedAndTheOptimumIsThatOfTheTwelveUnknowns) {
+  // No distributed load: the shape in the base's frame depends on w_b alone, so without constraint
+  // rows IPOPT sees w_b and ξ is the best rigid placement at each w_b (align_base). Its optimum
+  // must be stationary in all 12 unknowns and the same as the 12-unknown NLP's (forced here by an
+  // inactive base workspace row).
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  ShapeTarget target;  // the paper's smoothed Σ dist, points 1 mm off the moved shape
+  for (int i : {0, 5, 12, 20, 28, 36, 40})
+    target.points.push_back(truth.p[i] + 1e-3 * truth.R[i].col(i % 2));
+  target.energy_weight = 1e-3;
+  target.distance_weight = 1.0;
+  BaseMotion motion;
+  motion.reference = rod.clamp;
+  const BaseWrench guess{rod.clamp.rotation * 0.2 * wb.head<3>(),
+                         rod.clamp.rotation * 0.2 * wb.tail<3>()};
+  ShapeOptimiserOptions options;
+  options.max_iterations = 500;
+
+  ShapeProblem projected(rod, target);
+  projected.move_base(motion);
+  ASSERT_TRUE(projected.rigid_alignment_applies());
+  const ShapeResult result = optimise_shape(projected, guess, options);
+  ASSERT_TRUE(result.converged()) << result.brief();
+  const Pose base{result.configuration.p[0], result.configuration.R[0]};
+  Vector12d x;
+  x << base.rotation.transpose() * result.base_wrench.force,
+      base.rotation.transpose() * result.base_wrench.moment, base.position - rod.clamp.position,
+      log_so3(base.rotation * rod.clamp.rotation.transpose());
+  projected.evaluate_with_base(x);
+  Vector12d scale;
+  scale << testing::wrench_scale(rod), Eigen::Vector3d::Constant(rod.properties.length),
+      Eigen::Vector3d::Ones();
+  const Vector12d gradient = projected.variable_gradient();
+  EXPECT_LT(gradient.cwiseProduct(scale).lpNorm<Eigen::Infinity>(), 1e-7) << gradient.transpose();
+  // align_base from ξ = 0 at the optimum's w_b finds the optimum's ξ.
+  Vector6d xi = Vector6d::Zero();
+  ASSERT_TRUE(projected.align_base(x.head<6>(), xi));
+  EXPECT_LT((xi - x.tail<6>()).lpNorm<Eigen::Infinity>(), 1e-7) << xi.transpose();
+
+  Workspace far;  // a base workspace row that is never active
+  far.box = Workspace::Box{rod.clamp.position - Eigen::Vector3d::Constant(10.0),
+                           rod.clamp.position + Eigen::Vector3d::Constant(10.0)};
+  motion.workspace = far;
+  ShapeProblem twelve(rod, target);
+  twelve.move_base(motion);
+  ASSERT_GT(twelve.constraint_count(), 0);
+  const ShapeResult reference = optimise_shape(twelve, guess, options);
+  ASSERT_TRUE(reference.converged()) << reference.brief();
+  EXPECT_NEAR(result.cost.cost, reference.cost.cost, 1e-9 * reference.cost.cost);
+  EXPECT_LT((result.configuration.p[0] - reference.configuration.p[0]).norm(), 1e-6);
+  EXPECT_LT((result.configuration.tip().position - reference.configuration.tip().position).norm(),
+            1e-6);
+  EXPECT_LE(result.ipopt.iterations, reference.ipopt.iterations);
+}
+
+TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences) {
+  // align_base() takes Newton steps on alignment_cost's gradient and Hessian in ξ̃ = (δt / L, δφ):
+  // both against central differences (of the cost, of the gradient), away from the alignment's
+  // optimum and with a turn δφ ≠ 0 (the left Jacobian's own derivative enters), for the smoothed
+  // Σ dist and for Σ dist². Points 5–20 mm from the curve, one beyond the tip (its closest point
+  // is the end: a point's distance, curved along the tangent too).
+  // FD error model: the shape is fixed, so F(ξ̃) is the points' distances to a cubic curve after a
+  // rigid motion, smooth where no closest point changes interval. Central differences err by
+  // O(η²) (truncation) + O(ε |F| / η) (round-off): the truncation at η/2 is bounded by
+  // 2 |FD(η) - FD(η/2)| (Richardson: FD(η/2) errs by a third of their difference, with margin), the
+  // round-off by 1e3 ε |F| / (η/2) (a few hundred operations per point). A missing or wrong term of
+  // the Hessian (branch elim's, 38cb6b2: errors of 2–12 % of |H|) exceeds both by far.
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  const double L = rod.properties.length;
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  for (const bool squared : {false, true}) {
+    ShapeTarget target;
+    const double offsets[] = {0.005, 0.012, 0.02, 0.008, 0.015, 0.01};
+    const int nodes[] = {3, 10, 17, 24, 31, 37};
+    for (int k = 0; k < 6; ++k)
+      target.points.push_back(truth.p[nodes[k]] + offsets[k] * truth.R[nodes[k]].col(k % 2));
+    target.points.push_back(truth.p[40] + 0.01 * truth.R[40].col(2) + 0.004 * truth.R[40].col(0));
+    target.energy_weight = 1e-3;
+    target.distance_weight = 1.0;
+    target.squared_distances = squared;
+    ShapeProblem problem(rod, target);
+    BaseMotion motion;
+    motion.reference = rod.clamp;
+    motion.motion_weight = 0.3;
+    problem.move_base(motion);
+    ASSERT_TRUE(problem.rigid_alignment_applies());
+    Vector6d xi_optimum = Vector6d::Zero();
+    ASSERT_TRUE(problem.align_base(wb, xi_optimum));
+    Vector6d offset;
+    offset << 0.004, -0.003, 0.005, 0.03, -0.05, 0.04;
+    for (const Vector6d& xi : {Vector6d(Vector6d::Zero()), Vector6d(xi_optimum + offset)}) {
+      Vector6d gradient;
+      Matrix6d hessian;
+      const double cost = problem.alignment_cost(wb, xi, &gradient, &hessian);
+      ASSERT_TRUE(std::isfinite(cost));
+      const auto at = [&](int j, double step) {  // ξ with ξ̃_j moved by step
+        Vector6d moved_xi = xi;
+        moved_xi[j] += j < 3 ? L * step : step;
+        return moved_xi;
+      };
+      const auto differences = [&](double eta, Vector6d& cost_fd, Matrix6d& gradient_fd) {
+        for (int j = 0; j < 6; ++j) {
+          Vector6d g_plus, g_minus;
+          const double f_plus = problem.alignment_cost(wb, at(j, eta), &g_plus, nullptr);
+          const double f_minus = problem.alignment_cost(wb, at(j, -eta), &g_minus, nullptr);
+          cost_fd[j] = (f_plus - f_minus) / (2.0 * eta);
+          gradient_fd.col(j) = (g_plus - g_minus) / (2.0 * eta);
+        }
+      };
+      constexpr double kEta = 1e-4;
+      Vector6d cost_fd, cost_fd_half;
+      Matrix6d gradient_fd, gradient_fd_half;
+      differences(kEta, cost_fd, gradient_fd);
+      differences(0.5 * kEta, cost_fd_half, gradient_fd_half);
+      const double round_off =
+          1e3 * std::numeric_limits<double>::epsilon() * std::abs(cost) / (0.5 * kEta);
+      const double gradient_bound =
+          2.0 * (cost_fd - cost_fd_half).lpNorm<Eigen::Infinity>() + round_off;
+      const double hessian_bound =
+          2.0 * (gradient_fd - gradient_fd_half).lpNorm<Eigen::Infinity>() +
+          round_off * std::max(1.0, gradient.lpNorm<Eigen::Infinity>() / std::abs(cost));
+      const double gradient_error = (gradient - cost_fd_half).lpNorm<Eigen::Infinity>();
+      const double hessian_error = (hessian - gradient_fd_half).lpNorm<Eigen::Infinity>();
+      RecordProperty(std::string(squared ? "squared" : "smoothed") + (xi.isZero() ? "_0" : "_off") +
+                         "_hessian_error",
+                     testing::scientific(hessian_error));
+      EXPECT_LE(gradient_error, gradient_bound)
+          << "squared " << squared << ", |∇F|∞ " << gradient.lpNorm<Eigen::Infinity>();
+      EXPECT_LE(hessian_error, hessian_bound)
+          << "squared " << squared << ", |H|∞ " << hessian.lpNorm<Eigen::Infinity>() << "\n"
+          << hessian << "\nFD\n"
+          << gradient_fd_half;
+      // The bounds are meaningful: far below the entries they check.
+      EXPECT_LT(hessian_bound, 1e-3 * hessian.lpNorm<Eigen::Infinity>());
+      EXPECT_LT(gradient_bound, 1e-3 * gradient.lpNorm<Eigen::Infinity>());
+    }
+  }
 }
 
 }  // namespace

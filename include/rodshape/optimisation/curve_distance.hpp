@@ -54,6 +54,14 @@ CurveProjection project_onto_curve(const RodConfiguration& configuration,
 CurveProjection project_near_node(const RodConfiguration& configuration,
                                   const Eigen::Vector3d& point,
                                   int node);
+/// The minimiser of |Γ(s) - p| over the intervals within `reach` of `interval`, the window widened
+/// while its best lies at its first or last end (a descent along the curve): a warm start from
+/// the last closest point of a point that moved little. Local: a closer point elsewhere on Γ is
+/// only found by project_onto_curve.
+CurveProjection project_from_interval(const RodConfiguration& configuration,
+                                      const Eigen::Vector3d& point,
+                                      int interval,
+                                      int reach = 1);
 /// d dist(Γ, p) / dw by the envelope argument: the closest point moves with the curve, but at an
 /// interior minimum (Γ(s) - p) ⟂ Γ'(s), so d dist/dw = (Γ(s) - p)ᵀ/dist · dΓ(s)/dw at fixed s,
 /// with dΓ(s)/dw the Hermite interpolant of dp_i/dw and d(p'_i)/dw = R_i (δv_i - v_i × θ_i).

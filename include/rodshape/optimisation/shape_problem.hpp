@@ -120,6 +120,33 @@ class ShapeProblem {
   /// |δφ_i| ≤ BaseMotion::kMaxTurn.
   Vector12d variable_lower() const;
   Vector12d variable_upper() const;
+  /// Whether the base pose can be aligned without integrating (align_base): a moving base, no
+  /// distributed load (the shape in the base's frame then depends on w_b alone), a smooth distance
+  /// term (distance_smoothing > 0 or squared distances) and W2 > 0.
+  bool rigid_alignment_applies() const;
+  /// ξ minimising F(w_b, ξ) for the base-frame wrench w_b (the best rigid placement of its shape,
+  /// the motion term included): Newton steps from `xi`, which returns the minimiser. The shape is
+  /// integrated once in the base's frame and moved rigidly; evaluate_with_base()'s state is left as
+  /// it was. False when no descent is found or a value is not finite.
+  bool align_base(const Vector6d& w_b, Vector6d& xi);
+  /// What align_base() minimises, at ξ about the reference for the base-frame wrench w_b: F less
+  /// the energy term (constant in ξ), every point projected onto the whole curve, with its
+  /// gradient and Newton Hessian in ξ̃ = (δt / L, δφ) (either may be null). Integrates once.
+  double alignment_cost(const Vector6d& w_b,
+                        const Vector6d& xi,
+                        Vector6d* gradient,
+                        Matrix6d* hessian);
+  /// The base pose eliminated (rigid_alignment_applies(), no constraint rows): evaluate(w̃) takes
+  /// w̃ = w_b / D (D the bending wrench units, as ShapeNlp scales w_b), places the shape of the
+  /// base-frame wrench w_b at ξ*(w_b) = argmin_ξ F (align_base, from the last ξ*, ξ = 0 at the
+  /// start) and evaluates at (w_b, ξ*); cost() is F(w_b, ξ*(w_b)), cost_gradient() D ∂F/∂w_b
+  /// there, which is the total derivative of the reduced F (∂F/∂ξ = 0 at ξ*), so its derivative is
+  /// the reduced Hessian. A failed alignment leaves a NaN cost. For the dense Newton over w̃ alone
+  /// (shape_optimiser.cpp); off again with false.
+  void eliminate_base_pose(bool eliminated);
+  bool base_pose_eliminated() const { return eliminated_; }
+  /// x = (w_b, ξ*) of the last evaluation with the pose eliminated.
+  const Vector12d& evaluated_variables() const { return x_; }
 
   // Results of the last evaluate().
   double cost() const { return breakdown_.cost; }
@@ -172,6 +199,25 @@ class ShapeProblem {
   void set_clamp(const Vector12d& x);
   Vector6d distance_gradient_sum(const RodConfiguration& derivatives) const;
   void evaluate_moving_constraints();
+  // The base pose eliminated: evaluate() aligns ξ* (from xi_star_) at the w_b it is given.
+  bool eliminated_ = false;
+  Vector6d xi_star_ = Vector6d::Zero();
+  void evaluate_eliminated(const Vector6d& w_b);
+  // align_base(): the shape in the base's frame and its balls (integrate_body).
+  RodConfiguration body_;
+  std::vector<IntervalBall> body_balls_;
+  void integrate_body(const Vector6d& w_b);
+  // The interval of each point's closest point at the last accepted alignment step: the next
+  // projections' warm start.
+  std::vector<int> align_intervals_;
+  /// F(w_b, ξ) less the energy term (constant in ξ) on body_, with its gradient and Hessian in
+  /// ξ̃ = (δt / L, δφ). With `global` each point's closest point on the whole curve, else the one
+  /// found from align_intervals_ by project_from_interval; the intervals into `intervals`.
+  double aligned_cost(const Vector6d& xi_scaled,
+                      Vector6d* gradient,
+                      Matrix6d* hessian,
+                      bool global,
+                      std::vector<int>& intervals);
 };
 
 }  // namespace rodshape
