@@ -128,7 +128,8 @@ IpoptRun eliminated_newton(ShapeProblem& problem,
     box->upper.array() /= units.array();
   }
   problem.eliminate_base_pose(true);
-  IpoptRun run = unconstrained_newton(problem, start.head<6>().cwiseQuotient(units), options, box);
+  IpoptRun run = unconstrained_newton(problem, start.head<6>().cwiseQuotient(units), options, box,
+                                      detail::HessianModel::DifferencedEveryIteration);
   problem.evaluate(run.w);  // ξ*(w_b) at the final iterate
   const bool aligned = std::isfinite(problem.cost());
   run.x = problem.evaluated_variables();

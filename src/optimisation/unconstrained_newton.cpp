@@ -178,7 +178,9 @@ bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_differ
 IpoptRun unconstrained_newton(ShapeProblem& problem,
                               const Vector6d& start,
                               const ShapeOptimiserOptions& options,
-                              const std::optional<WrenchBounds>& admissible) {
+                              const std::optional<WrenchBounds>& admissible,
+                              HessianModel hessian_model) {
+  const bool updated = hessian_model == HessianModel::Sr1Updated;
   Newton newton(problem, admissible);
   Iterate at, trial;
   at.w = start;
@@ -203,8 +205,8 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
     if (iteration >= options.max_iterations)
       return ended(IpoptEnd::MaximumIterationsExceeded, at, iteration, false);
 
-    // The model: differenced at the start, SR1-updated after every step.
-    if (iteration == 0 && !newton.difference_model(at))
+    // The model: differenced at the start, SR1-updated after every step (or differenced anew).
+    if ((iteration == 0 || !updated) && !newton.difference_model(at))
       return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
     Search search = Search::TooSmall;
     for (;;) {
@@ -224,7 +226,7 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
       return last_acceptable
                  ? ended(IpoptEnd::SolvedToAcceptableLevel, *last_acceptable, iteration, false)
                  : ended(IpoptEnd::SearchDirectionBecomesTooSmall, at, iteration, false);
-    newton.update_model(at, trial);
+    if (updated) newton.update_model(at, trial);
     at = trial;
   }
 }

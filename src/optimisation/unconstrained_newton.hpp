@@ -61,12 +61,19 @@ bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_differ
 /// eq. 6.26: the update would be huge or undefined) or not finite.
 void sr1_update(const Vector6d& s, const Vector6d& y, Matrix6d& B);
 
+/// The Hessian model of the iterations: differenced once and SR1-updated (the default), or
+/// differenced at every iteration as IPOPT does (the moving base's eliminated problem, whose
+/// reduced F is flat along the base's motion: there SR1's path ended a step of the two-Panda task
+/// of tests/python at the iteration limit).
+enum class HessianModel { Sr1Updated, DifferencedEveryIteration };
+
 /// Minimises F from `start` (F not evaluated outside `admissible`, when given; `start` lies
 /// inside). The result reads as an IPOPT run's (IpoptDetails::solver says which solver it was);
 /// the problem is left evaluated at some iterate. The iterations do not allocate.
 IpoptRun unconstrained_newton(ShapeProblem& problem,
                               const Vector6d& start,
                               const ShapeOptimiserOptions& options,
-                              const std::optional<WrenchBounds>& admissible = std::nullopt);
+                              const std::optional<WrenchBounds>& admissible = std::nullopt,
+                              HessianModel hessian_model = HessianModel::Sr1Updated);
 
 }  // namespace rodshape::detail
