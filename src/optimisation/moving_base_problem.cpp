@@ -274,9 +274,15 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
 }
 
 void ShapeProblem::integrate_body(const Vector6d& w_b) {
-  ClampedRod body = rod_;
-  body.clamp = Pose{};
-  integrate(body, BaseWrench::from_vector(w_b), body_, Derivatives::None);
+  // The rod in its base's frame: the clamp at the identity for this integration only (rod_ itself,
+  // not a copy, so that the evaluation does not allocate), put back however the call ends.
+  struct ClampRestored {
+    ClampedRod& rod;
+    Pose clamp;
+    ~ClampRestored() { rod.clamp = clamp; }
+  } restore{rod_, rod_.clamp};
+  rod_.clamp = Pose{};
+  integrate(rod_, BaseWrench::from_vector(w_b), body_, Derivatives::None);
   interval_balls(body_, body_balls_);
 }
 
@@ -305,7 +311,7 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
   at << xi.head<3>() / L, xi.tail<3>();
   Vector6d gradient;
   Matrix6 hessian;
-  std::vector<int> found;
+  std::vector<int>& found = align_found_;  // swapped with align_intervals_: both keep capacity
   // The projections start from the last alignment's closest points (the whole curve the first
   // time); one global projection of every point at the end catches a closest point that jumped.
   const bool warm = align_intervals_.size() == target_.points.size();

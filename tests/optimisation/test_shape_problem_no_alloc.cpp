@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <atomic>
+#include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "rodshape/core/so3.hpp"
+#include "rodshape/optimisation/base_motion.hpp"
 #include "rodshape/optimisation/shape_problem.hpp"
 #include "support/allocation_counter.hpp"
 #include "support/solver_fixtures.hpp"
@@ -96,6 +98,44 @@ TEST(ShapeProblemNoAlloc, EvaluateAllocatesNothingAfterConstruction) {
       EXPECT_GT(problem.cost(), 0.0);
     }
   }
+}
+
+// The moving base with its pose eliminated (issue 21, the dense Newton's problem): after a first
+// call has sized the base-frame shape and the alignment's scratch, evaluate(w̃) (an integration in
+// the base's frame, align_base's Newton steps, the evaluation at (w_b, ξ*)) allocates nothing.
+TEST(ShapeProblemNoAlloc, EliminatedBasePoseEvaluateAllocatesNothingAfterTheFirstCall) {
+  ClampedRod rod;  // no distributed load: the shape in the base's frame depends on w_b alone
+  rod.properties.length = 0.29;
+  rod.properties.K_rot = Eigen::Vector3d(0.04, 0.04, 0.028);
+  rod.properties.K_tra = Eigen::Vector3d(426.67, 426.67, 1280.0);
+  rod.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, 0.3));
+  rod.intervals = 32;
+  rod.validate();
+  ShapeTarget target;
+  target.points = {{0.02, 0.05, 0.1}, {0.0, 0.1, 0.2}, {-0.03, 0.12, 0.22}};
+  ShapeProblem problem(rod, target);
+  BaseMotion motion;
+  motion.reference = rod.clamp;
+  problem.move_base(motion);
+  ASSERT_TRUE(problem.rigid_alignment_applies());
+  problem.eliminate_base_pose(true);
+  Vector6d w1, w2, w3;  // in bending units
+  w1 << 0.1, -0.2, 0.3, 0.05, -0.02, 0.01;
+  w2 << -0.2, 0.1, 0.4, -0.03, 0.04, 0.02;
+  w3 << -0.1, 0.2, 0.3, -0.04, 0.03, 0.02;
+  problem.evaluate(w1);  // sizes the shape, its balls and the scratch
+  ASSERT_TRUE(std::isfinite(problem.cost()));
+  for (const Vector6d* w : {&w2, &w3, &w3}) {
+    const auto [news, mallocs] = count_allocations([&] { problem.evaluate(*w); });
+    EXPECT_EQ(news, 0) << "operator new calls";
+    EXPECT_EQ(mallocs, 0) << "malloc calls";
+    EXPECT_TRUE(std::isfinite(problem.cost()));
+  }
+  // The clamp is the evaluated base pose (ξ* about the reference), not the base frame's identity
+  // the alignment integrates in.
+  const Pose base = problem.base_pose(problem.evaluated_variables());
+  EXPECT_EQ(problem.rod().clamp.position, base.position);
+  EXPECT_EQ(problem.rod().clamp.rotation, base.rotation);
 }
 
 }  // namespace

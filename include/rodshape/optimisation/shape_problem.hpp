@@ -210,6 +210,7 @@ class ShapeProblem {
   // The interval of each point's closest point at the last accepted alignment step: the next
   // projections' warm start.
   std::vector<int> align_intervals_;
+  std::vector<int> align_found_;  // align_base()'s new closest intervals (scratch)
   /// F(w_b, ξ) less the energy term (constant in ξ) on body_, with its gradient and Hessian in
   /// ξ̃ = (δt / L, δφ). With `global` each point's closest point on the whole curve, else the one
   /// found from align_intervals_ by project_from_interval; the intervals into `intervals`.
