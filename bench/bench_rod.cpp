@@ -26,14 +26,7 @@ ClampedRod rubber_band(int intervals) {
   return samples::rubber_band(ConstitutiveModel::Cosserat, intervals);
 }
 
-/// The bundled example's target: the tip 0.12 m aside, 0.22 m up, turned 90° about y.
-Pose bent_tip() {
-  Pose pose;
-  pose.position = {0.12, 0.0, 0.22};
-  pose.rotation =
-      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  return pose;
-}
+using samples::bent_tip;
 
 /// A generic 3D wrench: bending about both axes, torsion, shear and tension.
 BaseWrench generic_wrench() { return {{0.3, -0.2, 0.5}, {0.02, -0.03, 0.01}}; }

@@ -167,6 +167,53 @@ constexpr int kAlignReach = 0;
 constexpr double kNegligibleStep = 1e-8;
 }  // namespace
 
+namespace {
+/// The Hessian of one point's distance term in the world point, W2 ρ''(d) along the normal n̂ and
+/// W2 ρ'(d)/d across it in the normal plane of the curve (body_ is the shape in the base's frame,
+/// q the point there, R0 the base's rotation). The curve's unit tangent at the closest point is the
+/// derivative of the Hermite interpolant (curve_distance.cpp) of interval i at t; along it the
+/// distance curves by (1 - |Γ'|²/(|Γ'|² - r·Γ''))/d, r = q - Γ (the closest point slides as the
+/// point moves). At an end of the rod the closest point is the end itself: the distance to a
+/// point, curved along the tangent too.
+Eigen::Matrix3d distance_curvature(const RodConfiguration& body,
+                                   const CurveProjection& projection,
+                                   const Eigen::Vector3d& q,
+                                   const Eigen::Matrix3d& R0,
+                                   const Eigen::Vector3d& normal,
+                                   double d,
+                                   const ShapeTarget& target) {
+  const double W2 = target.distance_weight, delta = target.distance_smoothing;
+  const int i = projection.interval;
+  const double t = projection.t, h = body.s[i + 1] - body.s[i];
+  const Eigen::Vector3d d0 = body.R[i] * body.v[i], d1 = body.R[i + 1] * body.v[i + 1];
+  const Eigen::Vector3d body_tangent = (6.0 * t * t - 6.0 * t) / h * (body.p[i] - body.p[i + 1]) +
+                                       (3.0 * t * t - 4.0 * t + 1.0) * d0 +
+                                       (3.0 * t * t - 2.0 * t) * d1;
+  const Eigen::Vector3d tangent = (R0 * body_tangent).normalized();
+  const Eigen::Vector3d body_second = (12.0 * t - 6.0) / (h * h) * (body.p[i] - body.p[i + 1]) +
+                                      (6.0 * t - 4.0) / h * d0 + (6.0 * t - 2.0) / h * d1;
+  const double speed = body_tangent.squaredNorm();
+  double slide = speed / (speed - (q - projection.closest).dot(body_second));
+  if (!std::isfinite(slide) || slide <= 0.0) slide = 1.0;
+  double along = 0.0, across = 0.0;
+  if (target.squared_distances) {
+    along = across = 2.0 * W2;
+  } else if (delta > 0.0) {
+    const double root = std::sqrt(d * d + delta * delta);
+    along = W2 * delta * delta / (root * root * root);
+    across = W2 / root;
+  } else if (d > 0.0) {
+    across = W2 / d;
+  }
+  const bool at_end = (projection.interval == 0 && projection.t == 0.0) ||
+                      (projection.interval == body.nodes() - 2 && projection.t == 1.0);
+  const Eigen::Matrix3d across_plane =
+      Eigen::Matrix3d::Identity() - normal * normal.transpose() -
+      (at_end ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d(slide * tangent * tangent.transpose()));
+  return along * normal * normal.transpose() + across * across_plane;
+}
+}  // namespace
+
 double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
                                   Vector6d* gradient,
                                   Matrix6d* hessian,
@@ -181,7 +228,7 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
   const Eigen::Matrix3d Jl = left_jacobian_so3(dphi);
   const Eigen::Vector3d p0 = reference.position + dt;
   const double Wb = base_motion_->motion_weight * target_.distance_weight;
-  const double W2 = target_.distance_weight, delta = target_.distance_smoothing;
+  const double W2 = target_.distance_weight;
   double cost = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
   Vector6d g = Vector6d::Zero();
   g << 2.0 * Wb * dt, (2.0 * Wb * L) * dphi;  // in ξ̃ = (δt / L, δφ)
@@ -211,40 +258,7 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
     }
     if (hessian == nullptr) continue;
     // Newton: W2 ρ'' along n̂, W2 ρ'/d across it in the normal plane of the curve.
-    // The curve's unit tangent at the closest point: the derivative of the Hermite interpolant
-    // (curve_distance.cpp) of interval i at t.
-    const int i = projection.interval;
-    const double t = projection.t, h = body_.s[i + 1] - body_.s[i];
-    const Eigen::Vector3d d0 = body_.R[i] * body_.v[i], d1 = body_.R[i + 1] * body_.v[i + 1];
-    const Eigen::Vector3d body_tangent =
-        (6.0 * t * t - 6.0 * t) / h * (body_.p[i] - body_.p[i + 1]) +
-        (3.0 * t * t - 4.0 * t + 1.0) * d0 + (3.0 * t * t - 2.0 * t) * d1;
-    const Eigen::Vector3d tangent = (R0 * body_tangent).normalized();
-    // Across the tangent the distance curves by 1/d; along it by (1 - |Γ'|²/(|Γ'|² - r·Γ''))/d, r
-    // = q - Γ (the closest point slides as the point moves).
-    const Eigen::Vector3d body_second = (12.0 * t - 6.0) / (h * h) * (body_.p[i] - body_.p[i + 1]) +
-                                        (6.0 * t - 4.0) / h * d0 + (6.0 * t - 2.0) / h * d1;
-    const double speed = body_tangent.squaredNorm();
-    double slide = speed / (speed - (q - projection.closest).dot(body_second));
-    if (!std::isfinite(slide) || slide <= 0.0) slide = 1.0;
-    double along = 0.0, across = 0.0;
-    if (target_.squared_distances) {
-      along = across = 2.0 * W2;
-    } else if (delta > 0.0) {
-      const double root = std::sqrt(d * d + delta * delta);
-      along = W2 * delta * delta / (root * root * root);
-      across = W2 / root;
-    } else if (d > 0.0) {
-      across = W2 / d;
-    }
-    // At an end of the rod the closest point is the end itself: the distance to a point, curved
-    // along the tangent too.
-    const bool at_end = (projection.interval == 0 && projection.t == 0.0) ||
-                        (projection.interval == body_.nodes() - 2 && projection.t == 1.0);
-    const Eigen::Matrix3d across_plane =
-        Eigen::Matrix3d::Identity() - normal * normal.transpose() -
-        (at_end ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d(slide * tangent * tangent.transpose()));
-    const Eigen::Matrix3d M = along * normal * normal.transpose() + across * across_plane;
+    const Eigen::Matrix3d M = distance_curvature(body_, projection, q, R0, normal, d, target_);
     H.noalias() += J.transpose() * M * J;
     // q's own second derivatives times W2 ρ'(d) n̂: ∂²q/∂a_j∂δφ = -L R0ᵀ [e_j]× J_l gives
     // L W2 ρ' [n̂]× J_l; ∂²q/∂δφ² gives W2 ρ' J_lᵀ (n̂ yᵀ - (n̂ · y) I) J_l (symmetrised below

@@ -1,5 +1,8 @@
 #include "rodshape/samples/rubber_band.hpp"
 
+#include <Eigen/Geometry>
+#include <numbers>
+
 namespace rodshape::samples {
 
 RodDescription rubber_band_description(ConstitutiveModel model) {
@@ -20,6 +23,14 @@ ClampedRod rubber_band(ConstitutiveModel model, int intervals) {
   rod.intervals = intervals;
   rod.validate();
   return rod;
+}
+
+Pose bent_tip() {
+  Pose pose;
+  pose.position = {0.12, 0.0, 0.22};
+  pose.rotation =
+      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  return pose;
 }
 
 }  // namespace rodshape::samples

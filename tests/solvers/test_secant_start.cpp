@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "solvers/secant_start.hpp"
@@ -22,14 +23,7 @@ namespace {
 using testing::CompareMatrices;
 using testing::kEps;
 
-/// The bundled example's bent tip: 0.12 m aside, 0.22 m up, turned 90° about y.
-Pose bent_tip() {
-  Pose pose;
-  pose.position = {0.12, 0.0, 0.22};
-  pose.rotation =
-      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  return pose;
-}
+using samples::bent_tip;
 
 /// Euler's point w - J⁻¹ r for `tip` from the exact residual and Jacobian at w.
 Vector6d euler_point(const ClampedRod& rod, const TipCondition& tip, const Vector6d& w) {

@@ -45,14 +45,7 @@ void expect_same_configuration(const RodConfiguration& got, const RodConfigurati
   }
 }
 
-/// The bundled example's target: the tip 0.12 m aside, 0.22 m up, turned 90° about y.
-Pose bent_tip() {
-  Pose pose;
-  pose.position = {0.12, 0.0, 0.22};
-  pose.rotation =
-      Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
-  return pose;
-}
+using samples::bent_tip;
 
 TEST(SolveOutput, ConfigurationIsTheIntegrationOfTheSolutionAtEachLevel) {
   const ClampedRod rod = samples::rubber_band(ConstitutiveModel::Cosserat, 40);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_properties.hpp"
 
 namespace rodshape::samples {
@@ -15,5 +16,9 @@ RodDescription rubber_band_description(ConstitutiveModel model = ConstitutiveMod
 
 /// The band clamped at the origin with `intervals` integration intervals (validated).
 ClampedRod rubber_band(ConstitutiveModel model = ConstitutiveModel::Cosserat, int intervals = 100);
+
+/// The bundled example's held tip (examples/rubber_band.yaml): 0.12 m aside, 0.22 m up, turned 90°
+/// about y.
+Pose bent_tip();
 
 }  // namespace rodshape::samples
