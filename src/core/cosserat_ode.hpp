@@ -181,6 +181,27 @@ RODSHAPE_ALWAYS_INLINE inline void store(double* column, int j, const V& lanes) 
   std::memcpy(column + j, &lanes, sizeof(V));
 }
 
+/// A Runge–Kutta stage of the tangent, Y + a K, formed lanes by lanes where evaluate_tangent
+/// reads it: it reads only the δq and δm columns (and δn for the load directions), so the other
+/// columns of the stage are never formed, and nothing is stored to be loaded back. Without K, the
+/// stage is Y. Bitwise the stage formed whole (the same y + a k per lane).
+struct TangentStage {
+  const OdeTangent& Y;
+  const OdeTangent* K = nullptr;
+  double a = 0.0;
+
+  /// lanes = the stage's column `column`, rows [j, j + lanes' width)
+  template <class V>
+  RODSHAPE_ALWAYS_INLINE void load(V& lanes, int column, int j) const {
+    detail::load(lanes, Y.data() + Y.rows() * column, j);
+    if (K != nullptr) {
+      V k;
+      detail::load(k, K->data() + K->rows() * column, j);
+      lanes = lanes + a * k;
+    }
+  }
+};
+
 /// θ: the body-frame rotation of each direction, δR = R θ̂, from the quaternion tangent:
 /// θ = 2 vec(q* ⊗ δq)/|q|² = (2/|q|²)(w δx - δw x - x × δx).
 inline Matrix63d body_rotation_tangent(const Eigen::Vector4d& q,
@@ -234,13 +255,11 @@ RODSHAPE_ALWAYS_INLINE inline void store_quaternion_rate_variation(double* out,
 /// The load directions' δn terms, read from Y: Rᵀδn and p' × δn.
 template <class V>
 RODSHAPE_ALWAYS_INLINE inline void load_direction_force_terms(
-    const OdeTangent& Y, int j, const OdePoint& point, V* rt_dn, V* pp_dn) {
+    const TangentStage& Y, int j, const OdePoint& point, V* rt_dn, V* pp_dn) {
   const Eigen::Matrix3d& R = point.R;
   const double pp0 = point.p_prime[0], pp1 = point.p_prime[1], pp2 = point.p_prime[2];
   V dn0, dn1, dn2;
-  load(dn0, Y.data() + 6 * Slot::n, j);
-  load(dn1, Y.data() + 6 * (Slot::n + 1), j);
-  load(dn2, Y.data() + 6 * (Slot::n + 2), j);
+  Y.load(dn0, Slot::n, j), Y.load(dn1, Slot::n + 1, j), Y.load(dn2, Slot::n + 2, j);
   rt_dn[0] = R(0, 0) * dn0 + R(1, 0) * dn1 + R(2, 0) * dn2;
   rt_dn[1] = R(0, 1) * dn0 + R(1, 1) * dn1 + R(2, 1) * dn2;
   rt_dn[2] = R(0, 2) * dn0 + R(1, 2) * dn1 + R(2, 2) * dn2;
@@ -277,12 +296,13 @@ RODSHAPE_ALWAYS_INLINE inline void store_moment_rate_variation(
 /// Y. Load directions (LoadForcing = true: j < 3 is δf = e_j, j ≥ 3 is δl = e_{j-3}, started from
 /// a zero tangent): δn is read from Y and the load's own terms are added, δn' = -δf and
 /// δm' = ... - δl (δe' has none). The base-wrench path's arithmetic is unchanged by the flag.
-/// Without Energy, δe' = 0. Returns θ (see above).
+/// The columns whose rate is zero are not written: δn' (base-wrench directions) and, without
+/// Energy, δe' (tangent_update leaves them). Returns θ (see above).
 template <bool LoadForcing = false, bool Energy = true>
 RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
                                                          const OdeState& y,
                                                          const OdePoint& point,
-                                                         const OdeTangent& Y,
+                                                         const TangentStage& Y,
                                                          OdeTangent& dY) {
   const double s = point.q_scale;
   const Eigen::Matrix3d& R = point.R;
@@ -301,35 +321,26 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   const double ev0 = ct0 * nb0, ev1 = ct1 * nb1, ev2 = ct2 * nb2;
   const double eu0 = cr0 * mb0, eu1 = cr1 * mb1, eu2 = cr2 * mb2;
 
-  // The δn terms over the directions (δn = e_j for j < 3, else 0), as columns: Rᵀδn and p' × δn.
-  alignas(16) const double Rt_dn0[6] = {r00, r10, r20, 0.0, 0.0, 0.0};
-  alignas(16) const double Rt_dn1[6] = {r01, r11, r21, 0.0, 0.0, 0.0};
-  alignas(16) const double Rt_dn2[6] = {r02, r12, r22, 0.0, 0.0, 0.0};
-  alignas(16) const double pp_x_dn0[6] = {0.0, -pp2, pp1, 0.0, 0.0, 0.0};
-  alignas(16) const double pp_x_dn1[6] = {pp2, 0.0, -pp0, 0.0, 0.0, 0.0};
-  alignas(16) const double pp_x_dn2[6] = {-pp1, pp0, 0.0, 0.0, 0.0, 0.0};
-  // Column k of Y (all six directions of state component k) is contiguous: Y.data() + 6 k.
-  const double* const dw = Y.data() + 6 * Slot::q;
-  const double* const dx0 = Y.data() + 6 * (Slot::q + 1);
-  const double* const dx1 = Y.data() + 6 * (Slot::q + 2);
-  const double* const dx2 = Y.data() + 6 * (Slot::q + 3);
-  const double* const dm0 = Y.data() + 6 * Slot::m;
-  const double* const dm1 = Y.data() + 6 * (Slot::m + 1);
-  const double* const dm2 = Y.data() + 6 * (Slot::m + 2);
   double* const out = dY.data();
   Matrix63d theta;
 
   // Directions j, j + 1, ... side by side, one per lane of V (Lanes4 or Lanes2).
   const auto directions = [&](auto lanes_tag, int j) RODSHAPE_ALWAYS_INLINE {
     using V = typename decltype(lanes_tag)::type;
-    V qw, q0, q1, q2, m0, m1, m2, rt_dn[3], pp_dn[3], t[3];
-    load(qw, dw, j), load(q0, dx0, j), load(q1, dx1, j), load(q2, dx2, j);
-    load(m0, dm0, j), load(m1, dm1, j), load(m2, dm2, j);
+    V qw, q0, q1, q2, m0, m1, m2, t[3];
+    V rt_dn[3]{}, pp_dn[3]{};  // the moment directions 4–5: δn = 0
+    Y.load(qw, Slot::q, j), Y.load(q0, Slot::q + 1, j), Y.load(q1, Slot::q + 2, j);
+    Y.load(q2, Slot::q + 3, j);
+    Y.load(m0, Slot::m, j), Y.load(m1, Slot::m + 1, j), Y.load(m2, Slot::m + 2, j);
     if constexpr (LoadForcing) {
       load_direction_force_terms(Y, j, point, rt_dn, pp_dn);
-    } else {
-      load(rt_dn[0], Rt_dn0, j), load(rt_dn[1], Rt_dn1, j), load(rt_dn[2], Rt_dn2, j);
-      load(pp_dn[0], pp_x_dn0, j), load(pp_dn[1], pp_x_dn1, j), load(pp_dn[2], pp_x_dn2, j);
+    } else if constexpr (sizeof(V) == sizeof(Lanes4)) {
+      // δn = e_j for the force directions 0–2, 0 for direction 3: Rᵀδn and p' × δn, built in
+      // registers (an array of scalars loaded as lanes would wait for its stores)
+      rt_dn[0] = V{r00, r10, r20, 0.0}, rt_dn[1] = V{r01, r11, r21, 0.0};
+      rt_dn[2] = V{r02, r12, r22, 0.0};
+      pp_dn[0] = V{0.0, -pp2, pp1, 0.0}, pp_dn[1] = V{pp2, 0.0, -pp0, 0.0};
+      pp_dn[2] = V{-pp1, pp0, 0.0, 0.0};
     }
     rotation_variation(s, y.data(), qw, q0, q1, q2, t);
     const V t0 = t[0], t1 = t[1], t2 = t[2];
@@ -364,9 +375,11 @@ RODSHAPE_ALWAYS_INLINE inline Matrix63d evaluate_tangent(const CosseratOde& ode,
   };
   directions(std::type_identity<Lanes4>{}, 0);  // directions 0–3
   directions(std::type_identity<Lanes2>{}, 4);  // directions 4–5
-  dY.middleCols<3>(Slot::n).setZero();          // f is constant
-  if constexpr (!Energy) dY.col(Slot::e).setZero();
+  // δn' = -δf for the load directions (below); the base-wrench directions' δn' = 0 and, without
+  // Energy, δe' = 0 are not stored: rk4_step's update leaves those columns of Y as they are.
   if constexpr (LoadForcing) {
+    for (int k = Slot::n; k < Slot::n + 3; ++k)
+      store(out + 6 * k, 0, Lanes4{}), store(out + 6 * k, 4, Lanes2{});
     for (int k = 0; k < 3; ++k) dY(k, Slot::n + k) = -1.0;  // δn' = -δf
   }
   return theta;

@@ -13,24 +13,57 @@ struct NodeState {
   OdeTangent Y;
 };
 
-/// out = Y + a K, element by element (a plain loop, so that it vectorises for the caller's target).
-RODSHAPE_ALWAYS_INLINE inline void tangent_stage(const OdeTangent& Y,
-                                                 double a,
-                                                 const OdeTangent& K,
-                                                 OdeTangent& out) {
-  for (int k = 0; k < OdeTangent::SizeAtCompileTime; ++k)
-    out.data()[k] = Y.data()[k] + a * K.data()[k];
-}
-
-/// Y += (h/6)(K1 + 2 (K2 + K3) + K4), element by element in that order (as Eigen's expression was).
+/// Y += (h/6)(K1 + 2 (K2 + K3) + K4), element by element in that order (as Eigen's expression was),
+/// column by column in the pieces evaluate_tangent stores (directions 0–3 and 4–5), so that each
+/// load reads what one store wrote and is forwarded from the store buffer (a plain loop's 4-wide
+/// loads spanned two of those stores in two of every three). Columns whose rate is zero are left
+/// as they are (bitwise what adding zero gives: their entries are finite and not -0): δn for the
+/// base-wrench directions (VaryingN false: δn' = 0) and δe without the energy.
+template <bool VaryingN, bool Energy>
 RODSHAPE_ALWAYS_INLINE inline void tangent_update(double sixth,
                                                   const OdeTangent& K1,
                                                   const OdeTangent& K2,
                                                   const OdeTangent& K3,
                                                   const OdeTangent& K4,
                                                   OdeTangent& Y) {
-  for (int k = 0; k < OdeTangent::SizeAtCompileTime; ++k)
-    Y.data()[k] += sixth * (K1.data()[k] + 2.0 * (K2.data()[k] + K3.data()[k]) + K4.data()[k]);
+  const auto piece = [&](auto lanes_tag, int c, int j) RODSHAPE_ALWAYS_INLINE {
+    using V = typename decltype(lanes_tag)::type;
+    V y, k1, k2, k3, k4;
+    load(y, Y.data() + c, j), load(k1, K1.data() + c, j), load(k2, K2.data() + c, j);
+    load(k3, K3.data() + c, j), load(k4, K4.data() + c, j);
+    store(Y.data() + c, j, y + sixth * (k1 + 2.0 * (k2 + k3) + k4));
+  };
+  for (int k = 0; k < OdeTangent::ColsAtCompileTime; ++k) {
+    if ((!VaryingN && k >= Slot::n && k < Slot::n + 3) || (!Energy && k == Slot::e)) continue;
+    piece(std::type_identity<Lanes4>{}, OdeTangent::RowsAtCompileTime * k, 0);
+    piece(std::type_identity<Lanes2>{}, OdeTangent::RowsAtCompileTime * k, 4);
+  }
+}
+
+/// out = y + a k, entry by entry and fully unrolled, so that the 14 entries stay scalars:
+/// evaluate() writes k and reads the stage one entry at a time, and a vector load spanning several
+/// scalar stores waits for them to reach the cache instead of being forwarded (Eigen's packets here
+/// made BM_Forward 24 % slower; BENCHMARKS.md, "The state's stages as scalars").
+RODSHAPE_ALWAYS_INLINE inline void state_stage(const OdeState& y,
+                                               double a,
+                                               const OdeState& k,
+                                               OdeState& out) {
+#pragma GCC unroll 14
+  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i)
+    out.data()[i] = y.data()[i] + a * k.data()[i];
+}
+
+/// y += (h/6)(k1 + 2 (k2 + k3) + k4), entry by entry in that order (as Eigen's expression was),
+/// unrolled as state_stage is.
+RODSHAPE_ALWAYS_INLINE inline void state_update(double sixth,
+                                                const OdeState& k1,
+                                                const OdeState& k2,
+                                                const OdeState& k3,
+                                                const OdeState& k4,
+                                                OdeState& y) {
+#pragma GCC unroll 14
+  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i)
+    y.data()[i] += sixth * (k1.data()[i] + 2.0 * (k2.data()[i] + k3.data()[i]) + k4.data()[i]);
 }
 
 /// Advances `state` by h. `start` receives the first stage's evaluation, i.e. R, v, u, ... at the
@@ -41,38 +74,32 @@ template <bool WithTangent, bool LoadForcing = false, bool Energy = true>
 RODSHAPE_ALWAYS_INLINE inline void rk4_step(
     const CosseratOde& ode, double h, NodeState& state, OdePoint& start, Matrix63d& start_theta) {
   OdeState k1, k2, k3, k4, y_stage;
-  OdeTangent K1, K2, K3, K4, Y_stage;
+  OdeTangent K1, K2, K3, K4;
   OdePoint point;
   const double half = 0.5 * h;
 
   evaluate<Energy>(ode, state.y, k1, start);
   if constexpr (WithTangent)
-    start_theta = evaluate_tangent<LoadForcing, Energy>(ode, state.y, start, state.Y, K1);
+    start_theta = evaluate_tangent<LoadForcing, Energy>(ode, state.y, start, {state.Y}, K1);
 
-  y_stage = state.y + half * k1;
+  state_stage(state.y, half, k1, y_stage);
   evaluate<Energy>(ode, y_stage, k2, point);
-  if constexpr (WithTangent) {
-    tangent_stage(state.Y, half, K1, Y_stage);
-    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K2);
-  }
+  if constexpr (WithTangent)
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K1, half}, K2);
 
-  y_stage = state.y + half * k2;
+  state_stage(state.y, half, k2, y_stage);
   evaluate<Energy>(ode, y_stage, k3, point);
-  if constexpr (WithTangent) {
-    tangent_stage(state.Y, half, K2, Y_stage);
-    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K3);
-  }
+  if constexpr (WithTangent)
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K2, half}, K3);
 
-  y_stage = state.y + h * k3;
+  state_stage(state.y, h, k3, y_stage);
   evaluate<Energy>(ode, y_stage, k4, point);
-  if constexpr (WithTangent) {
-    tangent_stage(state.Y, h, K3, Y_stage);
-    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, Y_stage, K4);
-  }
+  if constexpr (WithTangent)
+    evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K3, h}, K4);
 
   const double sixth = h / 6.0;
-  state.y += sixth * (k1 + 2.0 * (k2 + k3) + k4);
-  if constexpr (WithTangent) tangent_update(sixth, K1, K2, K3, K4, state.Y);
+  state_update(sixth, k1, k2, k3, k4, state.y);
+  if constexpr (WithTangent) tangent_update<LoadForcing, Energy>(sixth, K1, K2, K3, K4, state.Y);
 }
 
 /// The node state at s = 0: q from the clamp rotation, p(0), and w = (n(0), m(0)); the tangent is
