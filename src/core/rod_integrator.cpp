@@ -97,14 +97,15 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 // one 256-bit register and fuses a·b + c where the CPU can. The fused clone rounds once where the
 // baseline rounds twice: its results are the baseline's within a bound derived from the number of
 // operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip seen on the test
-// rod); a CPU without FMA gets the baseline, bitwise. The base-wrench paths have an x86-64-v4
-// (AVX-512) clone as well: BM_Forward/100 11.2 -> 9.4 us on Zen 4; the tangent's paths were 3-6 %
-// slower with it until their stages stopped waiting on stores (rk4_step.hpp), and are 5-10 % faster
-// with it since (BENCHMARKS.md, "The stages without store-forwarding stalls"). All four share the
-// clones, so Output::Tip stays bitwise Output::Full at the tip and the shape is bitwise the same
-// with and without the tangent. A build for one CPU (RODSHAPE_NATIVE) has no clones. Nor has a
-// ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's run time is set up and
-// the program crashes at load (segfault, seen with a 5-line program).
+// rod); a CPU without FMA gets the baseline, bitwise. The shape's paths (without the tangent) have
+// an x86-64-v4 (AVX-512) clone as well: BM_Forward/100 11.2 -> 9.4 us on Zen 4. The tangent's paths
+// keep x86-64-v3: with v4 they were 3-6 % slower, and since their stages stopped waiting on stores
+// (rk4_step.hpp) they are faster with it, but its shape then rounds differently from the shape
+// paths' (BENCHMARKS.md, "The stages without store-forwarding stalls"), and the shape must be
+// bitwise the same with and without the tangent. Both shape paths share the clones, so
+// Output::Tip stays bitwise Output::Full at the tip. A build for one CPU (RODSHAPE_NATIVE) has no
+// clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's run
+// time is set up and the program crashes at load (segfault, seen with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
     !defined(__SANITIZE_THREAD__)
 #define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "arch=x86-64-v3")))
@@ -116,8 +117,8 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 #endif
 
 RODSHAPE_DISPATCHED void integrate_with_tangent(const ClampedRod& rod,
-                                                      NodeState& state,
-                                                      RodConfiguration& out) {
+                                                NodeState& state,
+                                                RodConfiguration& out) {
   integrate_nodes<true>(rod, state, out);
 }
 
@@ -128,8 +129,8 @@ RODSHAPE_DISPATCHED_SHAPE void integrate_without_tangent(const ClampedRod& rod,
 }
 
 RODSHAPE_DISPATCHED void integrate_tip_with_tangent(const ClampedRod& rod,
-                                                          NodeState& state,
-                                                          RodConfiguration& out) {
+                                                    NodeState& state,
+                                                    RodConfiguration& out) {
   integrate_nodes<true, false, true>(rod, state, out);
 }
 
