@@ -27,7 +27,7 @@ mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
   -DRODSHAPE_BUILD_FUZZ=ON -DRODSHAPE_BUILD_TESTS=OFF -DRODSHAPE_BUILD_BENCH=OFF \
-  -DRODSHAPE_BUILD_CLI=OFF > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
+  -DRODSHAPE_BUILD_CLI=OFF -DRODSHAPE_UNITY_LIBRARY=ON > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j "$jobs" --target "${targets[@]}"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

@@ -17,8 +17,8 @@ using figures::escaped;
 using figures::fixed;
 
 // Layout of the figure, px.
-constexpr double kWidth = 760.0, kPlotHeight = 330.0;
-constexpr double kLeft = 70.0, kRight = 20.0, kBottom = 50.0, kLegend = 26.0;
+constexpr double kFigureWidth = 760.0, kPlotHeight = 330.0;
+constexpr double kAxisLeft = 70.0, kRight = 20.0, kBottom = 50.0, kLegend = 26.0;
 const char* const kColours[3] = {"#1f77b4", "#ff7f0e", "#2ca02c"};  // 3D, 2D, true
 const char* const kNames[3] = {"3D error", "2D error (image plane)", "true error"};
 constexpr double kSmallest = 1e-3;  // mm: the axis never goes below a micrometre
@@ -28,7 +28,7 @@ struct Axes {
   double top = 60.0;
   double t_max = 1.0;
   double log_lo = -2.0, log_hi = 1.0;  // decades of mm
-  double x(double t) const { return kLeft + (kWidth - kLeft - kRight) * t / t_max; }
+  double x(double t) const { return kAxisLeft + (kFigureWidth - kAxisLeft - kRight) * t / t_max; }
   double y(double e_mm) const {
     const double l = std::log10(std::max(e_mm, std::pow(10.0, log_lo)));
     return top + kPlotHeight - kPlotHeight * (l - log_lo) / (log_hi - log_lo);
@@ -73,21 +73,21 @@ void draw_grid(std::ostringstream& out, const Axes& axes) {
   }
   for (double d = axes.log_lo; d <= axes.log_hi + 1e-9; d += 1.0) {
     const double e = std::pow(10.0, d);
-    out << "<line x1=\"" << fixed(kLeft) << "\" y1=\"" << fixed(axes.y(e)) << "\" x2=\""
-        << fixed(kWidth - kRight) << "\" y2=\"" << fixed(axes.y(e))
-        << "\" stroke=\"#bbb\"/>\n<text x=\"" << fixed(kLeft - 8) << "\" y=\""
+    out << "<line x1=\"" << fixed(kAxisLeft) << "\" y1=\"" << fixed(axes.y(e)) << "\" x2=\""
+        << fixed(kFigureWidth - kRight) << "\" y2=\"" << fixed(axes.y(e))
+        << "\" stroke=\"#bbb\"/>\n<text x=\"" << fixed(kAxisLeft - 8) << "\" y=\""
         << fixed(axes.y(e) + 4) << "\" text-anchor=\"end\">" << decade_label(d) << "</text>\n";
     if (d + 1.0 <= axes.log_hi + 1e-9)
       for (const double m : {2.0, 5.0})
-        out << "<line x1=\"" << fixed(kLeft) << "\" y1=\"" << fixed(axes.y(m * e)) << "\" x2=\""
-            << fixed(kWidth - kRight) << "\" y2=\"" << fixed(axes.y(m * e))
+        out << "<line x1=\"" << fixed(kAxisLeft) << "\" y1=\"" << fixed(axes.y(m * e)) << "\" x2=\""
+            << fixed(kFigureWidth - kRight) << "\" y2=\"" << fixed(axes.y(m * e))
             << "\" stroke=\"#eee\"/>\n";
   }
-  out << "<rect x=\"" << fixed(kLeft) << "\" y=\"" << fixed(axes.top) << "\" width=\""
-      << fixed(kWidth - kLeft - kRight) << "\" height=\"" << fixed(kPlotHeight)
+  out << "<rect x=\"" << fixed(kAxisLeft) << "\" y=\"" << fixed(axes.top) << "\" width=\""
+      << fixed(kFigureWidth - kAxisLeft - kRight) << "\" height=\"" << fixed(kPlotHeight)
       << "\" fill=\"none\" stroke=\"#444\"/>\n";
-  out << "<text x=\"" << fixed((kLeft + kWidth - kRight) / 2) << "\" y=\"" << fixed(bottom + 38)
-      << "\" text-anchor=\"middle\">time (s)</text>\n<text x=\"16\" y=\""
+  out << "<text x=\"" << fixed((kAxisLeft + kFigureWidth - kRight) / 2) << "\" y=\""
+      << fixed(bottom + 38) << "\" text-anchor=\"middle\">time (s)</text>\n<text x=\"16\" y=\""
       << fixed(axes.top + kPlotHeight / 2) << "\" transform=\"rotate(-90 16 "
       << fixed(axes.top + kPlotHeight / 2)
       << ")\" text-anchor=\"middle\">error (mm, log scale)</text>\n";
@@ -104,7 +104,7 @@ void draw_series(std::ostringstream& out,
   out << "\"/>\n";
 }
 
-std::string millimetres(double metres) {
+std::string in_millimetres(double metres) {
   std::ostringstream out;
   out.precision(2);
   out << metres * 1e3 << " mm";
@@ -128,11 +128,12 @@ void draw_cloud_panel(std::ostringstream& out, const ValidationRun& run, double 
       hi = hi.cwiseMax(Eigen::Vector2d(p.x(), p.z()));
     }
   const double inner = kCloudHeight - 40.0;
-  const double scale = std::min((kWidth - kLeft - kRight) / std::max(hi.x() - lo.x(), 1e-6),
-                                inner / std::max(hi.y() - lo.y(), 1e-6));
-  const auto x = [&](const Eigen::Vector3d& p) { return kLeft + scale * (p.x() - lo.x()); };
+  const double scale =
+      std::min((kFigureWidth - kAxisLeft - kRight) / std::max(hi.x() - lo.x(), 1e-6),
+               inner / std::max(hi.y() - lo.y(), 1e-6));
+  const auto x = [&](const Eigen::Vector3d& p) { return kAxisLeft + scale * (p.x() - lo.x()); };
   const auto y = [&](const Eigen::Vector3d& p) { return top + 30.0 + scale * (hi.y() - p.z()); };
-  out << "<text x=\"" << fixed(kLeft) << "\" y=\"" << fixed(top + 14)
+  out << "<text x=\"" << fixed(kAxisLeft) << "\" y=\"" << fixed(top + 14)
       << "\">the depth camera's cloud at the last frame (" << cloud.size()
       << " points, blue) and the real rod (green), x–z, " << fixed(1e3 / scale, 2)
       << " mm per px</text>\n";
@@ -152,7 +153,7 @@ std::string validation_svg(const ValidationResult& result) {
         << result.runs.size() << (result.runs.size() == 1 ? " run" : " runs") << " ("
         << to_string(result.status) << ")";
   const std::vector<std::string> lines =
-      figures::wrapped(title.str(), figures::characters_in(kWidth - kLeft - kRight, 14));
+      figures::wrapped(title.str(), figures::characters_in(kFigureWidth - kAxisLeft - kRight, 14));
   const double top = 22 + 18.0 * static_cast<double>(lines.size()) + kLegend;
   const Axes axes = fit_axes(result, top);
   const ValidationRun* first = result.runs.empty() ? nullptr : &result.runs.front();
@@ -161,22 +162,23 @@ std::string validation_svg(const ValidationResult& result) {
   std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << svg_signature_comment()
-      << "\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << kWidth
-      << "\" height=\"" << fixed(height) << "\" viewBox=\"0 0 " << kWidth << ' ' << fixed(height)
-      << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
+      << "\n<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << kFigureWidth
+      << "\" height=\"" << fixed(height) << "\" viewBox=\"0 0 " << kFigureWidth << ' '
+      << fixed(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   for (std::size_t k = 0; k < lines.size(); ++k)
-    out << "<text x=\"" << fixed(kLeft) << "\" y=\"" << fixed(22 + 18.0 * static_cast<double>(k))
-        << "\" font-size=\"14\">" << escaped(lines[k]) << "</text>\n";
+    out << "<text x=\"" << fixed(kAxisLeft) << "\" y=\""
+        << fixed(22 + 18.0 * static_cast<double>(k)) << "\" font-size=\"14\">" << escaped(lines[k])
+        << "</text>\n";
   // The legend, with the first run's final errors: the numbers the figure is about.
-  double x = kLeft;
+  double x = kAxisLeft;
   const double y = top - 12;
   for (int c = 0; c < 3; ++c) {
     std::string label = kNames[c];
     if (first != nullptr) {
       const double final = c == 0 ? first->final.error_3d
                                   : (c == 1 ? first->final.error_2d : first->final.true_error);
-      if (std::isfinite(final)) label += ", final " + millimetres(final);
+      if (std::isfinite(final)) label += ", final " + in_millimetres(final);
     }
     out << "<line x1=\"" << fixed(x) << "\" y1=\"" << fixed(y - 4) << "\" x2=\"" << fixed(x + 22)
         << "\" y2=\"" << fixed(y - 4) << "\" stroke=\"" << kColours[c]

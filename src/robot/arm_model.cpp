@@ -66,7 +66,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr detail::FileCap kUrdfFileCap{4 * detail::kMiB, "a URDF file",
                                        "cannot read the URDF file"};
 
-std::string quoted(const std::string& name) { return "'" + name + "'"; }
+std::string in_quotes(const std::string& name) { return "'" + name + "'"; }
 
 /// Collects what urdfdom reports through console_bridge while it parses (instead of printing it),
 /// so that the InputError can say why the URDF did not parse.
@@ -145,8 +145,8 @@ urdf::LinkConstSharedPtr find_link(const urdf::ModelInterface& model,
   std::string known;
   for (const std::string& candidate : link_names(model))
     known += (known.empty() ? "" : ", ") + candidate;
-  throw InputError(source + ": unknown " + role + " link " + quoted(name) + " in robot " +
-                   quoted(model.getName()) + " (links: " + known + ")");
+  throw InputError(source + ": unknown " + role + " link " + in_quotes(name) + " in robot " +
+                   in_quotes(model.getName()) + " (links: " + known + ")");
 }
 
 /// A link that is the child of two joints closes a loop; urdfdom keeps only one of the two.
@@ -156,8 +156,8 @@ void reject_closed_loops(const urdf::ModelInterface& model, const std::string& s
     const auto [it, inserted] = parent_joint_of.emplace(joint->child_link_name, name);
     if (!inserted) {
       throw InputError(source + ": the joints form a closed loop: link " +
-                       quoted(joint->child_link_name) + " is the child of both " +
-                       quoted(it->second) + " and " + quoted(name) +
+                       in_quotes(joint->child_link_name) + " is the child of both " +
+                       in_quotes(it->second) + " and " + in_quotes(name) +
                        "; a serial chain needs a tree");
     }
   }
@@ -184,7 +184,7 @@ std::string default_tip(const urdf::LinkConstSharedPtr& base, const std::string&
     std::sort(deepest.begin(), deepest.end());
     std::string names;
     for (const std::string& name : deepest) names += (names.empty() ? "" : ", ") + name;
-    throw InputError(source + ": the chain below " + quoted(base->name) +
+    throw InputError(source + ": the chain below " + in_quotes(base->name) +
                      " branches into equally long chains ending at " + names +
                      "; name the tip link (--tip)");
   }
@@ -192,7 +192,7 @@ std::string default_tip(const urdf::LinkConstSharedPtr& base, const std::string&
 }
 
 JointInfo read_joint_info(const urdf::Joint& joint, const std::string& source) {
-  const std::string where = source + ": joint " + quoted(joint.name);
+  const std::string where = source + ": joint " + in_quotes(joint.name);
   JointInfo info;
   info.name = joint.name;
   info.prismatic = joint.type == urdf::Joint::PRISMATIC;
@@ -221,7 +221,7 @@ JointInfo read_joint_info(const urdf::Joint& joint, const std::string& source) {
 
 /// The KDL segment of one URDF joint (named after its child link), and whether it moves.
 KDL::Segment segment_of(const urdf::Joint& joint, const std::string& source) {
-  const std::string where = source + ": joint " + quoted(joint.name);
+  const std::string where = source + ": joint " + in_quotes(joint.name);
   const KDL::Frame parent_T_joint = to_kdl(joint.parent_to_joint_origin_transform);
   switch (joint.type) {
     case urdf::Joint::FIXED:
@@ -312,7 +312,7 @@ std::optional<LinkCapsule> capsule_of(const urdf::Collision& collision,
                                       int frame,
                                       const std::string& source,
                                       std::vector<std::string>& notes) {
-  const std::string where = source + ": link " + quoted(link) + ": <collision>";
+  const std::string where = source + ": link " + in_quotes(link) + ": <collision>";
   if (!collision.geometry) return std::nullopt;
   const Eigen::Vector3d origin = to_eigen(collision.origin.position);
   const Eigen::Matrix3d rotation = to_eigen(collision.origin.rotation);
@@ -346,8 +346,8 @@ std::optional<LinkCapsule> capsule_of(const urdf::Collision& collision,
       break;
     }
     case urdf::Geometry::MESH:
-      notes.push_back("link " + quoted(link) + ": a <mesh> collision" +
-                      (collision.name.empty() ? "" : " " + quoted(collision.name)) +
+      notes.push_back("link " + in_quotes(link) + ": a <mesh> collision" +
+                      (collision.name.empty() ? "" : " " + in_quotes(collision.name)) +
                       " is ignored (meshes are not read; give spheres, cylinders or boxes)");
       return std::nullopt;
     default:
@@ -426,8 +426,8 @@ ArmModel ArmModel::from_urdf_string(const std::string& urdf,
   std::set<std::string> visited;
   for (urdf::LinkConstSharedPtr link = tip; link->name != base->name; link = link->getParent()) {
     if (!visited.insert(link->name).second || !link->parent_joint || !link->getParent()) {
-      throw InputError(source + ": tip link " + quoted(tip->name) + " is not below base link " +
-                       quoted(base->name) + " in robot " + quoted(model->getName()));
+      throw InputError(source + ": tip link " + in_quotes(tip->name) + " is not below base link " +
+                       in_quotes(base->name) + " in robot " + in_quotes(model->getName()));
     }
     path.push_back(link->parent_joint);
   }
@@ -457,8 +457,8 @@ ArmModel ArmModel::from_urdf_string(const std::string& urdf,
                        impl->collision_notes);
   }
   if (impl->joints.empty()) {
-    throw InputError(source + ": the chain from " + quoted(base->name) + " to " +
-                     quoted(tip->name) + " has no moving joint");
+    throw InputError(source + ": the chain from " + in_quotes(base->name) + " to " +
+                     in_quotes(tip->name) + " has no moving joint");
   }
   return ArmModel(std::move(impl));
 }
@@ -510,7 +510,7 @@ Eigen::VectorXd ArmModel::velocity_limits() const {
 void ArmModel::check_size(const Eigen::VectorXd& q, const std::string& what) const {
   if (q.size() != joints()) {
     throw InputError(what + " has " + std::to_string(q.size()) + " values but the chain from " +
-                     quoted(base_link()) + " to " + quoted(tip_link()) + " has " +
+                     in_quotes(base_link()) + " to " + in_quotes(tip_link()) + " has " +
                      std::to_string(joints()) + " joints");
   }
   detail::require_finite(what, q);
@@ -524,7 +524,7 @@ void ArmModel::check_joint_positions(const Eigen::VectorXd& q,
     const JointInfo& joint = impl_->joints[i];
     if (q(i) < joint.lower - tolerance || q(i) > joint.upper + tolerance) {
       throw InputError(what + "[" + std::to_string(i) + "] = " + detail::format_value(q(i)) +
-                       " is outside the limits of joint " + quoted(joint.name) + ": [" +
+                       " is outside the limits of joint " + in_quotes(joint.name) + ": [" +
                        detail::format_value(joint.lower) + ", " +
                        detail::format_value(joint.upper) + "]");
     }
