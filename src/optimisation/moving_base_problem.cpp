@@ -113,6 +113,7 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
   const BaseWrench w{R0 * x.segment<3>(0), R0 * x.segment<3>(3)};  // world_wrench(x), R0 once
   integrate(rod_, w, configuration_, Derivatives::AllNodes);
+  ++integrations_;
   base_pose_derivatives(rod_, configuration_, pose_tangent_);
   evaluate_cost();  // F, ∇_w F (world wrench), the projections
   evaluate_moving_constraints();
@@ -297,6 +298,7 @@ void ShapeProblem::integrate_body(const Vector6d& w_b) {
   } restore{rod_, rod_.clamp};
   rod_.clamp = Pose{};
   integrate(rod_, BaseWrench::from_vector(w_b), body_, Derivatives::None);
+  ++integrations_;
   interval_balls(body_, body_balls_);
 }
 

@@ -129,7 +129,7 @@ IpoptRun eliminated_newton(ShapeProblem& problem,
   }
   problem.eliminate_base_pose(true);
   IpoptRun run = unconstrained_newton(problem, start.head<6>().cwiseQuotient(units), options, box,
-                                      detail::HessianModel::DifferencedEveryIteration);
+                                      detail::HessianModel::Sr1UntilBacktrack);
   problem.evaluate(run.w);  // ξ*(w_b) at the final iterate
   const bool aligned = std::isfinite(problem.cost());
   run.x = problem.evaluated_variables();

@@ -141,11 +141,15 @@ enum class Search { Accepted, Refused, TooSmall };
 /// condition holds, compared with a round-off allowance of 10 ε |φ| (IPOPT's Compare_le); the
 /// accepted point into `trial`. TooSmall when α d falls below round-off of w first, Refused when
 /// the refusals reach kMaxRefusals.
-Search line_search(
-    Newton& newton, const Iterate& at, const Vector6d& d, double scaling, Iterate& trial) {
+Search line_search(Newton& newton,
+                   const Iterate& at,
+                   const Vector6d& d,
+                   double scaling,
+                   Iterate& trial,
+                   double& alpha) {
   const double slope = scaling * at.gradient.dot(d);
   const double phi = scaling * at.cost;
-  for (double alpha = 1.0;; alpha *= kBacktrack) {
+  for (alpha = 1.0;; alpha *= kBacktrack) {
     if (alpha * d.lpNorm<Eigen::Infinity>() <=
         10.0 * kEpsilon * (1.0 + at.w.lpNorm<Eigen::Infinity>()))
       return Search::TooSmall;
@@ -180,7 +184,9 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
                               const ShapeOptimiserOptions& options,
                               const std::optional<WrenchBounds>& admissible,
                               HessianModel hessian_model) {
-  const bool updated = hessian_model == HessianModel::Sr1Updated;
+  const bool updated = hessian_model != HessianModel::DifferencedEveryIteration;
+  const bool fresh_after_backtrack = hessian_model == HessianModel::Sr1UntilBacktrack;
+  bool difference_next = true;  // the model at the start is differenced
   Newton newton(problem, admissible);
   Iterate at, trial;
   at.w = start;
@@ -206,13 +212,14 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
       return ended(IpoptEnd::MaximumIterationsExceeded, at, iteration, false);
 
     // The model: differenced at the start, SR1-updated after every step (or differenced anew).
-    if ((iteration == 0 || !updated) && !newton.difference_model(at))
+    if ((difference_next || !updated) && !newton.difference_model(at))
       return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
     Search search = Search::TooSmall;
+    double alpha = 1.0;
     for (;;) {
       Vector6d d;
       const bool stepped = newton.step(scaling * newton.model(), scaling * at.gradient, d);
-      if (stepped) search = line_search(newton, at, d, scaling, trial);
+      if (stepped) search = line_search(newton, at, d, scaling, trial, alpha);
       if ((stepped && search != Search::TooSmall) || newton.model_differenced()) {
         if (!stepped) return ended(IpoptEnd::ErrorInStepComputation, at, iteration, false);
         break;
@@ -226,7 +233,9 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
       return last_acceptable
                  ? ended(IpoptEnd::SolvedToAcceptableLevel, *last_acceptable, iteration, false)
                  : ended(IpoptEnd::SearchDirectionBecomesTooSmall, at, iteration, false);
-    if (updated) newton.update_model(at, trial);
+    // Sr1UntilBacktrack: a step the line search had to shorten says the model is poor there.
+    difference_next = fresh_after_backtrack && alpha < 1.0;
+    if (updated && !difference_next) newton.update_model(at, trial);
     at = trial;
   }
 }

@@ -61,11 +61,15 @@ bool unconstrained_newton_serves(const ShapeProblem& problem, bool finite_differ
 /// eq. 6.26: the update would be huge or undefined) or not finite.
 void sr1_update(const Vector6d& s, const Vector6d& y, Matrix6d& B);
 
-/// The Hessian model of the iterations: differenced once and SR1-updated (the default), or
-/// differenced at every iteration as IPOPT does (the moving base's eliminated problem, whose
-/// reduced F is flat along the base's motion: there SR1's path ended a step of the two-Panda task
-/// of tests/python at the iteration limit).
-enum class HessianModel { Sr1Updated, DifferencedEveryIteration };
+/// The Hessian model of the iterations:
+/// - Sr1Updated (the default): differenced once, then SR1-updated after every step.
+/// - Sr1UntilBacktrack: SR1-updated after a full Newton step, differenced anew at the next iterate
+///   after a step the line search shortened (the model was poor along it). The moving base's
+///   eliminated problem, whose reduced F is flat along the base's motion: plain SR1 ended a step
+///   of tests/python's two-Panda task at the iteration limit; this one completes it, and
+///   BM_PlanTwoArms took 230 ms instead of 257-322 ms differencing at every iteration.
+/// - DifferencedEveryIteration: as IPOPT does.
+enum class HessianModel { Sr1Updated, Sr1UntilBacktrack, DifferencedEveryIteration };
 
 /// Minimises F from `start` (F not evaluated outside `admissible`, when given; `start` lies
 /// inside). The result reads as an IPOPT run's (IpoptDetails::solver says which solver it was);

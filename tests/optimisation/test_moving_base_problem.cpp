@@ -212,7 +212,10 @@ TEST(MovingBaseProblem, WithoutLoadsThePoseIsEliminatedAndTheOptimumIsThatOfTheT
   EXPECT_LT((result.configuration.p[0] - reference.configuration.p[0]).norm(), 1e-6);
   EXPECT_LT((result.configuration.tip().position - reference.configuration.tip().position).norm(),
             1e-6);
-  EXPECT_LE(result.ipopt.iterations, reference.ipopt.iterations);
+  // The eliminated problem's dense Newton updates its Hessian (SR1 between shortened steps), so
+  // it takes more iterations than IPOPT on the 12 unknowns but fewer integrations: the cost.
+  EXPECT_LT(projected.integrations(), twelve.integrations())
+      << "iterations " << result.ipopt.iterations << " against " << reference.ipopt.iterations;
 }
 
 TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences) {

@@ -91,8 +91,9 @@ class ShapeProblem {
   /// Γ); the subgradient 0 is used there. Curvature and axial rows are computed from m̄ = Rᵀm and
   /// n̄ = Rᵀn (u - ũ = K_rot⁻¹ m̄, v_z - ṽ_z = n̄_z / EA), without cancellation against ũ, ṽ.
   void evaluate(const Vector6d& w);
-  /// How many integrations evaluate() has done (calls at a new w), the measure of a solver's
-  /// cost on this problem.
+  /// How many integrations the evaluations have done (evaluate() at a new w; with a moving base,
+  /// evaluate_with_base() at a new x and the eliminated evaluation's shape in the base's frame),
+  /// the measure of a solver's cost on this problem.
   int integrations() const { return integrations_; }
 
   // ---- A moving base (issue 21, base_motion.hpp): the variables x = (w_b, ξ) ----------------
