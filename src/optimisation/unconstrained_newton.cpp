@@ -184,8 +184,6 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
                               const ShapeOptimiserOptions& options,
                               const std::optional<WrenchBounds>& admissible,
                               HessianModel hessian_model) {
-  const bool updated = hessian_model != HessianModel::DifferencedEveryIteration;
-  const bool fresh_after_backtrack = hessian_model == HessianModel::Sr1UntilBacktrack;
   bool difference_next = true;  // the model at the start is differenced
   Newton newton(problem, admissible);
   Iterate at, trial;
@@ -211,8 +209,8 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
     if (iteration >= options.max_iterations)
       return ended(IpoptEnd::MaximumIterationsExceeded, at, iteration, false);
 
-    // The model: differenced at the start, SR1-updated after every step (or differenced anew).
-    if ((difference_next || !updated) && !newton.difference_model(at))
+    // The model: differenced at the start, then SR1-updated or differenced anew (difference_next).
+    if (difference_next && !newton.difference_model(at))
       return ended(IpoptEnd::InvalidNumberDetected, at, iteration, false);
     Search search = Search::TooSmall;
     double alpha = 1.0;
@@ -234,8 +232,9 @@ IpoptRun unconstrained_newton(ShapeProblem& problem,
                  ? ended(IpoptEnd::SolvedToAcceptableLevel, *last_acceptable, iteration, false)
                  : ended(IpoptEnd::SearchDirectionBecomesTooSmall, at, iteration, false);
     // Sr1UntilBacktrack: a step the line search had to shorten says the model is poor there.
-    difference_next = fresh_after_backtrack && alpha < 1.0;
-    if (updated && !difference_next) newton.update_model(at, trial);
+    difference_next = hessian_model == HessianModel::DifferencedEveryIteration ||
+                      (hessian_model == HessianModel::Sr1UntilBacktrack && alpha < 1.0);
+    if (!difference_next) newton.update_model(at, trial);
     at = trial;
   }
 }
