@@ -214,6 +214,34 @@ CurveProjection project_near_node(const RodConfiguration& configuration,
   return result;
 }
 
+namespace {
+
+/// The interval holding the minimum of |Γ(s) - p| near `interval`: from its first node, along the
+/// nodes while the next is closer to p (a descent, one distance per node), then the side of the
+/// nearest node on which the distance falls, the sign of (p_i - p) · p'_i.
+int interval_of_descent(const RodConfiguration& c, const Eigen::Vector3d& point, int interval) {
+  int node = interval;
+  double here = (c.p[node] - point).squaredNorm();
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (const int next : {node - 1, node + 1}) {
+      if (next < 0 || next >= c.nodes()) continue;
+      const double there = (c.p[next] - point).squaredNorm();
+      if (there < here) {
+        node = next;
+        here = there;
+        moved = true;
+        break;
+      }
+    }
+  }
+  const int intervals = c.nodes() - 1;
+  const bool falls_before = (c.p[node] - point).dot(c.R[node] * c.v[node]) > 0.0;
+  return std::clamp(falls_before ? node - 1 : node, 0, intervals - 1);
+}
+
+}  // namespace
+
 CurveProjection project_from_interval(const RodConfiguration& configuration,
                                       const Eigen::Vector3d& point,
                                       int interval,
@@ -221,7 +249,7 @@ CurveProjection project_from_interval(const RodConfiguration& configuration,
   const RodConfiguration& c = configuration;
   const int intervals = c.nodes() - 1;
   if (intervals < 1) return nearest_node(c, point);
-  interval = std::clamp(interval, 0, intervals - 1);
+  interval = interval_of_descent(c, point, std::clamp(interval, 0, intervals - 1));
   int lo = std::max(interval - reach, 0), hi = std::min(interval + reach, intervals - 1);
   CurveProjection result;
   result.distance = std::numeric_limits<double>::infinity();

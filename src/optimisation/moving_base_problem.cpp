@@ -121,11 +121,9 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   const double W1 = target_.energy_weight;
   gradient_xi_ =
       (W1 / L) * pose_tangent_.denergy_dw.transpose() + distance_gradient_sum(pose_tangent_);
-  // The motion term W_b W2 (|δt|² + L² |δφ|²) / L.
+  breakdown_.cost += motion_cost(x);
   const double Wb = base_motion_->motion_weight * target_.distance_weight;
   const Eigen::Vector3d dt = x.segment<3>(6), dphi = x.segment<3>(9);
-  const double motion = Wb * (dt.squaredNorm() + L * L * dphi.squaredNorm()) / L;
-  breakdown_.cost += motion;
   const Eigen::Matrix3d J = left_jacobian_so3(dphi);
   gradient_x_.segment<3>(0) = R0.transpose() * cost_gradient_.head<3>();
   gradient_x_.segment<3>(3) = R0.transpose() * cost_gradient_.tail<3>();
@@ -133,6 +131,28 @@ void ShapeProblem::evaluate_with_base(const Vector12d& x) {
   gradient_x_.segment<3>(9) = J.transpose() * gradient_xi_.tail<3>() + (2.0 * Wb * L) * dphi;
   w_ = w.to_vector();
   evaluated_ = true;
+}
+
+double ShapeProblem::motion_cost(const Vector12d& x) const {
+  const double L = rod_.properties.length;
+  const double Wb = base_motion_->motion_weight * target_.distance_weight;
+  return Wb * (x.segment<3>(6).squaredNorm() + L * L * x.segment<3>(9).squaredNorm()) / L;
+}
+
+void ShapeProblem::evaluate_aligned(const Vector12d& x) {
+  x_ = x;
+  set_clamp(x);
+  const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
+  const BaseWrench w{R0 * x.segment<3>(0), R0 * x.segment<3>(3)};
+  integrate(rod_, w, configuration_, Derivatives::AllNodes);
+  ++integrations_;
+  evaluate_cost(&align_intervals_);
+  breakdown_.cost += motion_cost(x);
+  gradient_x_.segment<3>(0) = R0.transpose() * cost_gradient_.head<3>();
+  gradient_x_.segment<3>(3) = R0.transpose() * cost_gradient_.tail<3>();
+  gradient_x_.tail<6>().setZero();  // ∂F/∂ξ = 0 at ξ*
+  w_ = w.to_vector();
+  evaluated_ = false;
 }
 
 void ShapeProblem::evaluate_moving_constraints() {
@@ -395,24 +415,26 @@ void ShapeProblem::eliminate_base_pose(bool eliminated) {
   eliminated_ = eliminated;
   xi_star_.setZero();
   align_intervals_.clear();
-  evaluated_ = false;
+  evaluated_ = eliminated_evaluated_ = false;
 }
 
 void ShapeProblem::evaluate_eliminated(const Vector6d& w_scaled) {
   const Vector6d units = rod_.properties.bending_wrench_units();
   const Vector6d w_b = w_scaled.cwiseProduct(units);
-  if (evaluated_ && w_b == x_.head<6>()) return;
+  if (eliminated_evaluated_ && w_b == x_.head<6>()) return;
+  eliminated_evaluated_ = false;
+  evaluated_ = false;
   Vector6d xi = xi_star_;
   if (!align_base(w_b, xi)) {
     breakdown_.cost = std::numeric_limits<double>::quiet_NaN();
     cost_gradient_.setConstant(std::numeric_limits<double>::quiet_NaN());
-    evaluated_ = false;
     return;
   }
   xi_star_ = xi;
   Vector12d x;
   x << w_b, xi;
-  evaluate_with_base(x);
+  evaluate_aligned(x);
+  eliminated_evaluated_ = true;
   // ∂F/∂w̃ = D ∂F/∂w_b at ξ*: ∂F/∂ξ = 0 there.
   cost_gradient_ = gradient_x_.head<6>().cwiseProduct(units);
 }

@@ -140,7 +140,7 @@ double ShapeProblem::constraint_violation() const {
   return violation;
 }
 
-void ShapeProblem::evaluate_cost() {
+void ShapeProblem::evaluate_cost(const std::vector<int>* near_intervals) {
   const RodConfiguration& c = configuration_;
   const double L = rod_.properties.length;
   const double W1 = target_.energy_weight, W2 = target_.distance_weight;
@@ -149,10 +149,12 @@ void ShapeProblem::evaluate_cost() {
   cost_gradient_ = (W1 / L) * c.denergy_dw.transpose();
   double distance_term = 0.0;
   breakdown_.max_distance = 0.0;
-  interval_balls(c, balls_);  // once for all the points
+  if (near_intervals == nullptr) interval_balls(c, balls_);  // once for all the points
   for (std::size_t k = 0; k < target_.points.size(); ++k) {
     const Eigen::Vector3d& point = target_.points[k];
-    projections_[k] = project_onto_curve(c, point, balls_);
+    projections_[k] = near_intervals == nullptr
+                          ? project_onto_curve(c, point, balls_)
+                          : project_from_interval(c, point, (*near_intervals)[k], 0);
     const double d = projections_[k].distance;
     breakdown_.distances[k] = d;
     breakdown_.max_distance = std::max(breakdown_.max_distance, d);

@@ -54,10 +54,11 @@ CurveProjection project_onto_curve(const RodConfiguration& configuration,
 CurveProjection project_near_node(const RodConfiguration& configuration,
                                   const Eigen::Vector3d& point,
                                   int node);
-/// The minimiser of |Γ(s) - p| over the intervals within `reach` of `interval`, the window widened
-/// while its best lies at its first or last end (a descent along the curve): a warm start from
-/// the last closest point of a point that moved little. Local: a closer point elsewhere on Γ is
-/// only found by project_onto_curve.
+/// The minimiser of |Γ(s) - p| over the intervals within `reach` of the interval found by a
+/// descent along the nodes from `interval` (towards the nearer node while one is nearer), the
+/// window widened while its best lies at its first or last end: a warm start from the last closest
+/// point of a point that moved. Local: a closer point elsewhere on Γ is only found by
+/// project_onto_curve.
 CurveProjection project_from_interval(const RodConfiguration& configuration,
                                       const Eigen::Vector3d& point,
                                       int interval,

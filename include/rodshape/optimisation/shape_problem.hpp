@@ -184,7 +184,9 @@ class ShapeProblem {
   Vector6d cost_gradient_ = Vector6d::Zero();
   Eigen::VectorXd g_;
   Eigen::MatrixXd dg_dw_;
-  void evaluate_cost();
+  /// F and ∇_w F at configuration_, each point projected onto the whole curve, or, given
+  /// `near_intervals` (one per point), locally from those intervals (project_from_interval).
+  void evaluate_cost(const std::vector<int>* near_intervals = nullptr);
   void evaluate_constraints();
   /// ρ(d) of the distance term (plain, pseudo-Huber or squared), and W2 ρ'(d).
   double distance_penalty(double d) const;
@@ -203,7 +205,15 @@ class ShapeProblem {
   // The base pose eliminated: evaluate() aligns ξ* (from xi_star_) at the w_b it is given.
   bool eliminated_ = false;
   Vector6d xi_star_ = Vector6d::Zero();
+  bool eliminated_evaluated_ = false;  // evaluate_eliminated() has run at x_.head<6>()
   void evaluate_eliminated(const Vector6d& w_b);
+  /// What evaluate_eliminated() reads of evaluate_with_base() at x = (w_b, ξ*): F and ∇_w F, the
+  /// points projected from the alignment's closest intervals (its last projection was global),
+  /// neither ξ's derivatives (∂F/∂ξ = 0 at ξ*) nor rows. Leaves evaluate_with_base() to evaluate
+  /// anew.
+  void evaluate_aligned(const Vector12d& x);
+  /// The motion term W_b W2 (|δt|² + L² |δφ|²) / L at x.
+  double motion_cost(const Vector12d& x) const;
   // align_base(): the shape in the base's frame and its balls (integrate_body).
   RodConfiguration body_;
   std::vector<IntervalBall> body_balls_;
