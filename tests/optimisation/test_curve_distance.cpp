@@ -120,6 +120,28 @@ TEST(CurveDistance, PointsOffAnArcMatchTheCircleFormula) {
   EXPECT_TRUE(CompareScalars(clamp.distance, 0.03, 1e-15));
 }
 
+TEST(CurveDistance, AWarmStartFromAnyIntervalDescendsToTheArcsOneMinimum) {
+  // Near an arc of κL = 3 (less than a circle) the distance along the curve, with d² = r² + ρ² -
+  // 2rρ cos Δθ, has one minimum: project_from_interval must reach it from every start interval,
+  // however far (align_base's warm starts), bit for bit the global projection's distance up to the
+  // foot point found from the neighbouring interval (t = 1 of i-1 against t = 0 of i).
+  const Arc arc = make_arc(3.0, 20);
+  const double L = arc.rod.properties.length, rho = arc.radius;
+  for (double s : {0.0, 0.02 * L, 0.33 * L, 0.5 * L, 0.97 * L, L}) {
+    const Eigen::Vector3d radial = (arc_point(arc, s) - arc.center) / rho;
+    for (double r : {0.3 * rho, 0.95 * rho, 1.0 * rho, 1.5 * rho}) {
+      const Eigen::Vector3d point = arc.center + r * radial + Eigen::Vector3d(0.1 * rho, 0, 0);
+      const CurveProjection global = project_onto_curve(arc.configuration, point);
+      for (int start = 0; start < arc.rod.intervals; ++start) {
+        const CurveProjection local = project_from_interval(arc.configuration, point, start, 0);
+        EXPECT_TRUE(CompareScalars(local.distance, global.distance, 1e-15))
+            << "s = " << s << ", r/ρ = " << r / rho << ", from interval " << start;
+        EXPECT_NEAR(local.s, global.s, 1e-9 * L) << "from interval " << start;
+      }
+    }
+  }
+}
+
 /// A precurved rod under no load is a helix of 1.55 turns: a point between two turns has a local
 /// minimum of the distance on each.
 RodConfiguration make_helix(ClampedRod& rod) {
