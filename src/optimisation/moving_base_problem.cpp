@@ -141,17 +141,15 @@ double ShapeProblem::motion_cost(const Vector12d& x) const {
 
 void ShapeProblem::evaluate_aligned(const Vector12d& x) {
   x_ = x;
-  set_clamp(x);
-  const Eigen::Matrix3d& R0 = rod_.clamp.rotation;
-  const BaseWrench w{R0 * x.segment<3>(0), R0 * x.segment<3>(3)};
-  integrate(rod_, w, configuration_, Derivatives::AllNodes);
-  ++integrations_;
-  evaluate_cost(&align_intervals_);
+  set_clamp(x);  // the rod's clamp is the evaluated base pose
+  const Pose& base = rod_.clamp;
+  for (std::size_t k = 0; k < target_.points.size(); ++k)  // q = R0ᵀ (p - p0)
+    body_points_[k] = base.rotation.transpose() * (target_.points[k] - base.position);
+  evaluate_cost(body_, body_points_, &align_intervals_);  // ∇ in the body-frame wrench w_b
   breakdown_.cost += motion_cost(x);
-  gradient_x_.segment<3>(0) = R0.transpose() * cost_gradient_.head<3>();
-  gradient_x_.segment<3>(3) = R0.transpose() * cost_gradient_.tail<3>();
+  gradient_x_.head<6>() = cost_gradient_;
   gradient_x_.tail<6>().setZero();  // ∂F/∂ξ = 0 at ξ*
-  w_ = w.to_vector();
+  w_ = world_wrench(x).to_vector();
   evaluated_ = false;
 }
 
@@ -317,7 +315,7 @@ void ShapeProblem::integrate_body(const Vector6d& w_b) {
     ~ClampRestored() { rod.clamp = clamp; }
   } restore{rod_, rod_.clamp};
   rod_.clamp = Pose{};
-  integrate(rod_, BaseWrench::from_vector(w_b), body_, Derivatives::None);
+  integrate(rod_, BaseWrench::from_vector(w_b), body_, Derivatives::AllNodes);
   ++integrations_;
   interval_balls(body_, body_balls_);
 }

@@ -103,6 +103,7 @@ ShapeProblem::ShapeProblem(ClampedRod rod,
   configuration_.resize(nodes, Derivatives::AllNodes);
   const std::size_t points = target_.points.size();
   projections_.resize(points);
+  body_points_.resize(points);
   balls_.resize(static_cast<std::size_t>(rod_.intervals));
   breakdown_.distances.assign(points, 0.0);
   g_ = Eigen::VectorXd::Zero(constraint_count_);
@@ -140,8 +141,9 @@ double ShapeProblem::constraint_violation() const {
   return violation;
 }
 
-void ShapeProblem::evaluate_cost(const std::vector<int>* near_intervals) {
-  const RodConfiguration& c = configuration_;
+void ShapeProblem::evaluate_cost(const RodConfiguration& c,
+                                 const std::vector<Eigen::Vector3d>& points,
+                                 const std::vector<int>* near_intervals) {
   const double L = rod_.properties.length;
   const double W1 = target_.energy_weight, W2 = target_.distance_weight;
   breakdown_.energy = c.energy;
@@ -150,8 +152,8 @@ void ShapeProblem::evaluate_cost(const std::vector<int>* near_intervals) {
   double distance_term = 0.0;
   breakdown_.max_distance = 0.0;
   if (near_intervals == nullptr) interval_balls(c, balls_);  // once for all the points
-  for (std::size_t k = 0; k < target_.points.size(); ++k) {
-    const Eigen::Vector3d& point = target_.points[k];
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d& point = points[k];
     projections_[k] = near_intervals == nullptr
                           ? project_onto_curve(c, point, balls_)
                           : project_from_interval(c, point, (*near_intervals)[k], 0);

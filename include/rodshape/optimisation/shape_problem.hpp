@@ -184,9 +184,14 @@ class ShapeProblem {
   Vector6d cost_gradient_ = Vector6d::Zero();
   Eigen::VectorXd g_;
   Eigen::MatrixXd dg_dw_;
-  /// F and ∇_w F at configuration_, each point projected onto the whole curve, or, given
-  /// `near_intervals` (one per point), locally from those intervals (project_from_interval).
-  void evaluate_cost(const std::vector<int>* near_intervals = nullptr);
+  /// F and ∇_w F at configuration_, each point projected onto the whole curve.
+  void evaluate_cost() { evaluate_cost(configuration_, target_.points, nullptr); }
+  /// F and ∇_w F at configuration `c` for `points` (in c's frame), into breakdown_, cost_gradient_
+  /// and projections_; given `near_intervals` (one per point), each point projected locally from
+  /// its interval (project_from_interval), else onto the whole curve.
+  void evaluate_cost(const RodConfiguration& c,
+                     const std::vector<Eigen::Vector3d>& points,
+                     const std::vector<int>* near_intervals);
   void evaluate_constraints();
   /// ρ(d) of the distance term (plain, pseudo-Huber or squared), and W2 ρ'(d).
   double distance_penalty(double d) const;
@@ -207,14 +212,18 @@ class ShapeProblem {
   Vector6d xi_star_ = Vector6d::Zero();
   bool eliminated_evaluated_ = false;  // evaluate_eliminated() has run at x_.head<6>()
   void evaluate_eliminated(const Vector6d& w_b);
-  /// What evaluate_eliminated() reads of evaluate_with_base() at x = (w_b, ξ*): F and ∇_w F, the
-  /// points projected from the alignment's closest intervals (its last projection was global),
-  /// neither ξ's derivatives (∂F/∂ξ = 0 at ξ*) nor rows. Leaves evaluate_with_base() to evaluate
-  /// anew.
+  /// What evaluate_eliminated() reads of evaluate_with_base() at x = (w_b, ξ*), F and ∂F/∂w_b, in
+  /// the base's frame: F is invariant under the rigid placement ξ, so it is F of body_ (with its
+  /// derivatives in w_b, from align_base) and the points seen from the base, each projected from
+  /// the alignment's closest interval (its last projection was global). Neither ξ's derivatives
+  /// (∂F/∂ξ = 0 at ξ*) nor rows; configuration_ and projections_ are not the world's until
+  /// evaluate_with_base() evaluates anew.
   void evaluate_aligned(const Vector12d& x);
+  std::vector<Eigen::Vector3d> body_points_;  // the target's points seen from the base
   /// The motion term W_b W2 (|δt|² + L² |δφ|²) / L at x.
   double motion_cost(const Vector12d& x) const;
-  // align_base(): the shape in the base's frame and its balls (integrate_body).
+  // align_base(): the shape in the base's frame, with its derivatives in w_b, and its balls
+  // (integrate_body).
   RodConfiguration body_;
   std::vector<IntervalBall> body_balls_;
   void integrate_body(const Vector6d& w_b);
