@@ -59,7 +59,8 @@ void add_counts(ShootingSummary& total, const ShootingSummary& part) {
 void confirm_converged(const ClampedRod& rod,
                        const TipCondition& tip,
                        const ShootingOptions& options,
-                       ShootingResult& solution) {
+                       ShootingResult& solution,
+                       std::optional<double> integration_error) {
   ShootingSummary& summary = solution.summary;
   summary.substeps = rod.substeps;
   if (!summary.converged() || !confirm_residual(tip, options, solution)) return;
@@ -67,9 +68,14 @@ void confirm_converged(const ClampedRod& rod,
 
   ClampedRod refined = rod;
   while (true) {
-    summary.integration_error =
-        integration_error_estimate(refined, solution.base_wrench, solution.configuration);
-    summary.integrations += 1;  // one, at half the steps (at twice them when counts are odd)
+    if (integration_error) {  // the solve's own (its integrations are counted)
+      summary.integration_error = *integration_error;
+      integration_error.reset();
+    } else {
+      summary.integration_error =
+          integration_error_estimate(refined, solution.base_wrench, solution.configuration);
+      summary.integrations += 1;  // one, at half the steps (at twice them when counts are odd)
+    }
     if (summary.integration_error <= options.integration_tolerance) return;
     if (refined.substeps >= options.max_substeps) {
       summary.status = SolveStatus::DiscretisationTooCoarse;

@@ -15,6 +15,7 @@
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "secant_start.hpp"
+#include "step_doubling.hpp"
 #include "validation.hpp"
 
 #include "overloaded.hpp"
@@ -88,16 +89,31 @@ Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
   return scale;
 }
 
+/// The chord steps' first stage: integrations with the accuracy check's steps twice as long (half
+/// the cost), down to the root of that coarser discretisation; the rod's own steps then finish.
+/// The last coarse integration is kept: when the solve ends at its wrench, it is the check's
+/// comparison run (step_doubling_error()), which then costs no integration.
+struct CoarseStage {
+  detail::ComparisonRod compared;
+  RodConfiguration work;  // integrate(compared.rod, w, Derivatives::None) when `holds`
+  Vector6d w = Vector6d::Zero();
+  bool holds = false;
+};
+
 /// The shooting residual as Eigen's Levenberg–Marquardt sees it. Every evaluation integrates with
 /// tip derivatives and keeps the Jacobian, so that df() at an accepted point costs nothing (and
 /// so does operator() at the cached point, e.g. minimizeInit() at the Euler predictor's point).
 class ShootingProblem : public Eigen::DenseFunctor<double> {
  public:
-  ShootingProblem(const ClampedRod& rod, const TipCondition& tip, RodConfiguration& work)
+  ShootingProblem(const ClampedRod& rod,
+                  const TipCondition& tip,
+                  RodConfiguration& work,
+                  CoarseStage* coarse)
       : Eigen::DenseFunctor<double>(6, 6),
         rod_(rod),
         tip_(tip),
         work_(work),
+        coarse_(coarse),
         row_scale_(residual_row_scale(rod, tip)) {}
 
   int operator()(const InputType& w, ValueType& f) {
@@ -157,6 +173,17 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
     return residual_;
   }
 
+  bool has_coarse_stage() const { return coarse_ != nullptr; }
+  /// The residual at w of the coarse stage's rod (CoarseStage), without derivatives.
+  const Vector6d& coarse_residual(const Vector6d& w) {
+    integrate(coarse_->compared.rod, Wrench::from_vector(w), coarse_->work, Derivatives::None);
+    coarse_->w = w, coarse_->holds = true;
+    residual_ = shooting_residual(tip_, coarse_->work);
+    has_cache_ = false;
+    ++integrations_;
+    return residual_;
+  }
+
  private:
   /// r and J need the tip only: the shape's other nodes and the energy are not stored.
   void evaluate(const Vector6d& w) {
@@ -172,6 +199,7 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   const ClampedRod& rod_;
   const TipCondition& tip_;
   RodConfiguration& work_;
+  CoarseStage* coarse_;  // null: no coarse stage
   Vector6d row_scale_;
   Vector6d w_cached_ = Vector6d::Zero();
   Vector6d residual_ = Vector6d::Zero();
@@ -191,8 +219,12 @@ constexpr double kChordThreshold = 1e-2;
 /// integration without derivatives (about a third of the cost of one with them) and accepted when
 /// it halves the scaled residual; then B takes Broyden's rank-one update
 /// B += (Δr - B Δw) Δwᵀ / (Δwᵀ Δw). Near the root this converges superlinearly without another
-/// derivative integration. True when ||r||_∞ ≤ tolerance; false when a step fails first (or
-/// after kMaxChordSteps). (w, r, B) end at the last accepted point either way.
+/// derivative integration. With a coarse stage (CoarseStage) the steps are checked on its rod in
+/// up to kMaxCoarseRounds rounds, each down to its root, where one integration of the rod gives
+/// the rod's residual and the next round's offset; a coarse step that fails to halve is checked
+/// again on the rod, whose steps then go on. True when ||r||_∞ ≤ tolerance on the rod; false when
+/// a step fails first (or after kMaxChordSteps steps). At most kMaxChordSteps + kMaxCoarseRounds +
+/// 1 integrations. (w, r, B) end at the last accepted point either way.
 bool broyden_steps(ShootingProblem& problem,
                    const ShootingOptions& options,
                    Matrix6d& B,
@@ -200,20 +232,47 @@ bool broyden_steps(ShootingProblem& problem,
                    Vector6d& r,
                    ShootingSummary& result) {
   constexpr int kMaxChordSteps = 8;
+  constexpr int kMaxCoarseRounds = 3;
+  // The coarse stage steps on r_c(w) + δ, with δ = r(w) − r_c(w) (the two discretisations'
+  // difference, which hardly changes near the root) from the last point where both are known;
+  // the first round, before any, with δ = 0 and only down to √(tolerance |r|).
+  int coarse_rounds = problem.has_coarse_stage() ? 1 : 0;
+  Vector6d offset = Vector6d::Zero();
+  double round_tolerance =
+      std::max(options.residual_tolerance,
+               std::sqrt(options.residual_tolerance * r.lpNorm<Eigen::Infinity>()));
   for (int k = 0; k < kMaxChordSteps; ++k) {
+    bool coarse = coarse_rounds > 0;
     const Eigen::PartialPivLU<Matrix6d> lu(B);
     if (!(std::abs(lu.determinant()) > 0.0)) return false;
     const Vector6d step = -lu.solve(r);
     const Vector6d w_next = w + step;
-    const Vector6d r_next = problem.residual_without_jacobian(w_next);
+    Vector6d r_next = coarse ? Vector6d(problem.coarse_residual(w_next) + offset)
+                             : problem.residual_without_jacobian(w_next);
     ++result.chord_steps;
-    if (!r_next.allFinite() || problem.scaled_norm(r_next) > 0.5 * problem.scaled_norm(r))
-      return false;
+    const auto halves = [&] {
+      return r_next.allFinite() && problem.scaled_norm(r_next) <= 0.5 * problem.scaled_norm(r);
+    };
+    if (coarse && !halves()) {  // the coarse rod too far from the rod: its own steps from here
+      coarse = false, coarse_rounds = 0;
+      r_next = problem.residual_without_jacobian(w_next);
+    }
+    if (!halves()) return false;
     B += (r_next - r - B * step) * step.transpose() / step.squaredNorm();  // Broyden
     w = w_next;
     r = r_next;
     result.residual_norm = r.lpNorm<Eigen::Infinity>();
+    if (result.residual_norm > (coarse ? round_tolerance : options.residual_tolerance)) continue;
+    if (!coarse) return true;
+    // The coarse stage's root: the rod's own residual there, and δ from the two.
+    const Vector6d r_coarse = r - offset;
+    r = problem.residual_without_jacobian(w);
+    if (!r.allFinite()) return false;
+    result.residual_norm = r.lpNorm<Eigen::Infinity>();
     if (result.residual_norm <= options.residual_tolerance) return true;
+    offset = r - r_coarse;
+    coarse_rounds = coarse_rounds < kMaxCoarseRounds ? coarse_rounds + 1 : 0;
+    round_tolerance = options.residual_tolerance;
   }
   return false;
 }
@@ -278,15 +337,16 @@ std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w)
 /// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
 /// `work_is_output`: true when `work` ends as integrate(rod, w, options.output_derivatives) (the
 /// last integration was at the last iterate, with that level), so the caller need not integrate
-/// again.
+/// again. `coarse`: the chord steps' coarse stage, or null.
 ShootingSummary solve_direct(const ClampedRod& rod,
                              const TipCondition& tip,
                              const ShootingOptions& options,
                              RodConfiguration& work,
                              Vector6d& w,
                              bool& work_is_output,
-                             detail::SecantStart* secant) {
-  ShootingProblem problem(rod, tip, work);
+                             detail::SecantStart* secant,
+                             CoarseStage* coarse) {
+  ShootingProblem problem(rod, tip, work, coarse);
   ShootingSummary result;
   std::optional<Vector6d> euler =
       secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
@@ -528,9 +588,17 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
   RodConfiguration work;
   work.resize(rod.nodes(), Derivatives::Tip);
 
+  // The coarse stage where the accuracy check will compare with longer steps (CoarseStage).
+  std::optional<CoarseStage> coarse;
+  if (std::isfinite(options.integration_tolerance)) {
+    detail::ComparisonRod compared = detail::comparison_rod(rod);
+    if (compared.coarse) coarse.emplace().compared = std::move(compared);
+  }
+
   Vector6d w = guess.to_vector();
   bool work_is_output = false;
-  summary = solve_direct(rod, tip, options, work, w, work_is_output, secant);
+  summary =
+      solve_direct(rod, tip, options, work, w, work_is_output, secant, coarse ? &*coarse : nullptr);
 
   if (!summary.converged() && options.continuation) {
     continue_from_rest(rod, tip, options, summary, w);
@@ -540,11 +608,18 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
   solution.base_wrench = Wrench::from_vector(w);
   // The last integration is usually the output asked for (a chord step's, without derivatives):
   // then it is the result, else one more integration makes it.
-  if (work_is_output)
+  // The check's comparison run is the coarse stage's last integration when it was at w.
+  std::optional<double> integration_error;
+  if (work_is_output) {
     take_as_output(work, options.output_derivatives, solution.configuration);
-  else
+    if (coarse && coarse->holds && coarse->w == w)
+      integration_error =
+          detail::step_doubling_error(rod, solution.configuration, coarse->compared, coarse->work);
+  } else {
     integrate(rod, solution.base_wrench, solution.configuration, options.output_derivatives);
-  detail::confirm_converged(rod, tip, options, solution);  // finite, accurate, or a status
+  }
+  // finite, accurate, or a status
+  detail::confirm_converged(rod, tip, options, solution, integration_error);
   if (secant && !solution.summary.converged()) secant->valid = false;
   return solution;
 }

@@ -1,0 +1,74 @@
+// The chord steps' coarse stage (src/solvers/shooting_solver.cpp, CoarseStage): steps checked on
+// the accuracy check's longer steps, whose last integration is the check's comparison run.
+#include <gtest/gtest.h>
+
+#include "rodshape/core/rod_integrator.hpp"
+#include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/solvers/integration_error.hpp"
+#include "rodshape/solvers/shooting_residual.hpp"
+#include "rodshape/solvers/shooting_solver.hpp"
+#include "solvers/step_doubling.hpp"
+
+namespace rodshape {
+namespace {
+
+ShootingOptions tip_only_output() {
+  ShootingOptions options;
+  options.output_derivatives = Derivatives::None;  // the last chord step's integration is output
+  return options;
+}
+
+// The bench's warm solve: the bent band's tip moved by 1 mm. The solve's estimate (from its own
+// coarse integration) is integration_error_estimate()'s on the returned configuration, bit for
+// bit, and the solve needs fewer integrations of the rod than the 5 chord steps and the check's
+// run without the stage (7 in all, 1 with derivatives).
+TEST(CoarseStage, WarmSolveSharesTheAccuracyCheckAndConverges) {
+  const ClampedRod rod = samples::rubber_band(ConstitutiveModel::Cosserat, 100);
+  const ShootingOptions options = tip_only_output();
+  const ShootingResult solved =
+      solve_equilibrium(rod, ClampedTip{samples::bent_tip()}, {}, options);
+  ASSERT_TRUE(solved.summary.converged()) << solved.brief();
+  Pose moved = samples::bent_tip();
+  moved.position += Eigen::Vector3d(1e-3, 0.0, 0.0);
+  const ClampedTip tip{moved};
+  const ShootingResult warm = solve_equilibrium(rod, tip, solved.base_wrench, options);
+  ASSERT_TRUE(warm.summary.converged()) << warm.brief();
+  EXPECT_LE(shooting_residual(tip, warm.configuration).lpNorm<Eigen::Infinity>(),
+            options.residual_tolerance);
+  EXPECT_EQ(warm.summary.integration_error,
+            integration_error_estimate(rod, warm.base_wrench, warm.configuration));
+  EXPECT_EQ(warm.summary.jacobian_evaluations, 1) << warm.brief();
+  // Without the stage: 1 + 5 rod integrations + the check's half-step run. With it: 1 + 2 of the
+  // rod, and the half-step runs (5 chord steps) instead of 4 chord steps and the check.
+  EXPECT_EQ(warm.summary.integrations, 8) << warm.brief();
+  EXPECT_EQ(warm.summary.chord_steps, 5) << warm.brief();
+  // The same equilibrium as without the stage (the check off turns the stage off).
+  ShootingOptions without = options;
+  without.integration_tolerance = std::numeric_limits<double>::infinity();
+  const ShootingResult plain = solve_equilibrium(rod, tip, solved.base_wrench, without);
+  ASSERT_TRUE(plain.summary.converged()) << plain.brief();
+  EXPECT_EQ(plain.summary.integrations, 6) << plain.brief();
+  const Vector6d units = rod.properties.bending_wrench_units();
+  EXPECT_LE(((warm.base_wrench.to_vector() - plain.base_wrench.to_vector()).cwiseQuotient(units))
+                .lpNorm<Eigen::Infinity>(),
+            1e-6);
+}
+
+// Odd intervals and sub-steps: the check integrates at twice the sub-steps, so there is no coarse
+// stage, and the solve is the one without the check's stage (the same iterates, bit for bit).
+TEST(CoarseStage, NoStageWhereTheCheckRefines) {
+  const ClampedRod rod = samples::rubber_band(ConstitutiveModel::Cosserat, 101);
+  EXPECT_FALSE(detail::comparison_rod(rod).coarse);
+  ShootingOptions options = tip_only_output();
+  const ShootingResult checked =
+      solve_equilibrium(rod, ClampedTip{samples::bent_tip()}, {}, options);
+  options.integration_tolerance = std::numeric_limits<double>::infinity();
+  const ShootingResult unchecked =
+      solve_equilibrium(rod, ClampedTip{samples::bent_tip()}, {}, options);
+  ASSERT_TRUE(checked.summary.converged()) << checked.brief();
+  EXPECT_EQ(checked.base_wrench.to_vector(), unchecked.base_wrench.to_vector());
+  EXPECT_EQ(checked.summary.integrations, unchecked.summary.integrations + 1);
+}
+
+}  // namespace
+}  // namespace rodshape
