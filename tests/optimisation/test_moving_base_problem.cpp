@@ -218,6 +218,45 @@ TEST(MovingBaseProblem, WithoutLoadsThePoseIsEliminatedAndTheOptimumIsThatOfTheT
       << "iterations " << result.ipopt.iterations << " against " << reference.ipopt.iterations;
 }
 
+TEST(MovingBaseProblem, TheEliminatedEvaluationInTheBasesFrameIsTheWorldsAtTheAlignment) {
+  // With the base pose eliminated, F and ∂F/∂w_b are evaluated on the shape in the base's frame
+  // (F is invariant under the rigid placement): they must be the world evaluation's at x = (w_b,
+  // ξ*), up to the rounding of integrating the same ODE in two frames (about 1e-13 relative here).
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  ShapeTarget target;
+  for (int i : {0, 5, 12, 20, 28, 36, 40})
+    target.points.push_back(truth.p[i] + 2e-3 * truth.R[i].col(i % 2));
+  target.energy_weight = 1e-3;
+  target.distance_weight = 1.0;
+  BaseMotion motion;
+  motion.reference = rod.clamp;
+  ShapeProblem problem(rod, target);
+  problem.move_base(motion);
+  ASSERT_TRUE(problem.rigid_alignment_applies());
+  const Vector6d units = rod.properties.bending_wrench_units();
+  for (double scale : {0.5, 1.0, 1.3}) {
+    problem.eliminate_base_pose(true);
+    problem.evaluate((scale * wb).cwiseQuotient(units));
+    const double eliminated_cost = problem.cost();
+    const Vector6d eliminated_gradient = problem.cost_gradient().cwiseQuotient(units);  // ∂F/∂w_b
+    const Vector12d x = problem.evaluated_variables();
+    ASSERT_TRUE(std::isfinite(eliminated_cost));
+    EXPECT_GT(x.tail<3>().norm() + x.segment<3>(6).norm(), 1e-3) << "the base did not move";
+    problem.eliminate_base_pose(false);
+    problem.evaluate_with_base(x);
+    EXPECT_NEAR(eliminated_cost, problem.cost(), 1e-12 * problem.cost()) << "scale " << scale;
+    const Vector6d world_gradient = problem.variable_gradient().head<6>();
+    EXPECT_TRUE(CompareMatrices(eliminated_gradient, world_gradient,
+                                1e-9 * world_gradient.lpNorm<Eigen::Infinity>()))
+        << "scale " << scale;
+  }
+}
+
 TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences) {
   // align_base() takes Newton steps on alignment_cost's gradient and Hessian in ξ̃ = (δt / L, δφ):
   // both against central differences (of the cost, of the gradient), away from the alignment's
