@@ -3,6 +3,7 @@
 #include "rodshape/robot/inverse_kinematics.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <algorithm>
@@ -217,24 +218,25 @@ class Solver {
   }
 
   /// N (-k ∇H): the descent of H(q) = ½ Σ ((q_i - mid_i) / range_i)² projected on the null space
-  /// of J_A (exactly, from its SVD), fading with the pose error.
+  /// of J_A, fading with the pose error. The row space of J_A is spanned by v_k = J_Aᵀ u_k / σ_k
+  /// with J_A J_Aᵀ = Σ σ_k² u_k u_kᵀ (a 6 × 6 eigenproblem, not the n × n SVD); directions with
+  /// σ_k² ≤ kWeakDirection σ_max² (beyond the eigenvalues' rounding) count as null.
   Eigen::VectorXd null_space_step(const Eigen::VectorXd& q,
                                   const Jacobian& J_A,
                                   const std::vector<bool>& blocked,
                                   double error_norm) const {
+    constexpr double kWeakDirection = 1e-12;
     Eigen::VectorXd gradient = Eigen::VectorXd::Zero(n_);
     for (int i = 0; i < n_; ++i) {
       if (range_(i) > 0.0 && !blocked[i]) gradient(i) = (q(i) - mid_(i)) / (range_(i) * range_(i));
     }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J_A, Eigen::ComputeFullV);
-    const Eigen::VectorXd& sigma = svd.singularValues();
-    const double threshold = 1e-9 * std::max(1.0, sigma(0));
+    const Eigen::SelfAdjointEigenSolver<Matrix6> eigen(J_A * J_A.transpose());
+    const Vector6& lambda = eigen.eigenvalues();  // σ_k², ascending
+    const double threshold = kWeakDirection * std::max(1.0, lambda(5));
     Eigen::VectorXd step = -options_.limit_avoidance_gain * gradient;
-    for (Eigen::Index k = 0; k < sigma.size(); ++k) {
-      if (sigma(k) > threshold) {
-        const auto v = svd.matrixV().col(k);
-        step -= v * v.dot(step);
-      }
+    for (int k = 5; k >= 0 && lambda(k) > threshold; --k) {
+      const Eigen::VectorXd v = (J_A.transpose() * eigen.eigenvectors().col(k)).normalized();
+      step -= v * v.dot(step);
     }
     for (int i = 0; i < n_; ++i)
       if (blocked[i]) step(i) = 0.0;
