@@ -154,23 +154,30 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   EXPECT_GT(clamped.cost.max_distance, 0.01) << clamped.brief();
 }
 
+/// The paper's smoothed Σ dist (W1 = 1e-3, W2 = 1), its points `offset` off the shape of the
+/// body-frame wrench wb from a clamp moved 3 cm and turned 0.24 rad from rod's (nodes 0 … 40).
+ShapeTarget target_off_moved_shape(const ClampedRod& rod, const Vector6d& wb, double offset) {
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  ShapeTarget target;
+  for (int i : {0, 5, 12, 20, 28, 36, 40})
+    target.points.push_back(truth.p[i] + offset * truth.R[i].col(i % 2));
+  target.energy_weight = 1e-3;
+  target.distance_weight = 1.0;
+  return target;
+}
+
 TEST(MovingBaseProblem, WithoutLoadsThePoseIsEliminatedAndTheOptimumIsThatOfTheTwelveUnknowns) {
   // No distributed load: the shape in the base's frame depends on w_b alone, so without constraint
   // rows IPOPT sees w_b and ξ is the best rigid placement at each w_b (align_base). Its optimum
   // must be stationary in all 12 unknowns and the same as the 12-unknown NLP's (forced here by an
   // inactive base workspace row).
   const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
-  ClampedRod moved = rod;
-  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
-  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
   const Vector6d wb = 0.3 * body_wrench(rod);
-  const RodConfiguration truth = integrate(
-      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
-  ShapeTarget target;  // the paper's smoothed Σ dist, points 1 mm off the moved shape
-  for (int i : {0, 5, 12, 20, 28, 36, 40})
-    target.points.push_back(truth.p[i] + 1e-3 * truth.R[i].col(i % 2));
-  target.energy_weight = 1e-3;
-  target.distance_weight = 1.0;
+  const ShapeTarget target = target_off_moved_shape(rod, wb, 1e-3);
   BaseMotion motion;
   motion.reference = rod.clamp;
   const BaseWrench guess{rod.clamp.rotation * 0.2 * wb.head<3>(),
@@ -224,15 +231,7 @@ TEST(MovingBaseProblem, TheEliminatedEvaluationInTheBasesFrameIsTheWorldsAtTheAl
   // ξ*), up to the rounding of integrating the same ODE in two frames (about 1e-13 relative here).
   const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
   const Vector6d wb = 0.3 * body_wrench(rod);
-  ClampedRod moved = rod;
-  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
-  const RodConfiguration truth = integrate(
-      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
-  ShapeTarget target;
-  for (int i : {0, 5, 12, 20, 28, 36, 40})
-    target.points.push_back(truth.p[i] + 2e-3 * truth.R[i].col(i % 2));
-  target.energy_weight = 1e-3;
-  target.distance_weight = 1.0;
+  const ShapeTarget target = target_off_moved_shape(rod, wb, 2e-3);
   BaseMotion motion;
   motion.reference = rod.clamp;
   ShapeProblem problem(rod, target);
