@@ -220,21 +220,11 @@ namespace {
 /// nodes while the next is closer to p (a descent, one distance per node), then the side of the
 /// nearest node on which the distance falls, the sign of (p_i - p) · p'_i.
 int interval_of_descent(const RodConfiguration& c, const Eigen::Vector3d& point, int interval) {
+  const auto squared = [&](int i) { return (c.p[i] - point).squaredNorm(); };
   int node = interval;
-  double here = (c.p[node] - point).squaredNorm();
-  for (bool moved = true; moved;) {
-    moved = false;
-    for (const int next : {node - 1, node + 1}) {
-      if (next < 0 || next >= c.nodes()) continue;
-      const double there = (c.p[next] - point).squaredNorm();
-      if (there < here) {
-        node = next;
-        here = there;
-        moved = true;
-        break;
-      }
-    }
-  }
+  // Backwards while nearer, else forwards: after a move the node left behind is farther.
+  while (node > 0 && squared(node - 1) < squared(node)) --node;
+  while (node + 1 < c.nodes() && squared(node + 1) < squared(node)) ++node;
   const int intervals = c.nodes() - 1;
   const bool falls_before = (c.p[node] - point).dot(c.R[node] * c.v[node]) > 0.0;
   return std::clamp(falls_before ? node - 1 : node, 0, intervals - 1);

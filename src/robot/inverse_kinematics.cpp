@@ -234,10 +234,10 @@ class Solver {
     const Vector6& lambda = eigen.eigenvalues();  // σ_k², ascending
     const double threshold = kWeakDirection * std::max(1.0, lambda(5));
     Eigen::VectorXd step = -options_.limit_avoidance_gain * gradient;
-    for (int k = 5; k >= 0 && lambda(k) > threshold; --k) {
-      const Eigen::VectorXd v = (J_A.transpose() * eigen.eigenvectors().col(k)).normalized();
-      step -= v * v.dot(step);
-    }
+    // Σ_k v_k v_kᵀ step = J_Aᵀ Σ_k u_k (u_kᵀ J_A step) / σ_k², over the kept k.
+    Vector6 c = eigen.eigenvectors().transpose() * (J_A * step);
+    for (int k = 0; k < 6; ++k) c(k) = lambda(k) > threshold ? c(k) / lambda(k) : 0.0;
+    step.noalias() -= J_A.transpose() * (eigen.eigenvectors() * c);
     for (int i = 0; i < n_; ++i)
       if (blocked[i]) step(i) = 0.0;
     return std::min(1.0, error_norm / kNullSpaceFade) * step;
