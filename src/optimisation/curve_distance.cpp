@@ -290,15 +290,39 @@ Matrix36d hermite_jacobian(const ClampedRod& rod, const RodConfiguration& c, int
 
 }  // namespace
 
+namespace {
+
+/// The interval holding s (clamped to [0, L]).
+int interval_of(const RodConfiguration& c, double s) {
+  const auto upper = std::upper_bound(c.s.begin(), c.s.end(), s);
+  return std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+}
+
+}  // namespace
+
 Matrix36d curve_point_jacobian(const ClampedRod& rod,
                                const RodConfiguration& configuration,
                                double s) {
   const RodConfiguration& c = configuration;
   if (c.nodes() < 2) return Matrix36d::Zero();
   s = std::clamp(s, c.s.front(), c.s.back());
-  const auto upper = std::upper_bound(c.s.begin(), c.s.end(), s);
-  const int i = std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+  const int i = interval_of(c, s);
   return hermite_jacobian(rod, c, i, (s - c.s[i]) / (c.s[i + 1] - c.s[i]));
+}
+
+Matrix36d curve_tangent_jacobian(const ClampedRod& rod,
+                                 const RodConfiguration& configuration,
+                                 double s) {
+  const RodConfiguration& c = configuration;
+  if (c.nodes() < 2) return Matrix36d::Zero();
+  s = std::clamp(s, c.s.front(), c.s.back());
+  const int i = interval_of(c, s);
+  const double h = c.s[i + 1] - c.s[i], t = (s - c.s[i]) / h;
+  // d/ds of the Hermite basis: h00' = (6t² - 6t)/h = -h01', h10' = 3t² - 4t + 1, h11' = 3t² - 2t.
+  const double h00 = (6.0 * t * t - 6.0 * t) / h;
+  return h00 * (c.dp_dw[i] - c.dp_dw[i + 1]) +
+         (3.0 * t * t - 4.0 * t + 1.0) * tangent_derivative(rod, c, i) +
+         (3.0 * t * t - 2.0 * t) * tangent_derivative(rod, c, i + 1);
 }
 
 Eigen::Matrix<double, 1, 6> distance_gradient(const ClampedRod& rod,

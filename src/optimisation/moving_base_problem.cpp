@@ -187,13 +187,55 @@ constexpr double kNegligibleStep = 1e-8;
 }  // namespace
 
 namespace {
+/// dΓ/ds and d²Γ/ds² of the body-frame curve at a projection: the derivatives of the Hermite
+/// interpolant (curve_distance.cpp) of interval i at t.
+struct CurveDerivatives {
+  Eigen::Vector3d first, second;
+};
+CurveDerivatives curve_derivatives(const RodConfiguration& body,
+                                   const CurveProjection& projection) {
+  const int i = projection.interval;
+  const double t = projection.t, h = body.s[i + 1] - body.s[i];
+  const Eigen::Vector3d d0 = body.R[i] * body.v[i], d1 = body.R[i + 1] * body.v[i + 1];
+  return {(6.0 * t * t - 6.0 * t) / h * (body.p[i] - body.p[i + 1]) +
+              (3.0 * t * t - 4.0 * t + 1.0) * d0 + (3.0 * t * t - 2.0 * t) * d1,
+          (12.0 * t - 6.0) / (h * h) * (body.p[i] - body.p[i + 1]) + (6.0 * t - 4.0) / h * d0 +
+              (6.0 * t - 2.0) / h * d1};
+}
+
+/// |Γ'|² - r·Γ'' (r = q - Γ, q the point), how fast (q - Γ)·Γ' falls as s grows: the closest
+/// point slides by (Γ'·δq)/this as the point moves. |Γ'|² where it is not positive.
+double slide_denominator(const CurveDerivatives& curve, const Eigen::Vector3d& r) {
+  const double speed = curve.first.squaredNorm(), denominator = speed - r.dot(curve.second);
+  return std::isfinite(denominator) && denominator > 0.0 ? denominator : speed;
+}
+
+/// At an end of the rod the closest point is the end itself, whatever the point's motion.
+bool at_rod_end(const RodConfiguration& body, const CurveProjection& projection) {
+  return (projection.interval == 0 && projection.t == 0.0) ||
+         (projection.interval == body.nodes() - 2 && projection.t == 1.0);
+}
+
+/// W2 ρ''(d) (along the normal) and W2 ρ'(d)/d (across it) of the distance term.
+struct DistanceWeights {
+  double along = 0.0, across = 0.0;
+};
+DistanceWeights distance_weights(double d, const ShapeTarget& target) {
+  const double W2 = target.distance_weight, delta = target.distance_smoothing;
+  if (target.squared_distances) return {2.0 * W2, 2.0 * W2};
+  if (delta > 0.0) {
+    const double root = std::sqrt(d * d + delta * delta);
+    return {W2 * delta * delta / (root * root * root), W2 / root};
+  }
+  return {0.0, d > 0.0 ? W2 / d : 0.0};
+}
+
 /// The Hessian of one point's distance term in the world point, W2 ρ''(d) along the normal n̂ and
 /// W2 ρ'(d)/d across it in the normal plane of the curve (body_ is the shape in the base's frame,
-/// q the point there, R0 the base's rotation). The curve's unit tangent at the closest point is the
-/// derivative of the Hermite interpolant (curve_distance.cpp) of interval i at t; along it the
-/// distance curves by (1 - |Γ'|²/(|Γ'|² - r·Γ''))/d, r = q - Γ (the closest point slides as the
-/// point moves). At an end of the rod the closest point is the end itself: the distance to a
-/// point, curved along the tangent too.
+/// q the point there, R0 the base's rotation). Along the curve's unit tangent the distance curves
+/// by (1 - |Γ'|²/(|Γ'|² - r·Γ''))/d, r = q - Γ (the closest point slides as the point moves). At
+/// an end of the rod the closest point is the end itself: the distance to a point, curved along
+/// the tangent too.
 Eigen::Matrix3d distance_curvature(const RodConfiguration& body,
                                    const CurveProjection& projection,
                                    const Eigen::Vector3d& q,
@@ -201,35 +243,39 @@ Eigen::Matrix3d distance_curvature(const RodConfiguration& body,
                                    const Eigen::Vector3d& normal,
                                    double d,
                                    const ShapeTarget& target) {
-  const double W2 = target.distance_weight, delta = target.distance_smoothing;
-  const int i = projection.interval;
-  const double t = projection.t, h = body.s[i + 1] - body.s[i];
-  const Eigen::Vector3d d0 = body.R[i] * body.v[i], d1 = body.R[i + 1] * body.v[i + 1];
-  const Eigen::Vector3d body_tangent = (6.0 * t * t - 6.0 * t) / h * (body.p[i] - body.p[i + 1]) +
-                                       (3.0 * t * t - 4.0 * t + 1.0) * d0 +
-                                       (3.0 * t * t - 2.0 * t) * d1;
-  const Eigen::Vector3d tangent = (R0 * body_tangent).normalized();
-  const Eigen::Vector3d body_second = (12.0 * t - 6.0) / (h * h) * (body.p[i] - body.p[i + 1]) +
-                                      (6.0 * t - 4.0) / h * d0 + (6.0 * t - 2.0) / h * d1;
-  const double speed = body_tangent.squaredNorm();
-  double slide = speed / (speed - (q - projection.closest).dot(body_second));
-  if (!std::isfinite(slide) || slide <= 0.0) slide = 1.0;
-  double along = 0.0, across = 0.0;
-  if (target.squared_distances) {
-    along = across = 2.0 * W2;
-  } else if (delta > 0.0) {
-    const double root = std::sqrt(d * d + delta * delta);
-    along = W2 * delta * delta / (root * root * root);
-    across = W2 / root;
-  } else if (d > 0.0) {
-    across = W2 / d;
-  }
-  const bool at_end = (projection.interval == 0 && projection.t == 0.0) ||
-                      (projection.interval == body.nodes() - 2 && projection.t == 1.0);
+  const CurveDerivatives curve = curve_derivatives(body, projection);
+  const Eigen::Vector3d tangent = (R0 * curve.first).normalized();
+  const double slide = curve.first.squaredNorm() / slide_denominator(curve, q - projection.closest);
+  const DistanceWeights weight = distance_weights(d, target);
   const Eigen::Matrix3d across_plane =
       Eigen::Matrix3d::Identity() - normal * normal.transpose() -
-      (at_end ? Eigen::Matrix3d::Zero() : Eigen::Matrix3d(slide * tangent * tangent.transpose()));
-  return along * normal * normal.transpose() + across * across_plane;
+      (at_rod_end(body, projection) ? Eigen::Matrix3d::Zero()
+                                    : Eigen::Matrix3d(slide * tangent * tangent.transpose()));
+  return weight.along * normal * normal.transpose() + weight.across * across_plane;
+}
+
+/// ∂(W2 ρ'(d) n̂)/∂w_b in the base's frame (n̂ = r/d, r = q - Γ(s*)) as the curve moves under the
+/// fixed point q: -(W2 ρ'' n̂n̂ᵀ + W2 ρ'/d (I - n̂n̂ᵀ)) (G + Γ' ∂s*/∂w), G = ∂Γ/∂w at s*, with
+/// ∂s*/∂w = (-Γ'ᵀ G + rᵀ ∂Γ'/∂w) / (|Γ'|² - r·Γ'') from (q - Γ)·Γ' = 0 (0 at the rod's ends).
+Matrix36d normal_slope_jacobian(const ClampedRod& rod,
+                                const RodConfiguration& body,
+                                const CurveProjection& projection,
+                                const Eigen::Vector3d& q,
+                                const ShapeTarget& target) {
+  const double d = projection.distance;
+  const Eigen::Vector3d r = q - projection.closest, normal = r / d;
+  Matrix36d moved = curve_point_jacobian(rod, body, projection.s);
+  if (!at_rod_end(body, projection)) {
+    const CurveDerivatives curve = curve_derivatives(body, projection);
+    const Eigen::Matrix<double, 1, 6> slide =
+        (r.transpose() * curve_tangent_jacobian(rod, body, projection.s) -
+         curve.first.transpose() * moved) /
+        slide_denominator(curve, r);
+    moved += curve.first * slide;
+  }
+  const DistanceWeights weight = distance_weights(d, target);
+  const Eigen::Matrix3d nn = normal * normal.transpose();
+  return -(weight.along * nn + weight.across * (Eigen::Matrix3d::Identity() - nn)) * moved;
 }
 }  // namespace
 
@@ -237,7 +283,8 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
                                   Vector6d* gradient,
                                   Matrix6d* hessian,
                                   bool global,
-                                  std::vector<int>& intervals) {
+                                  std::vector<int>& intervals,
+                                  Matrix6d* mixed) {
   intervals.resize(target_.points.size());
   std::size_t k = 0;
   const double L = rod_.properties.length;
@@ -253,6 +300,7 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
   g << 2.0 * Wb * dt, (2.0 * Wb * L) * dphi;  // in ξ̃ = (δt / L, δφ)
   Matrix6d H = (2.0 * Wb * L) * Matrix6d::Identity();
   Eigen::Vector3d pull = Eigen::Vector3d::Zero();  // Σ W2 ρ'(d) (p - p0) × n̂
+  if (mixed != nullptr) mixed->setZero();
   for (const Eigen::Vector3d& point : target_.points) {
     // The point in the base's frame, q = R0ᵀ (p - p0), and its distance to the body-frame curve.
     const Eigen::Vector3d q = R0.transpose() * (point - p0);
@@ -274,6 +322,10 @@ double ShapeProblem::aligned_cost(const Vector6d& xi_scaled,
     if (d > 0.0) {
       normal = R0 * (q - projection.closest) / d;
       g += slope * (J.transpose() * normal);
+      // H_ξ̃w: ∂(W2 ρ' Jᵀ R0 n̂_b)/∂w_b, J and R0 fixed as the curve moves.
+      if (mixed != nullptr)
+        mixed->noalias() +=
+            (J.transpose() * R0) * normal_slope_jacobian(rod_, body_, projection, q, target_);
     }
     if (hessian == nullptr) continue;
     // Newton: W2 ρ'' along n̂, W2 ρ'/d across it in the normal plane of the curve.
@@ -323,12 +375,13 @@ void ShapeProblem::integrate_body(const Vector6d& w_b) {
 double ShapeProblem::alignment_cost(const Vector6d& w_b,
                                     const Vector6d& xi,
                                     Vector6d* gradient,
-                                    Matrix6d* hessian) {
+                                    Matrix6d* hessian,
+                                    Matrix6d* mixed) {
   integrate_body(w_b);
   Vector6d at;
   at << xi.head<3>() / rod_.properties.length, xi.tail<3>();
   std::vector<int> intervals;
-  return aligned_cost(at, gradient, hessian, true, intervals);
+  return aligned_cost(at, gradient, hessian, true, intervals, mixed);
 }
 
 namespace {
@@ -344,7 +397,7 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
   Vector6d at;
   at << xi.head<3>() / L, xi.tail<3>();
   Vector6d gradient;
-  Matrix6 hessian;
+  Matrix6 hessian, mixed;
   std::vector<int>& found = align_found_;  // swapped with align_intervals_: both keep capacity
   // The projections start from the last alignment's closest points (the whole curve the first
   // time); one global projection of every point at the end catches a closest point that jumped.
@@ -398,7 +451,7 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
       }
       if (!moved) break;  // no descent left: at the minimiser to rounding
     }
-    const double global_cost = aligned_cost(at, &gradient, &hessian, true, found);
+    const double global_cost = aligned_cost(at, &gradient, &hessian, true, found, &mixed);
     if (!std::isfinite(global_cost) || !gradient.allFinite() || !hessian.allFinite()) return false;
     align_intervals_.swap(found);
     const bool jumped = global_cost < cost - 1e-13 * std::abs(cost);
@@ -406,12 +459,27 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
     if (!jumped) break;
   }
   xi << L * at.head<3>(), at.tail<3>();
+  // dξ̃*/dw_b = -H_ξ̃ξ̃⁻¹ H_ξ̃w at the minimiser: the next alignment's first-order start.
+  const Eigen::LDLT<Matrix6> ldlt(hessian);
+  xi_sensitivity_ = -ldlt.solve(mixed);
+  predictor_ready_ = ldlt.isPositive() && xi_sensitivity_.allFinite();
   return gradient.lpNorm<Eigen::Infinity>() <= 1e-6;
+}
+
+Vector6d ShapeProblem::predicted_xi(const Vector6d& w_b) const {
+  if (!predictor_ready_) return xi_star_;
+  const double L = rod_.properties.length;
+  const Vector6d step = xi_sensitivity_ * (w_b - predictor_w_);  // in ξ̃ = (δt / L, δφ)
+  Vector6d xi = xi_star_;
+  xi.head<3>() += L * step.head<3>();
+  xi.tail<3>() += step.tail<3>();
+  return xi;
 }
 
 void ShapeProblem::eliminate_base_pose(bool eliminated) {
   eliminated_ = eliminated;
   xi_star_.setZero();
+  predictor_ready_ = false;
   align_intervals_.clear();
   evaluated_ = eliminated_evaluated_ = false;
 }
@@ -422,13 +490,15 @@ void ShapeProblem::evaluate_eliminated(const Vector6d& w_scaled) {
   if (eliminated_evaluated_ && w_b == x_.head<6>()) return;
   eliminated_evaluated_ = false;
   evaluated_ = false;
-  Vector6d xi = xi_star_;
+  Vector6d xi = predicted_xi(w_b);
   if (!align_base(w_b, xi)) {
+    predictor_ready_ = false;
     breakdown_.cost = std::numeric_limits<double>::quiet_NaN();
     cost_gradient_.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
   xi_star_ = xi;
+  predictor_w_ = w_b;
   Vector12d x;
   x << w_b, xi;
   evaluate_aligned(x);

@@ -256,6 +256,32 @@ TEST(MovingBaseProblem, TheEliminatedEvaluationInTheBasesFrameIsTheWorldsAtTheAl
   }
 }
 
+/// The alignment's problem: a moving base (motion weight 0.3) and points 5–20 mm off the shape of
+/// w_b at a moved clamp, one beyond the tip (its closest point is the end), Σ dist (smoothed) or
+/// Σ dist².
+ShapeProblem alignment_problem(const ClampedRod& rod, const Vector6d& wb, bool squared) {
+  ClampedRod moved = rod;
+  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
+  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
+  const RodConfiguration truth = integrate(
+      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  ShapeTarget target;
+  const double offsets[] = {0.005, 0.012, 0.02, 0.008, 0.015, 0.01};
+  const int nodes[] = {3, 10, 17, 24, 31, 37};
+  for (int k = 0; k < 6; ++k)
+    target.points.push_back(truth.p[nodes[k]] + offsets[k] * truth.R[nodes[k]].col(k % 2));
+  target.points.push_back(truth.p[40] + 0.01 * truth.R[40].col(2) + 0.004 * truth.R[40].col(0));
+  target.energy_weight = 1e-3;
+  target.distance_weight = 1.0;
+  target.squared_distances = squared;
+  ShapeProblem problem(rod, target);
+  BaseMotion motion;
+  motion.reference = rod.clamp;
+  motion.motion_weight = 0.3;
+  problem.move_base(motion);
+  return problem;
+}
+
 TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences) {
   // align_base() takes Newton steps on alignment_cost's gradient and Hessian in ξ̃ = (δt / L, δφ):
   // both against central differences (of the cost, of the gradient), away from the alignment's
@@ -271,26 +297,8 @@ TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences
   const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
   const double L = rod.properties.length;
   const Vector6d wb = 0.3 * body_wrench(rod);
-  ClampedRod moved = rod;
-  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
-  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
-  const RodConfiguration truth = integrate(
-      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
   for (const bool squared : {false, true}) {
-    ShapeTarget target;
-    const double offsets[] = {0.005, 0.012, 0.02, 0.008, 0.015, 0.01};
-    const int nodes[] = {3, 10, 17, 24, 31, 37};
-    for (int k = 0; k < 6; ++k)
-      target.points.push_back(truth.p[nodes[k]] + offsets[k] * truth.R[nodes[k]].col(k % 2));
-    target.points.push_back(truth.p[40] + 0.01 * truth.R[40].col(2) + 0.004 * truth.R[40].col(0));
-    target.energy_weight = 1e-3;
-    target.distance_weight = 1.0;
-    target.squared_distances = squared;
-    ShapeProblem problem(rod, target);
-    BaseMotion motion;
-    motion.reference = rod.clamp;
-    motion.motion_weight = 0.3;
-    problem.move_base(motion);
+    ShapeProblem problem = alignment_problem(rod, wb, squared);
     ASSERT_TRUE(problem.rigid_alignment_applies());
     Vector6d xi_optimum = Vector6d::Zero();
     ASSERT_TRUE(problem.align_base(wb, xi_optimum));
@@ -342,6 +350,90 @@ TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences
       EXPECT_LT(hessian_bound, 1e-3 * hessian.lpNorm<Eigen::Infinity>());
       EXPECT_LT(gradient_bound, 1e-3 * gradient.lpNorm<Eigen::Infinity>());
     }
+  }
+}
+
+TEST(MovingBaseProblem, AlignmentMixedDerivativeMatchesCentralDifferencesInTheWrench) {
+  // ∂²F/∂ξ̃∂w_b (the alignment's gradient as the curve moves under the fixed points, the closest
+  // points sliding along it) against central differences of alignment_cost's gradient in w_b at
+  // fixed ξ, each w_b component stepped by η of its bending unit. The same error model as the
+  // test above: the shape is a smooth function of w_b (one integration each, its rounding ε|F|
+  // per operation), truncation bounded by Richardson, round-off by 1e3 ε |F| / (η/2).
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  const Vector6d units = rod.properties.bending_wrench_units();
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  for (const bool squared : {false, true}) {
+    ShapeProblem problem = alignment_problem(rod, wb, squared);
+    Vector6d xi_optimum = Vector6d::Zero();
+    ASSERT_TRUE(problem.align_base(wb, xi_optimum));
+    Vector6d offset;
+    offset << 0.004, -0.003, 0.005, 0.03, -0.05, 0.04;
+    for (const Vector6d& xi : {Vector6d(xi_optimum), Vector6d(xi_optimum + offset)}) {
+      Vector6d gradient;
+      Matrix6d mixed;
+      const double cost = problem.alignment_cost(wb, xi, &gradient, nullptr, &mixed);
+      ASSERT_TRUE(std::isfinite(cost));
+      const auto differences = [&](double eta) {  // in w̃ = w_b / units
+        Matrix6d fd;
+        for (int j = 0; j < 6; ++j) {
+          const Vector6d step = eta * units[j] * Vector6d::Unit(j);
+          Vector6d g_plus, g_minus;
+          problem.alignment_cost(wb + step, xi, &g_plus, nullptr);
+          problem.alignment_cost(wb - step, xi, &g_minus, nullptr);
+          fd.col(j) = (g_plus - g_minus) / (2.0 * eta);
+        }
+        return fd;
+      };
+      constexpr double kEta = 1e-4;
+      const Matrix6d fd = differences(kEta), fd_half = differences(0.5 * kEta);
+      const Matrix6d scaled = mixed * units.asDiagonal();  // ∂²F/∂ξ̃∂w̃
+      const double round_off = 1e3 * std::numeric_limits<double>::epsilon() *
+                               std::max(1.0, gradient.lpNorm<Eigen::Infinity>() / std::abs(cost)) *
+                               std::abs(cost) / (0.5 * kEta);
+      const double bound = 2.0 * (fd - fd_half).lpNorm<Eigen::Infinity>() + round_off;
+      EXPECT_LE((scaled - fd_half).lpNorm<Eigen::Infinity>(), bound)
+          << "squared " << squared << "\n"
+          << scaled << "\nFD\n"
+          << fd_half;
+      EXPECT_LT(bound, 1e-3 * scaled.lpNorm<Eigen::Infinity>());  // a bound that can fail
+    }
+  }
+}
+
+TEST(MovingBaseProblem, TheAlignmentsPredictorIsFirstOrderExact) {
+  // alignment_sensitivity() = dξ̃*/dw_b: the start ξ̃*(w_b) + S δw for the alignment at w_b + δw
+  // errs by O(|δw|²), so halving δw quarters the error (a ratio of 3–5 allows the next order),
+  // and the error is far below the change of ξ̃* it predicts.
+  const ClampedRod rod = tilted_band(ConstitutiveModel::Cosserat, 40, false);
+  const double L = rod.properties.length;
+  const Vector6d units = rod.properties.bending_wrench_units();
+  const Vector6d wb = 0.3 * body_wrench(rod);
+  const auto scaled = [&](const Vector6d& xi) {  // ξ̃ = (δt / L, δφ)
+    Vector6d xi_scaled;
+    xi_scaled << xi.head<3>() / L, xi.tail<3>();
+    return xi_scaled;
+  };
+  for (const bool squared : {false, true}) {
+    ShapeProblem problem = alignment_problem(rod, wb, squared);
+    Vector6d xi_star = Vector6d::Zero();
+    ASSERT_TRUE(problem.align_base(wb, xi_star));
+    ASSERT_TRUE(problem.alignment_sensitivity().has_value());
+    const Matrix6d S = *problem.alignment_sensitivity();
+    Vector6d direction;
+    direction << 0.5, -0.3, 0.2, 0.4, -0.6, 0.3;
+    double errors[2], changes[2];
+    for (int k = 0; k < 2; ++k) {
+      const Vector6d dw = (k == 0 ? 0.02 : 0.01) * direction.cwiseProduct(units);
+      Vector6d xi = xi_star;
+      ASSERT_TRUE(problem.align_base(wb + dw, xi));
+      const Vector6d change = scaled(xi) - scaled(xi_star);
+      errors[k] = (change - S * dw).lpNorm<Eigen::Infinity>();
+      changes[k] = change.lpNorm<Eigen::Infinity>();
+    }
+    EXPECT_GT(errors[0] / errors[1], 3.0)
+        << "squared " << squared << ": " << errors[0] << ", " << errors[1];
+    EXPECT_LT(errors[0] / errors[1], 5.0) << "squared " << squared;
+    EXPECT_LT(errors[1], 0.05 * changes[1]) << "squared " << squared;
   }
 }
 

@@ -29,6 +29,11 @@ Matrix36d curve_point_jacobian(const ClampedRod& rod,
                                const RodConfiguration& configuration,
                                double s);
 
+/// ∂Γ'(s)/∂w at fixed s, Γ' = dΓ/ds (s clamped to [0, L]): the s-derivative of
+/// curve_point_jacobian's interpolant. `configuration` must carry Derivatives::AllNodes.
+Matrix36d curve_tangent_jacobian(const ClampedRod& rod,
+                                 const RodConfiguration& configuration,
+                                 double s);
 /// The bounding ball of one interval's Bézier control points: the segment of Γ lies inside it.
 struct IntervalBall {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();

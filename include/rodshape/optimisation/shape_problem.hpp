@@ -132,11 +132,19 @@ class ShapeProblem {
   bool align_base(const Vector6d& w_b, Vector6d& xi);
   /// What align_base() minimises, at ξ about the reference for the base-frame wrench w_b: F less
   /// the energy term (constant in ξ), every point projected onto the whole curve, with its
-  /// gradient and Newton Hessian in ξ̃ = (δt / L, δφ) (either may be null). Integrates once.
+  /// gradient and Newton Hessian in ξ̃ = (δt / L, δφ) (either may be null), and with `mixed` the
+  /// gradient's derivative in w_b, ∂²F/∂ξ̃∂w_b (with the gradient). Integrates once.
   double alignment_cost(const Vector6d& w_b,
                         const Vector6d& xi,
                         Vector6d* gradient,
-                        Matrix6d* hessian);
+                        Matrix6d* hessian,
+                        Matrix6d* mixed = nullptr);
+  /// dξ̃*/dw_b = -(∂²F/∂ξ̃²)⁻¹ ∂²F/∂ξ̃∂w_b at the last align_base()'s minimiser (the implicit
+  /// function theorem on ∂F/∂ξ̃ = 0), or nothing when that Hessian is not positive definite. The
+  /// eliminated evaluation starts each alignment from ξ̃* + (dξ̃*/dw_b) δw_b.
+  std::optional<Matrix6d> alignment_sensitivity() const {
+    return predictor_ready_ ? std::optional<Matrix6d>(xi_sensitivity_) : std::nullopt;
+  }
   /// The base pose eliminated (rigid_alignment_applies(), no constraint rows): evaluate(w̃) takes
   /// w̃ = w_b / D (D the bending wrench units, as ShapeNlp scales w_b), places the shape of the
   /// base-frame wrench w_b at ξ*(w_b) = argmin_ξ F (align_base, from the last ξ*, ξ = 0 at the
@@ -211,6 +219,12 @@ class ShapeProblem {
   bool eliminated_ = false;
   Vector6d xi_star_ = Vector6d::Zero();
   bool eliminated_evaluated_ = false;  // evaluate_eliminated() has run at x_.head<6>()
+  /// The next alignment's start, ξ̃*(w_b) to first order about the last one (at predictor_w_):
+  /// alignment_sensitivity(), set by align_base().
+  Vector6d predictor_w_ = Vector6d::Zero();
+  Matrix6d xi_sensitivity_ = Matrix6d::Zero();
+  bool predictor_ready_ = false;
+  Vector6d predicted_xi(const Vector6d& w_b) const;
   void evaluate_eliminated(const Vector6d& w_b);
   /// What evaluate_eliminated() reads of evaluate_with_base() at x = (w_b, ξ*), F and ∂F/∂w_b, in
   /// the base's frame: F is invariant under the rigid placement ξ, so it is F of body_ (with its
@@ -233,12 +247,15 @@ class ShapeProblem {
   std::vector<int> align_found_;  // align_base()'s new closest intervals (scratch)
   /// F(w_b, ξ) less the energy term (constant in ξ) on body_, with its gradient and Hessian in
   /// ξ̃ = (δt / L, δφ). With `global` each point's closest point on the whole curve, else the one
-  /// found from align_intervals_ by project_from_interval; the intervals into `intervals`.
+  /// found from align_intervals_ by project_from_interval; the intervals into `intervals`. With
+  /// `mixed` (and `gradient`), also H_ξ̃w = ∂²F/∂ξ̃∂w_b, the gradient's change as the curve moves
+  /// under the points (body_ carries its derivatives in w_b).
   double aligned_cost(const Vector6d& xi_scaled,
                       Vector6d* gradient,
                       Matrix6d* hessian,
                       bool global,
-                      std::vector<int>& intervals);
+                      std::vector<int>& intervals,
+                      Matrix6d* mixed = nullptr);
 };
 
 }  // namespace rodshape
