@@ -94,22 +94,21 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 
 // Runtime dispatch (GCC's function multiversioning): every path (also the load tangent's) is
 // compiled for the x86-64 baseline, x86-64-v3 (AVX2 with FMA) and x86-64-v4 (AVX-512), and the
-// loader picks the
-// clone for the CPU it runs on, so the portable build puts four of the six tangent directions in
-// one 256-bit register and fuses a·b + c where the CPU can. The fused clone rounds once where the
-// baseline rounds twice: its results are the baseline's within a bound derived from the number of
-// operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip seen on the test
-// rod); a CPU without FMA gets the baseline, bitwise. The shape's paths (without the tangent) have
-// an x86-64-v4 (AVX-512) clone as well: BM_Forward/100 11.2 -> 9.4 us on Zen 4. So have the
-// tangent's paths, whose state stages are formed entry by entry behind an empty asm (Pinned in
-// rk4_step.hpp): without it GCC's SLP vectoriser grouped some of the shape's stage entries in one
-// path and not in the other, so the shape was not bitwise the same with and without the tangent,
-// which the solvers rely on (BENCHMARKS.md, "The tangent's paths in the AVX-512 clone"). The
-// shape paths keep their code (the barrier there made them slower); their shape is asserted
-// bitwise the tangent paths' (tests/core/test_integrator_dispatch.cpp). All paths share the clones,
-// so Output::Tip stays bitwise Output::Full at the tip. A build for one CPU (RODSHAPE_NATIVE) has
-// no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's
-// run time is set up and the program crashes at load (segfault, seen with a 5-line program).
+// loader picks the clone for the CPU it runs on, so the portable build puts the tangent's
+// directions in 256-bit registers and fuses a·b + c where the CPU can. The fused clones round once
+// where the baseline rounds twice: their results are the baseline's within a bound derived from
+// the number of operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip
+// seen on the test rod); a CPU without FMA gets the baseline, bitwise. On Zen 4 the v4 clone made
+// BM_Forward/100 11.2 -> 9.4 us and, for the tangent's paths, BM_ForwardWithDerivatives/100
+// 31 -> 27-29 us. The tangent's paths form the state's stages entry by entry behind an empty asm
+// (Pinned in rk4_step.hpp): without it GCC 12's SLP vectoriser grouped some of the shape's stage
+// entries in one path and not in the other, and the shape must be bitwise the same with and
+// without the tangent (the solvers reuse their last integration). The shape paths keep their code
+// (the barrier made them slower). All paths share the clones, so Output::Tip stays bitwise
+// Output::Full at the tip (BENCHMARKS.md, "The tangent's paths in the AVX-512 clone"). A build for
+// one CPU (RODSHAPE_NATIVE) has no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones'
+// resolver runs before TSan's run time is set up and the program crashes at load (segfault, seen
+// with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
     !defined(__SANITIZE_THREAD__)
 #define RODSHAPE_DISPATCHED \
