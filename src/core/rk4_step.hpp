@@ -13,6 +13,16 @@ struct NodeState {
   OdeTangent Y;
 };
 
+/// An empty asm that takes `x` in a vector register and gives it back: GCC's SLP vectoriser cannot
+/// group the entries around it, so each entry of the state's stage is formed on its own.
+RODSHAPE_ALWAYS_INLINE inline void pin_scalar(double& x) {
+#if defined(__GNUC__) && defined(__x86_64__)
+  asm("" : "+x"(x));
+#else
+  (void)x;
+#endif
+}
+
 /// Y += (h/6)(K1 + 2 (K2 + K3) + K4), element by element in that order (as Eigen's expression was),
 /// column by column in the pieces evaluate_tangent stores (directions 0–3 and 4–5), so that each
 /// load reads what one store wrote and is forwarded from the store buffer (a plain loop's 4-wide
@@ -44,17 +54,22 @@ RODSHAPE_ALWAYS_INLINE inline void tangent_update(double sixth,
 /// evaluate() writes k and reads the stage one entry at a time, and a vector load spanning several
 /// scalar stores waits for them to reach the cache instead of being forwarded (Eigen's packets here
 /// made BM_Forward 24 % slower; BENCHMARKS.md, "The state's stages as scalars").
+template <bool Pinned = false>
 RODSHAPE_ALWAYS_INLINE inline void state_stage(const OdeState& y,
                                                double a,
                                                const OdeState& k,
                                                OdeState& out) {
 #pragma GCC unroll 14
-  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i)
-    out.data()[i] = y.data()[i] + a * k.data()[i];
+  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i) {
+    double entry = y.data()[i] + a * k.data()[i];
+    if constexpr (Pinned) pin_scalar(entry);
+    out.data()[i] = entry;
+  }
 }
 
 /// y += (h/6)(k1 + 2 (k2 + k3) + k4), entry by entry in that order (as Eigen's expression was),
 /// unrolled as state_stage is.
+template <bool Pinned = false>
 RODSHAPE_ALWAYS_INLINE inline void state_update(double sixth,
                                                 const OdeState& k1,
                                                 const OdeState& k2,
@@ -62,15 +77,21 @@ RODSHAPE_ALWAYS_INLINE inline void state_update(double sixth,
                                                 const OdeState& k4,
                                                 OdeState& y) {
 #pragma GCC unroll 14
-  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i)
-    y.data()[i] += sixth * (k1.data()[i] + 2.0 * (k2.data()[i] + k3.data()[i]) + k4.data()[i]);
+  for (int i = 0; i < OdeState::SizeAtCompileTime; ++i) {
+    double entry =
+        y.data()[i] + sixth * (k1.data()[i] + 2.0 * (k2.data()[i] + k3.data()[i]) + k4.data()[i]);
+    if constexpr (Pinned) pin_scalar(entry);
+    y.data()[i] = entry;
+  }
 }
 
 /// Advances `state` by h. `start` receives the first stage's evaluation, i.e. R, v, u, ... at the
 /// node the step starts from, and `start_theta` the body rotation tangent there (with tangents).
 /// LoadForcing: the tangent's six directions are the distributed load's (f, l) instead of the base
-/// wrench's (evaluate_tangent). Without Energy, e and its tangent stay where they are.
-template <bool WithTangent, bool LoadForcing = false, bool Energy = true>
+/// wrench's (evaluate_tangent). Without Energy, e and its tangent stay where they are. Pinned: the
+/// state's stages and update entry by entry behind pin_scalar (the same operations per entry), so
+/// that the shape rounds as in the shape's own path whatever else the path computes.
+template <bool WithTangent, bool LoadForcing = false, bool Energy = true, bool Pinned = false>
 RODSHAPE_ALWAYS_INLINE inline void rk4_step(
     const CosseratOde& ode, double h, NodeState& state, OdePoint& start, Matrix63d& start_theta) {
   OdeState k1, k2, k3, k4, y_stage;
@@ -82,23 +103,23 @@ RODSHAPE_ALWAYS_INLINE inline void rk4_step(
   if constexpr (WithTangent)
     start_theta = evaluate_tangent<LoadForcing, Energy>(ode, state.y, start, {state.Y}, K1);
 
-  state_stage(state.y, half, k1, y_stage);
+  state_stage<Pinned>(state.y, half, k1, y_stage);
   evaluate<Energy>(ode, y_stage, k2, point);
   if constexpr (WithTangent)
     evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K1, half}, K2);
 
-  state_stage(state.y, half, k2, y_stage);
+  state_stage<Pinned>(state.y, half, k2, y_stage);
   evaluate<Energy>(ode, y_stage, k3, point);
   if constexpr (WithTangent)
     evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K2, half}, K3);
 
-  state_stage(state.y, h, k3, y_stage);
+  state_stage<Pinned>(state.y, h, k3, y_stage);
   evaluate<Energy>(ode, y_stage, k4, point);
   if constexpr (WithTangent)
     evaluate_tangent<LoadForcing, Energy>(ode, y_stage, point, {state.Y, &K3, h}, K4);
 
   const double sixth = h / 6.0;
-  state_update(sixth, k1, k2, k3, k4, state.y);
+  state_update<Pinned>(sixth, k1, k2, k3, k4, state.y);
   if constexpr (WithTangent) tangent_update<LoadForcing, Energy>(sixth, K1, K2, K3, K4, state.Y);
 }
 

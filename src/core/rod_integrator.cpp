@@ -59,7 +59,8 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
     detail::OdePoint* start = &point;
     Matrix63d* start_theta = &theta;
     for (int k = 0; k < rod.substeps; ++k) {
-      detail::rk4_step<WithTangent, LoadForcing, energy>(ode, h_step, state, *start, *start_theta);
+      detail::rk4_step<WithTangent, LoadForcing, energy, WithTangent>(ode, h_step, state, *start,
+                                                                      *start_theta);
       start = &inner_point;
       start_theta = &inner_theta;
     }
@@ -92,28 +93,28 @@ RODSHAPE_ALWAYS_INLINE inline void integrate_nodes(const ClampedRod& rod,
 }
 
 // Runtime dispatch (GCC's function multiversioning): every path (also the load tangent's) is
-// compiled for the x86-64 baseline and for x86-64-v3 (AVX2 with FMA), and the loader picks the
-// clone for the CPU it runs on, so the portable build puts four of the six tangent directions in
-// one 256-bit register and fuses a·b + c where the CPU can. The fused clone rounds once where the
-// baseline rounds twice: its results are the baseline's within a bound derived from the number of
-// operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip seen on the test
-// rod); a CPU without FMA gets the baseline, bitwise. The shape's paths (without the tangent) have
-// an x86-64-v4 (AVX-512) clone as well: BM_Forward/100 11.2 -> 9.4 us on Zen 4. The tangent's paths
-// keep x86-64-v3: with v4 they were 3-6 % slower, and since their stages stopped waiting on stores
-// (rk4_step.hpp) they are faster with it, but its shape then rounds differently from the shape
-// paths' (BENCHMARKS.md, "The stages without store-forwarding stalls"), and the shape must be
-// bitwise the same with and without the tangent. Both shape paths share the clones, so
-// Output::Tip stays bitwise Output::Full at the tip. A build for one CPU (RODSHAPE_NATIVE) has no
-// clones. Nor has a ThreadSanitizer build: with GCC 12 the clones' resolver runs before TSan's run
-// time is set up and the program crashes at load (segfault, seen with a 5-line program).
+// compiled for the x86-64 baseline, x86-64-v3 (AVX2 with FMA) and x86-64-v4 (AVX-512), and the
+// loader picks the clone for the CPU it runs on, so the portable build puts the tangent's
+// directions in 256-bit registers and fuses a·b + c where the CPU can. The fused clones round once
+// where the baseline rounds twice: their results are the baseline's within a bound derived from
+// the number of operations (tests/core/test_integrator_dispatch.cpp; 5e-17 relative at the tip
+// seen on the test rod); a CPU without FMA gets the baseline, bitwise. On Zen 4 the v4 clone made
+// BM_Forward/100 11.2 -> 9.4 us and, for the tangent's paths, BM_ForwardWithDerivatives/100
+// 31 -> 27-29 us. The tangent's paths form the state's stages entry by entry behind an empty asm
+// (Pinned in rk4_step.hpp): without it GCC 12's SLP vectoriser grouped some of the shape's stage
+// entries in one path and not in the other, and the shape must be bitwise the same with and
+// without the tangent (the solvers reuse their last integration). The shape paths keep their code
+// (the barrier made them slower). All paths share the clones, so Output::Tip stays bitwise
+// Output::Full at the tip (BENCHMARKS.md, "The tangent's paths in the AVX-512 clone"). A build for
+// one CPU (RODSHAPE_NATIVE) has no clones. Nor has a ThreadSanitizer build: with GCC 12 the clones'
+// resolver runs before TSan's run time is set up and the program crashes at load (segfault, seen
+// with a 5-line program).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__) && \
     !defined(__SANITIZE_THREAD__)
-#define RODSHAPE_DISPATCHED __attribute__((target_clones("default", "arch=x86-64-v3")))
-#define RODSHAPE_DISPATCHED_SHAPE \
+#define RODSHAPE_DISPATCHED \
   __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
 #else
 #define RODSHAPE_DISPATCHED
-#define RODSHAPE_DISPATCHED_SHAPE
 #endif
 
 RODSHAPE_DISPATCHED void integrate_with_tangent(const ClampedRod& rod,
@@ -122,9 +123,9 @@ RODSHAPE_DISPATCHED void integrate_with_tangent(const ClampedRod& rod,
   integrate_nodes<true>(rod, state, out);
 }
 
-RODSHAPE_DISPATCHED_SHAPE void integrate_without_tangent(const ClampedRod& rod,
-                                                         NodeState& state,
-                                                         RodConfiguration& out) {
+RODSHAPE_DISPATCHED void integrate_without_tangent(const ClampedRod& rod,
+                                                   NodeState& state,
+                                                   RodConfiguration& out) {
   integrate_nodes<false>(rod, state, out);
 }
 
@@ -134,9 +135,9 @@ RODSHAPE_DISPATCHED void integrate_tip_with_tangent(const ClampedRod& rod,
   integrate_nodes<true, false, true>(rod, state, out);
 }
 
-RODSHAPE_DISPATCHED_SHAPE void integrate_tip_without_tangent(const ClampedRod& rod,
-                                                             NodeState& state,
-                                                             RodConfiguration& out) {
+RODSHAPE_DISPATCHED void integrate_tip_without_tangent(const ClampedRod& rod,
+                                                       NodeState& state,
+                                                       RodConfiguration& out) {
   integrate_nodes<false, false, true>(rod, state, out);
 }
 

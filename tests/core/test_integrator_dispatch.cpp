@@ -1,5 +1,6 @@
 // test_integrator_dispatch.cpp: integrate() runs in a clone chosen at load time (x86-64-v3, i.e.
-// AVX2 with FMA, where the CPU has it, the x86-64 baseline elsewhere: src/core/rod_integrator.cpp).
+// AVX2 with FMA, or x86-64-v4 where the CPU has them, the x86-64 baseline elsewhere:
+// src/core/rod_integrator.cpp).
 // Its results, with and without the tangent, are compared with the same Runge–Kutta steps compiled
 // here for the baseline target (this file has no target attribute). The tangent's lanes never mix,
 // so on a CPU without FMA (the baseline clone) they are bitwise equal. The FMA clone fuses a·b + c,
@@ -7,10 +8,10 @@
 // rounding, ε|result|. Bound: every RK4 step has fewer than kOpsPerStep = 4 stages × 64 operations
 // on the chain of any one output, each perturbed by ε relative to the largest value of that
 // quantity; over `steps` steps that gives steps · kOpsPerStep · ε · max|value|, times a factor 4
-// for the growth of early perturbations along the rod (the tangent's norm, below 4 here). The
-// shape's own paths have an x86-64-v4 clone too (AVX-512, with the same fused operations): the
-// shape without the tangent is asserted bitwise the tangent path's shape, so on an AVX-512 CPU the
-// v4 and v3 clones agree bit for bit on this rod (seen on Zen 4 with g++ 12).
+// for the growth of early perturbations along the rod (the tangent's norm, below 4 here). Every
+// path has an x86-64-v4 clone too (AVX-512, with the same fused operations; the tangent's paths
+// form the state's stages behind a barrier, rk4_step.hpp's Pinned): the shape without the tangent
+// is asserted bitwise the tangent path's shape, which the solvers rely on.
 // White-box: the steps are those of src/core/rk4_step.hpp.
 #include <gtest/gtest.h>
 
@@ -104,8 +105,8 @@ void expect_dispatched_equals_reference(const ClampedRod& rod, const BaseWrench&
       testing::PrintToString((out.p.back() - ref.tip.y.segment<3>(Slot::p)).norm() /
                              ref.tip.y.segment<3>(Slot::p).norm()));
 
-  // Without the tangent: the shape's own path (its own clone, v4 where the CPU has AVX-512), every
-  // node, bitwise the tangent path's shape.
+  // Without the tangent: the shape's own path (no barrier in its stages), every node, bitwise the
+  // tangent path's shape.
   const RodConfiguration shape = integrate(rod, w, Derivatives::None);
   expect_bitwise(shape.p.back(), out.p.back(), "p(L) without the tangent");
   expect_bitwise(shape.m.back(), out.m.back(), "m(L) without the tangent");
