@@ -17,6 +17,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_moving_base_problem {
 namespace {
 
 using testing::CompareMatrices;
@@ -346,4 +347,5 @@ TEST(MovingBaseProblem, AlignmentGradientAndHessianMatchCentralFiniteDifferences
 }
 
 }  // namespace
+}  // namespace test_moving_base_problem
 }  // namespace rodshape
