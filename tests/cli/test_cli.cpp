@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+namespace test_cli {
 namespace {
 
 namespace fs = std::filesystem;
@@ -277,7 +278,9 @@ TEST_F(Cli, NonConvergenceExitsThreeAndStillWritesTheWholeResult) {
 }
 
 }  // namespace
+}  // namespace test_cli
 
+namespace test_cli {
 namespace {
 
 // Issue 12, item 2: loads that "converged" with null (NaN) nodes now exit 3, and a converged
@@ -341,3 +344,4 @@ TEST_F(Cli, StrainLimitIsSetByTheTask) {
 }
 
 }  // namespace
+}  // namespace test_cli

@@ -12,6 +12,7 @@
 
 #include "support/cli_runner.hpp"
 
+namespace test_cli_estimate {
 namespace {
 
 namespace fs = std::filesystem;
@@ -106,3 +107,4 @@ TEST_F(CliEstimate, BadInputWritesNothing) {
 }
 
 }  // namespace
+}  // namespace test_cli_estimate

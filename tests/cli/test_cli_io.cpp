@@ -20,6 +20,7 @@
 #include <string>
 #include <thread>
 
+namespace test_cli_io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -197,3 +198,4 @@ TEST_F(CliIo, MisspelledCommandGetsDidYouMean) {
 }
 
 }  // namespace
+}  // namespace test_cli_io

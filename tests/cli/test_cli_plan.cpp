@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+namespace test_cli_plan {
 namespace {
 
 namespace fs = std::filesystem;
@@ -499,7 +500,9 @@ TEST_F(CliPlan, MissingOutputOptionIsAUsageError) {
 }
 
 }  // namespace
+}  // namespace test_cli_plan
 
+namespace test_cli_plan {
 namespace {
 
 // Issue 12, item 3: an initial tip 0.45 m from the clamp of the 0.29 m band (stretched 55 %; within
@@ -529,3 +532,4 @@ TEST_F(CliPlan, ModelValidityLimitsAreRead) {
 }
 
 }  // namespace
+}  // namespace test_cli_plan

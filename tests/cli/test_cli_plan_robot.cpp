@@ -24,6 +24,7 @@
 #include "support/eigen_compare.hpp"
 #include "support/task_text.hpp"
 
+namespace test_cli_plan_robot {
 namespace {
 
 namespace fs = std::filesystem;
@@ -312,3 +313,4 @@ TEST_F(CliPlanRobot, WithoutTheReachShellAnArmOutOfReachWritesThePlanAndExitsThr
 }
 
 }  // namespace
+}  // namespace test_cli_plan_robot

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+namespace test_cli_robot {
 namespace {
 
 namespace fs = std::filesystem;
@@ -148,3 +149,4 @@ TEST_F(CliRobot, BadInputGivesOneLineAndExitTwo) {
 }
 
 }  // namespace
+}  // namespace test_cli_robot

@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+namespace test_cli_validate {
 namespace {
 
 namespace fs = std::filesystem;
@@ -244,3 +245,4 @@ TEST_F(CliValidate, HelpListsTheExitCodes) {
 }
 
 }  // namespace
+}  // namespace test_cli_validate

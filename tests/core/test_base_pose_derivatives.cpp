@@ -30,6 +30,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_base_pose_derivatives {
 namespace {
 
 using testing::CompareMatrices;
@@ -341,4 +342,5 @@ TEST(BasePoseDerivativesReuse, ConfigurationWithoutDerivativesGivesTheSame) {
 }
 
 }  // namespace
+}  // namespace test_base_pose_derivatives
 }  // namespace rodshape

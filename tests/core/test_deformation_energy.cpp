@@ -16,6 +16,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_deformation_energy {
 namespace {
 
 using testing::CompareScalars;
@@ -192,4 +193,5 @@ TEST(DeformationEnergy, EqualsWorkOfTipLoadAlongALoadingPath) {
 }
 
 }  // namespace
+}  // namespace test_deformation_energy
 }  // namespace rodshape

@@ -26,6 +26,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_integrator_derivatives {
 namespace {
 
 using testing::CompareMatrices;
@@ -241,4 +242,5 @@ INSTANTIATE_TEST_SUITE_P(BothModels,
                          });
 
 }  // namespace
+}  // namespace test_integrator_derivatives
 }  // namespace rodshape

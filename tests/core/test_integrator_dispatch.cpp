@@ -23,6 +23,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 
 namespace rodshape {
+namespace test_integrator_dispatch {
 namespace {
 
 /// Operations on the chain of one output per RK4 step (4 stages, each under 64), see above.
@@ -102,8 +103,8 @@ void expect_dispatched_equals_reference(const ClampedRod& rod, const BaseWrench&
   // The observed distance, for the record (relative to max|p|).
   ::testing::Test::RecordProperty(
       "p_relative_difference",
-      testing::PrintToString((out.p.back() - ref.tip.y.segment<3>(Slot::p)).norm() /
-                             ref.tip.y.segment<3>(Slot::p).norm()));
+      ::testing::PrintToString((out.p.back() - ref.tip.y.segment<3>(Slot::p)).norm() /
+                               ref.tip.y.segment<3>(Slot::p).norm()));
 
   // Without the tangent: the shape's own path (no barrier in its stages), every node, bitwise the
   // tangent path's shape.
@@ -128,12 +129,13 @@ TEST(IntegratorDispatch, TangentPathIsTheBaselineStepsWithinFusedRounding) {
       ClampedRod rod = samples::rubber_band(model, 37);
       rod.substeps = substeps;
       rod.load.force = {0.0, 0.0, -0.4};  // its weight, roughly: n' ≠ 0
-      SCOPED_TRACE(testing::Message() << "Kirchhoff " << (model == ConstitutiveModel::Kirchhoff)
-                                      << ", substeps " << substeps);
+      SCOPED_TRACE(::testing::Message() << "Kirchhoff " << (model == ConstitutiveModel::Kirchhoff)
+                                        << ", substeps " << substeps);
       expect_dispatched_equals_reference(rod, w);
     }
   }
 }
 
 }  // namespace
+}  // namespace test_integrator_dispatch
 }  // namespace rodshape

@@ -22,6 +22,7 @@
 #include "support/allocation_counter.hpp"
 
 namespace rodshape {
+namespace test_no_alloc {
 namespace {
 
 ClampedRod make_rod() {
@@ -131,4 +132,5 @@ TEST(NoAlloc, SecondBasePoseDerivativesIntoASizedConfigurationAllocatesNothing) 
 }
 
 }  // namespace
+}  // namespace test_no_alloc
 }  // namespace rodshape

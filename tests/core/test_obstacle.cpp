@@ -17,6 +17,7 @@
 #include "rodshape/core/scene.hpp"
 #include "support/input_error.hpp"
 
+namespace test_obstacle {
 namespace {
 
 using Eigen::Vector3d;
@@ -234,3 +235,4 @@ TEST(Scene, BadObstaclesNameTheirField) {
 }
 
 }  // namespace
+}  // namespace test_obstacle

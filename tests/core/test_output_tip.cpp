@@ -9,6 +9,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 
 namespace rodshape {
+namespace test_output_tip {
 namespace {
 
 /// == element by element (bitwise but for ±0, which does not arise here).
@@ -39,7 +40,7 @@ TEST(OutputTip, StoresTheBaseAndTheTipOfTheFullIntegration) {
         ClampedRod rod = samples::rubber_band(model, 37);
         rod.substeps = substeps;
         rod.load.force = {0.0, 0.0, -0.4};
-        SCOPED_TRACE(testing::Message()
+        SCOPED_TRACE(::testing::Message()
                      << "Kirchhoff " << (model == ConstitutiveModel::Kirchhoff) << ", substeps "
                      << substeps << ", derivatives " << static_cast<int>(derivatives));
         const RodConfiguration full = integrate(rod, w, derivatives);
@@ -76,4 +77,5 @@ TEST(OutputTip, AllNodeDerivativesStoreEveryNode) {
 }
 
 }  // namespace
+}  // namespace test_output_tip
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_physical_bounds {
 namespace {
 
 using testing::input_error_message;
@@ -113,4 +114,5 @@ TEST(PhysicalBounds, CosseratRodBeyondTheResolvableStretchToBendRatioIsRefused) 
 }
 
 }  // namespace
+}  // namespace test_physical_bounds
 }  // namespace rodshape

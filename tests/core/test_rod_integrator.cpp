@@ -21,6 +21,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_rod_integrator {
 namespace {
 
 using testing::CompareMatrices;
@@ -516,4 +517,5 @@ TEST(FreeTipSolve, BaseWrenchBalancesTheTipWrench) {
 }
 
 }  // namespace
+}  // namespace test_rod_integrator
 }  // namespace rodshape

@@ -17,6 +17,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_rod_properties {
 namespace {
 
 using testing::CompareMatrices;
@@ -353,4 +354,5 @@ TEST(ClampedRodInput, NonFiniteLoadOrRodIsRejected) {
 }
 
 }  // namespace
+}  // namespace test_rod_properties
 }  // namespace rodshape

@@ -9,6 +9,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_size_bounds {
 namespace {
 
 TEST(SizeBounds, IntervalsAreBounded) {
@@ -21,4 +22,5 @@ TEST(SizeBounds, IntervalsAreBounded) {
 }
 
 }  // namespace
+}  // namespace test_size_bounds
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_so3 {
 namespace {
 
 using testing::CompareMatrices;
@@ -159,4 +160,5 @@ TEST(So3, IsRotationAcceptsRotationsAndRejectsEverythingElse) {
 }
 
 }  // namespace
+}  // namespace test_so3
 }  // namespace rodshape

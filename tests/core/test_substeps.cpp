@@ -15,6 +15,7 @@
 #include "support/analytic_rods.hpp"
 
 namespace rodshape {
+namespace test_substeps {
 namespace {
 
 using testing::kEps;
@@ -161,4 +162,5 @@ TEST(PoseBetweenNodes, ReproducesTheNextNodeAndItsDerivatives) {
 }
 
 }  // namespace
+}  // namespace test_substeps
 }  // namespace rodshape

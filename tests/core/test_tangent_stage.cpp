@@ -10,6 +10,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 
 namespace rodshape {
+namespace test_tangent_stage {
 namespace {
 
 using detail::OdeTangent;
@@ -71,4 +72,5 @@ TEST(TangentStage, BaseForceDirectionsKeepTheirUnitForceAtEveryNode) {
 }
 
 }  // namespace
+}  // namespace test_tangent_stage
 }  // namespace rodshape

@@ -18,6 +18,7 @@
 #include "support/surface_cloud.hpp"
 
 namespace rodshape {
+namespace test_cloud_estimator {
 namespace {
 
 using testing::centreline_rms;
@@ -212,4 +213,5 @@ TEST(CloudEstimator, TheShapeControllerKeepsThePlanWhenTheCloudShowsThePlannedRo
 }
 
 }  // namespace
+}  // namespace test_cloud_estimator
 }  // namespace rodshape

@@ -8,6 +8,7 @@
 #include "rodshape/feedback/state_estimator.hpp"
 
 namespace rodshape {
+namespace test_estimation_options {
 namespace {
 
 /// The message of the InputError that `options.validate()` throws, or "" if none.
@@ -41,4 +42,5 @@ TEST(EstimationOptions, TheSigmaFloorsArePositiveAndBounded) {
 }
 
 }  // namespace
+}  // namespace test_estimation_options
 }  // namespace rodshape

@@ -8,6 +8,7 @@
 #include "feedback/replan_gentleness.hpp"
 
 namespace rodshape::feedback_detail {
+namespace test_replan_gentleness {
 namespace {
 
 std::vector<PlanStep> steps_of(const std::vector<double>& energies) {
@@ -49,4 +50,5 @@ TEST(ReplanGentleness, StepsBeyondTheReplacedOnesAreNotJudged) {
 }
 
 }  // namespace
+}  // namespace test_replan_gentleness
 }  // namespace rodshape::feedback_detail

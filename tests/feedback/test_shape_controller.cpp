@@ -11,6 +11,7 @@
 #include "support/band_problem.hpp"
 
 namespace rodshape {
+namespace test_shape_controller {
 namespace {
 
 using testing::band_problem;
@@ -95,4 +96,5 @@ TEST(ShapeController, APlanWithoutStepsOrBadOptionsIsBadInput) {
 }
 
 }  // namespace
+}  // namespace test_shape_controller
 }  // namespace rodshape

@@ -20,6 +20,7 @@
 #include "support/hand_made_plan.hpp"
 
 namespace rodshape {
+namespace test_figures {
 namespace {
 
 namespace fs = std::filesystem;
@@ -271,4 +272,5 @@ TEST(PlanHtml, WritePlanWritesThePageUnlessTurnedOff) {
 }
 
 }  // namespace
+}  // namespace test_figures
 }  // namespace rodshape

@@ -18,6 +18,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_atomic_file {
 namespace {
 
 namespace fs = std::filesystem;
@@ -159,4 +160,5 @@ TEST_F(AtomicFile, ReplacedFileKeepsItsPermissions) {
 }
 
 }  // namespace
+}  // namespace test_atomic_file
 }  // namespace rodshape

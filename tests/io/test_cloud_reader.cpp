@@ -14,6 +14,7 @@
 #include "rodshape/io/cloud_reader.hpp"
 
 namespace rodshape {
+namespace test_cloud_reader {
 namespace {
 
 const std::vector<Eigen::Vector3d> kPoints = {
@@ -163,4 +164,5 @@ TEST(CloudReader, TheFormatComesFromTheExtension) {
 }
 
 }  // namespace
+}  // namespace test_cloud_reader
 }  // namespace rodshape

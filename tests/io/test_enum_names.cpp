@@ -14,6 +14,7 @@
 #include "rodshape/solvers/solve_status.hpp"
 
 namespace rodshape {
+namespace test_enum_names {
 namespace {
 
 template <typename Enum, std::size_t N>
@@ -51,4 +52,5 @@ TEST(EnumNames, TheTaskReaderTakesTheTablesNames) {
 }
 
 }  // namespace
+}  // namespace test_enum_names
 }  // namespace rodshape

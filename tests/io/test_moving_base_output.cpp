@@ -26,6 +26,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_moving_base_output {
 namespace {
 
 namespace fs = std::filesystem;
@@ -369,4 +370,5 @@ TEST(MovingBaseOutput, SvgDrawsTheBasePathOnlyWhenTheBaseMoves) {
 }
 
 }  // namespace
+}  // namespace test_moving_base_output
 }  // namespace rodshape

@@ -16,6 +16,7 @@
 #include "support/task_text.hpp"
 
 namespace rodshape {
+namespace test_moving_base_reader {
 namespace {
 
 // Line numbers below refer to this text (the base section is lines 6-8).
@@ -391,4 +392,5 @@ TEST(MovingBaseReader, LibraryErrorsAreLocatedInTheTask) {
 }
 
 }  // namespace
+}  // namespace test_moving_base_reader
 }  // namespace rodshape

@@ -17,6 +17,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_output_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -106,4 +107,5 @@ TEST(OutputFiles, ValidationNamesItsFiles) {
 }
 
 }  // namespace
+}  // namespace test_output_files
 }  // namespace rodshape

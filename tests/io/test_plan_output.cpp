@@ -20,6 +20,7 @@
 #include "support/hand_made_plan.hpp"
 
 namespace rodshape {
+namespace test_plan_output {
 namespace {
 
 using Json = nlohmann::json;
@@ -186,4 +187,5 @@ TEST(PlanOutput, SvgOfAPlanWithoutStepsStillDrawsTheInitialRod) {
 }
 
 }  // namespace
+}  // namespace test_plan_output
 }  // namespace rodshape

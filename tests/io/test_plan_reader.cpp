@@ -17,6 +17,7 @@
 #include "support/task_text.hpp"
 
 namespace rodshape {
+namespace test_plan_reader {
 namespace {
 
 using testing::CompareMatrices;
@@ -580,4 +581,5 @@ TEST(PlanReader, BadRobotFieldsAreNamedAtTheirLine) {
 }
 
 }  // namespace
+}  // namespace test_plan_reader
 }  // namespace rodshape

@@ -14,6 +14,7 @@
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
+namespace test_remove_plan_files {
 namespace {
 
 namespace fs = std::filesystem;
@@ -72,4 +73,5 @@ TEST(RemovePlanFiles, NamesTheFilesWritePlanWrites) {
 }
 
 }  // namespace
+}  // namespace test_remove_plan_files
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "rodshape/io/result_json.hpp"
 
 namespace rodshape {
+namespace test_result_json {
 namespace {
 
 using Json = nlohmann::json;
@@ -110,9 +111,11 @@ TEST(ResultJson, NumbersRoundTripExactly) {
 }
 
 }  // namespace
+}  // namespace test_result_json
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_result_json {
 namespace {
 
 TEST(ResultJson, ReportsTheLargestStrainsAndTheAccuracyOfTheShape) {
@@ -151,4 +154,5 @@ TEST(ResultJson, StrainsOfANonFiniteShapeAreNull) {
 }
 
 }  // namespace
+}  // namespace test_result_json
 }  // namespace rodshape

@@ -11,6 +11,7 @@
 #include "support/panda_dh.hpp"
 
 namespace rodshape {
+namespace test_samples {
 namespace {
 
 const std::string kSource = RODSHAPE_SOURCE_DIR;
@@ -58,4 +59,5 @@ TEST(Samples, PandaIsTheBundledUrdf) {
 }
 
 }  // namespace
+}  // namespace test_samples
 }  // namespace rodshape

@@ -9,6 +9,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_sensor_section {
 namespace {
 
 // Line numbers below refer to this text with the sensor section appended (line 15 on).
@@ -144,4 +145,5 @@ TEST(SensorSection, BadDepthValuesAreNamedAsWritten) {
 }
 
 }  // namespace
+}  // namespace test_sensor_section
 }  // namespace rodshape

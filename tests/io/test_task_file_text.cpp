@@ -17,6 +17,7 @@
 #include "support/task_text.hpp"
 
 namespace rodshape {
+namespace test_task_file_text {
 namespace {
 
 using testing::kBandTask;
@@ -137,4 +138,5 @@ TEST(TaskFileText, FuzzRegressionsEndWithAnError) {
 }
 
 }  // namespace
+}  // namespace test_task_file_text
 }  // namespace rodshape

@@ -14,6 +14,7 @@
 #include "support/task_text.hpp"
 
 namespace rodshape {
+namespace test_task_reader {
 namespace {
 
 using testing::CompareMatrices;
@@ -413,4 +414,5 @@ TEST(TaskReader, RodGivenWhollyByStiffnessNeedsNoSectionOrMaterial) {
 }
 
 }  // namespace
+}  // namespace test_task_reader
 }  // namespace rodshape

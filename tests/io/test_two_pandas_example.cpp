@@ -13,6 +13,7 @@
 #include "rodshape/robot/arm_placement.hpp"
 
 namespace rodshape {
+namespace test_two_pandas_example {
 namespace {
 
 PlanTask example(const std::string& name) {
@@ -76,4 +77,5 @@ TEST(BaseArmExample, OnlyTheBaseMovesTheTipStaysInItsFixture) {
 }
 
 }  // namespace
+}  // namespace test_two_pandas_example
 }  // namespace rodshape

@@ -10,6 +10,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 
 namespace rodshape {
+namespace test_confine_to_scale {
 namespace {
 
 TEST(WrenchBoundsFromScale, AreTheDocumentedMultiplesOfTheStiffnesses) {
@@ -97,4 +98,5 @@ TEST(ConfineToScale, ChangesNothingInside) {
 }
 
 }  // namespace
+}  // namespace test_confine_to_scale
 }  // namespace rodshape

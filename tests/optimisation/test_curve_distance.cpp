@@ -24,6 +24,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_curve_distance {
 namespace {
 
 using testing::CompareMatrices;
@@ -287,4 +288,5 @@ INSTANTIATE_TEST_SUITE_P(BothModels,
                          [](const auto& info) { return to_string(info.param); });
 
 }  // namespace
+}  // namespace test_curve_distance
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "optimisation/dense_kkt_solver.hpp"
 
 namespace rodshape {
+namespace test_dense_kkt_solver {
 namespace {
 
 using detail::FortranInt;
@@ -257,4 +258,5 @@ TEST(DenseKktSolver, AnalysisFlagsIndicesOutOfRange) {
 }
 
 }  // namespace
+}  // namespace test_dense_kkt_solver
 }  // namespace rodshape

@@ -16,6 +16,7 @@
 #include "rodshape/optimisation/shape_optimiser.hpp"
 
 namespace rodshape {
+namespace test_ipopt_threads {
 namespace {
 
 constexpr int kIntervals = 16;  // small problems: many solves in little time
@@ -129,4 +130,5 @@ TEST(IpoptThreads, ManyThreadsSolvingAtOnceGiveTheSerialResults) {
 }
 
 }  // namespace
+}  // namespace test_ipopt_threads
 }  // namespace rodshape

@@ -17,6 +17,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_moving_base_problem {
 namespace {
 
 using testing::CompareMatrices;
@@ -438,4 +439,5 @@ TEST(MovingBaseProblem, TheAlignmentsPredictorIsFirstOrderExact) {
 }
 
 }  // namespace
+}  // namespace test_moving_base_problem
 }  // namespace rodshape

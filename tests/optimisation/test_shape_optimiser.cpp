@@ -20,6 +20,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_shape_optimiser {
 namespace {
 
 using testing::rubber_band;
@@ -372,4 +373,5 @@ TEST(ShapeOptimiserOptions, BadOptionsNameTheField) {
 }
 
 }  // namespace
+}  // namespace test_shape_optimiser
 }  // namespace rodshape

@@ -22,6 +22,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_shape_problem {
 namespace {
 
 using testing::CompareMatrices;
@@ -384,9 +385,11 @@ TEST(ShapeProblem, BadInputThrowsInputErrorNamingTheField) {
 }
 
 }  // namespace
+}  // namespace test_shape_problem
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_shape_problem {
 namespace {
 
 // The smoothed sum of distances: ρ(d) = sqrt(d² + δ²) - δ lies within δ of d, below it, and its
@@ -412,4 +415,5 @@ TEST(ShapeProblem, SmoothedDistanceTermIsWithinDeltaOfTheSum) {
 }
 
 }  // namespace
+}  // namespace test_shape_problem
 }  // namespace rodshape

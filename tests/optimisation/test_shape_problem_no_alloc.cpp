@@ -21,6 +21,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_shape_problem_no_alloc {
 namespace {
 
 ShapeProblem make_problem(ConstitutiveModel model, bool squared) {
@@ -139,4 +140,5 @@ TEST(ShapeProblemNoAlloc, EliminatedBasePoseEvaluateAllocatesNothingAfterTheFirs
 }
 
 }  // namespace
+}  // namespace test_shape_problem_no_alloc
 }  // namespace rodshape

@@ -20,6 +20,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_shape_target {
 namespace {
 
 using testing::CompareScalars;
@@ -169,4 +170,5 @@ TEST(ShapeTarget, SplineLengthOfPointsOnAnArcApproachesTheArcLength) {
 }
 
 }  // namespace
+}  // namespace test_shape_target
 }  // namespace rodshape

@@ -11,6 +11,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_size_bounds {
 namespace {
 
 using testing::input_error_message;
@@ -56,4 +57,5 @@ TEST(SizeBounds, WorkspaceSetsAreBounded) {
 }
 
 }  // namespace
+}  // namespace test_size_bounds
 }  // namespace rodshape

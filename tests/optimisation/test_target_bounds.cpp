@@ -6,6 +6,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_target_bounds {
 namespace {
 
 TEST(TargetBounds, APointFartherThanThePositionRangeIsRefusedNamingIt) {
@@ -19,4 +20,5 @@ TEST(TargetBounds, APointFartherThanThePositionRangeIsRefusedNamingIt) {
 }
 
 }  // namespace
+}  // namespace test_target_bounds
 }  // namespace rodshape

@@ -22,6 +22,7 @@
 #include "rodshape/samples/rubber_band.hpp"
 
 namespace rodshape {
+namespace test_unconstrained_newton {
 namespace {
 
 using detail::IpoptRun;
@@ -176,4 +177,5 @@ TEST(UnconstrainedNewtonStatus, IterationLimitAsIpoptNamesIt) {
 }
 
 }  // namespace
+}  // namespace test_unconstrained_newton
 }  // namespace rodshape

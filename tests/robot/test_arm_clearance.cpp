@@ -15,6 +15,7 @@
 #include "rodshape/samples/panda.hpp"
 #include "support/panda_dh.hpp"
 
+namespace test_arm_clearance {
 namespace {
 
 using namespace rodshape;
@@ -227,7 +228,9 @@ TEST(ArmClearance, NullSpaceIkMovesTheElbowOutOfAnObstacleAndKeepsTheTip) {
 }
 
 }  // namespace
+}  // namespace test_arm_clearance
 
+namespace test_arm_clearance {
 namespace {
 
 // ---- Two arms (issue 21) ----
@@ -315,8 +318,6 @@ TEST(ArmClearance, IkKeepsTheLinksOffTheOtherArm) {
   EXPECT_LE(ik.position_error, 1e-9);
 }
 
-}  // namespace
-
 TEST(ArmClearance, TwoArmsIkKeepsTheirLinksTheClearanceApartAtAKnownNearCollision) {
   // examples/plan_two_pandas.yaml's cell: the tip's arm at x = 0.4 facing -x, the base's at
   // x = -0.4 facing +x. The joints are the last sample of the two-arm sweep's case 583
@@ -360,3 +361,6 @@ TEST(ArmClearance, TwoArmsIkKeepsTheirLinksTheClearanceApartAtAKnownNearCollisio
       arm_arm_gap(arm, world_T_tip, tip_apart, arm, world_T_base, base_apart, 0.005);
   EXPECT_GE(after.gap, scene.clearance) << "pair " << after.capsule << "/" << after.other_capsule;
 }
+
+}  // namespace
+}  // namespace test_arm_clearance

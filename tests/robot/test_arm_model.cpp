@@ -15,6 +15,7 @@
 #include "rodshape/robot/arm_model.hpp"
 #include "support/panda_dh.hpp"
 
+namespace test_arm_model {
 namespace {
 
 using rodshape::ArmModel;
@@ -232,3 +233,4 @@ TEST(ArmModel, JointVectorsOfTheWrongSizeOrOutsideTheLimitsAreBadInput) {
 }
 
 }  // namespace
+}  // namespace test_arm_model

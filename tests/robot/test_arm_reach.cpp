@@ -11,6 +11,7 @@
 #include "support/input_error.hpp"
 #include "support/panda_dh.hpp"
 
+namespace test_arm_reach {
 namespace {
 
 using rodshape::ArmModel;
@@ -162,3 +163,4 @@ TEST(ArmReach, BadMarginsAndOptionsThrowInputErrorsThatSayWhy) {
 }
 
 }  // namespace
+}  // namespace test_arm_reach

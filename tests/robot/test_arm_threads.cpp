@@ -14,6 +14,7 @@
 #include "rodshape/robot/inverse_kinematics.hpp"
 #include "rodshape/samples/panda.hpp"
 
+namespace test_arm_threads {
 namespace {
 
 using rodshape::ArmModel;
@@ -83,3 +84,4 @@ TEST(ArmModelThreads, CopiesOfOneModelInThreadsGiveTheSerialResults) {
 }
 
 }  // namespace
+}  // namespace test_arm_threads

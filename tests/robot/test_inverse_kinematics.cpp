@@ -18,6 +18,7 @@
 #include "support/input_error.hpp"
 #include "support/panda_dh.hpp"
 
+namespace test_inverse_kinematics {
 namespace {
 
 using namespace rodshape;
@@ -168,3 +169,4 @@ TEST(InverseKinematics, BadSeedsTargetsAndOptionsAreInputErrors) {
 }
 
 }  // namespace
+}  // namespace test_inverse_kinematics

@@ -17,6 +17,7 @@
 #include "rodshape/samples/panda.hpp"
 #include "support/panda_dh.hpp"
 
+namespace test_link_capsules {
 namespace {
 
 using rodshape::ArmModel;
@@ -212,3 +213,4 @@ TEST(LinkCapsules, PointJacobianMatchesCentralDifferences) {
 }
 
 }  // namespace
+}  // namespace test_link_capsules

@@ -10,6 +10,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_size_bounds {
 namespace {
 
 using testing::input_error_message;
@@ -45,4 +46,5 @@ TEST(SizeBounds, IkIterationsAndRestartsAreBounded) {
 }
 
 }  // namespace
+}  // namespace test_size_bounds
 }  // namespace rodshape

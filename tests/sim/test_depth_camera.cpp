@@ -16,6 +16,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_depth_camera {
 namespace {
 
 constexpr double kDepth = 1.0;    // m, D: the rod's axis from the camera
@@ -245,4 +246,5 @@ TEST(DepthCamera, BadModelAndRadiusAreNamed) {
 }
 
 }  // namespace
+}  // namespace test_depth_camera
 }  // namespace rodshape

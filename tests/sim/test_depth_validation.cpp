@@ -15,6 +15,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_depth_validation {
 namespace {
 
 struct Example {
@@ -100,4 +101,5 @@ TEST(DepthValidation, ARestsPooledCloudIsBounded) {
 }
 
 }  // namespace
+}  // namespace test_depth_validation
 }  // namespace rodshape

@@ -18,6 +18,7 @@
 #include "support/heap_peak.hpp"
 
 namespace rodshape {
+namespace test_memory_per_frame {
 namespace {
 
 using testing::band_problem;
@@ -108,4 +109,5 @@ TEST(MemoryPerFrame, TheFramesOfAllRunsAreBoundedBeforeAnyIsDriven) {
 }
 
 }  // namespace
+}  // namespace test_memory_per_frame
 }  // namespace rodshape

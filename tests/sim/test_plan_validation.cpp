@@ -18,6 +18,7 @@
 #include "support/eigen_compare.hpp"
 
 namespace rodshape {
+namespace test_plan_validation {
 namespace {
 
 using testing::band_problem;
@@ -280,9 +281,11 @@ TEST(PlanValidation, AWeakerHeavierPlantMissesThePoints) {
 }
 
 }  // namespace
+}  // namespace test_plan_validation
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_plan_validation {
 namespace {
 
 TEST(PlanValidation, ThePlantSnapsWhereThePaperSchemePlanWouldJump) {
@@ -321,9 +324,11 @@ TEST(PlanValidation, ThePlantSnapsWhereThePaperSchemePlanWouldJump) {
 }
 
 }  // namespace
+}  // namespace test_plan_validation
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_plan_validation {
 namespace {
 
 TEST(ClosedLoop, ReducesTheFinalErrorOfAMismatchedPlant) {
@@ -603,4 +608,5 @@ TEST(ClosedLoop, ARePlanThatIsNotGentleIsRefused) {
 }
 
 }  // namespace
+}  // namespace test_plan_validation
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_plant_reach {
 namespace {
 
 /// The band from rest towards a gentle bend of itself, in 2 steps: its tip stays about 0.29 m
@@ -52,4 +53,5 @@ TEST(PlantReach, APlantShorterThanThePlanReachesIsRefusedWithItsStretch) {
 }
 
 }  // namespace
+}  // namespace test_plant_reach
 }  // namespace rodshape

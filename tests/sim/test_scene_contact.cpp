@@ -13,6 +13,7 @@
 #include "sim/scene_contact.hpp"
 
 namespace rodshape {
+namespace test_scene_contact {
 namespace {
 
 PlantFrame frame_along_z(double t, double x) {
@@ -67,4 +68,5 @@ TEST(SceneContact, ThePostExamplesPlantKeepsItsGapAndAnUnplannedObstacleIsAConta
 }
 
 }  // namespace
+}  // namespace test_scene_contact
 }  // namespace rodshape

@@ -8,6 +8,7 @@
 #include "support/input_error.hpp"
 
 namespace rodshape {
+namespace test_sensor_bounds {
 namespace {
 
 TEST(SensorBounds, NoiseAndCameraBeyondTheirRangesAreRefusedNamingThem) {
@@ -27,4 +28,5 @@ TEST(SensorBounds, NoiseAndCameraBeyondTheirRangesAreRefusedNamingThem) {
 }
 
 }  // namespace
+}  // namespace test_sensor_bounds
 }  // namespace rodshape

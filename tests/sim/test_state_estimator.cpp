@@ -10,6 +10,7 @@
 #include "rodshape/sim/marker_sensor.hpp"
 
 namespace rodshape {
+namespace test_state_estimator {
 namespace {
 
 const BaseWrench kTrue{{-0.3, 0.1, 0.0}, {0.0, 0.08, 0.01}};
@@ -198,4 +199,5 @@ TEST(StateEstimator, AGivenHypothesisIsWhereTheDropOfChi2IsMeasured) {
 }
 
 }  // namespace
+}  // namespace test_state_estimator
 }  // namespace rodshape

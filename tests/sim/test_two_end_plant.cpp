@@ -16,6 +16,7 @@
 #include "sim/two_end_path.hpp"
 
 namespace rodshape {
+namespace test_two_end_plant {
 namespace {
 
 Pose pose_of(const Eigen::Vector3d& position, const Eigen::Vector3d& rotation_vector) {
@@ -212,4 +213,5 @@ TEST(TwoEndPlant, BothEndsAreTimedOnOneClockTheSlowerSetsIt) {
 }
 
 }  // namespace
+}  // namespace test_two_end_plant
 }  // namespace rodshape

@@ -20,6 +20,7 @@
 #include "support/band_problem.hpp"
 
 namespace rodshape {
+namespace test_two_end_validation {
 namespace {
 
 using testing::band_problem;
@@ -278,4 +279,5 @@ TEST(TwoEndValidation, TheBaseArmsJointsDriveTheBaseThroughItsForwardKinematics)
 }
 
 }  // namespace
+}  // namespace test_two_end_validation
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "support/band_problem.hpp"
 
 namespace rodshape {
+namespace test_validation_threads {
 namespace {
 
 using testing::band_problem;
@@ -104,4 +105,5 @@ TEST(ValidationThreads, JobsOutsideTheirBoundIsBadInputNamingTheField) {
 }
 
 }  // namespace
+}  // namespace test_validation_threads
 }  // namespace rodshape

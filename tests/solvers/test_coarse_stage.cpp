@@ -10,6 +10,7 @@
 #include "solvers/step_doubling.hpp"
 
 namespace rodshape {
+namespace test_coarse_stage {
 namespace {
 
 ShootingOptions tip_only_output() {
@@ -71,4 +72,5 @@ TEST(CoarseStage, NoStageWhereTheCheckRefines) {
 }
 
 }  // namespace
+}  // namespace test_coarse_stage
 }  // namespace rodshape

@@ -19,6 +19,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_converged_check {
 namespace {
 
 using std::numbers::pi;
@@ -245,4 +246,5 @@ TEST(ModelValidity, LimitsAreValidated) {
 }
 
 }  // namespace
+}  // namespace test_converged_check
 }  // namespace rodshape

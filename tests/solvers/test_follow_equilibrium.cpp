@@ -30,6 +30,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_follow_equilibrium {
 namespace {
 
 using testing::CompareMatrices;
@@ -672,4 +673,5 @@ TEST(FollowEquilibrium, UnstableArrivalIsFoundOnlyWhenAskedFor) {
 }
 
 }  // namespace
+}  // namespace test_follow_equilibrium
 }  // namespace rodshape

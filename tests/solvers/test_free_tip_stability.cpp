@@ -17,6 +17,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_free_tip_stability {
 namespace {
 
 using std::numbers::pi;
@@ -123,4 +124,5 @@ TEST(FreeTipStability, VerdictDoesNotDependOnTheStiffnessScale) {
 }
 
 }  // namespace
+}  // namespace test_free_tip_stability
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "rodshape/solvers/equilibrium_analysis.hpp"
 
 namespace rodshape {
+namespace test_length_bounds {
 namespace {
 
 TEST(LengthBounds, TheBandScaledToEitherEndOfTheLengthRangeConvergesAndIsStable) {
@@ -38,4 +39,5 @@ TEST(LengthBounds, TheBandScaledToEitherEndOfTheLengthRangeConvergesAndIsStable)
 }
 
 }  // namespace
+}  // namespace test_length_bounds
 }  // namespace rodshape

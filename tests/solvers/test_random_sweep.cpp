@@ -30,6 +30,7 @@
 #endif
 
 namespace rodshape {
+namespace test_random_sweep {
 namespace {
 
 #ifdef RODSHAPE_SWEEP_SANITIZED
@@ -201,4 +202,5 @@ TEST(RandomSweep, ConvergedMeansFiniteAndAccurateAndNothingIsUnbounded) {
 }
 
 }  // namespace
+}  // namespace test_random_sweep
 }  // namespace rodshape

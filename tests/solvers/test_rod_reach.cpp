@@ -11,6 +11,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_rod_reach {
 namespace {
 
 using testing::input_error_message;
@@ -69,4 +70,5 @@ TEST(RodReach, ATipWithinReachIsSolved) {
 }
 
 }  // namespace
+}  // namespace test_rod_reach
 }  // namespace rodshape

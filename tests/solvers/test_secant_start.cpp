@@ -18,6 +18,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_secant_start {
 namespace {
 
 using testing::CompareMatrices;
@@ -67,4 +68,5 @@ TEST(SecantStart, ASolveWithoutAPredictorRecordsItsStartsEulerErrorOfSecondOrder
 }
 
 }  // namespace
+}  // namespace test_secant_start
 }  // namespace rodshape

@@ -28,6 +28,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_shooting_residual {
 namespace {
 
 using testing::CompareMatrices;
@@ -201,4 +202,5 @@ TEST(ShootingResidual, HeldTipRotationRowsAreTheLogInTheGraspFrame) {
 }
 
 }  // namespace
+}  // namespace test_shooting_residual
 }  // namespace rodshape

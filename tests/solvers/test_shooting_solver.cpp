@@ -33,6 +33,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_shooting_solver {
 namespace {
 
 using testing::CompareMatrices;
@@ -566,4 +567,5 @@ TEST(ShootingSolverInput, BadRodIsAnInputError) {
 }
 
 }  // namespace
+}  // namespace test_shooting_solver
 }  // namespace rodshape

@@ -11,6 +11,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_size_bounds {
 namespace {
 
 using testing::input_error_message;
@@ -68,4 +69,5 @@ TEST(SizeBounds, NodesTimesIterationsOrSubstepsIsBoundedByTheTimeOfASolve) {
 }
 
 }  // namespace
+}  // namespace test_size_bounds
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "rodshape/solvers/shooting_solver.hpp"
 
 namespace rodshape {
+namespace test_solve_output {
 namespace {
 
 template <class A>
@@ -24,7 +25,7 @@ void expect_same_configuration(const RodConfiguration& got, const RodConfigurati
   EXPECT_EQ(got.derivatives, want.derivatives);
   EXPECT_EQ(got.s, want.s);
   for (int i = 0; i < got.nodes(); ++i) {
-    SCOPED_TRACE(testing::Message() << "node " << i);
+    SCOPED_TRACE(::testing::Message() << "node " << i);
     expect_same(got.p[i], want.p[i], "p");
     expect_same(got.R[i], want.R[i], "R");
     expect_same(got.n[i], want.n[i], "n");
@@ -58,8 +59,8 @@ TEST(SolveOutput, ConfigurationIsTheIntegrationOfTheSolutionAtEachLevel) {
     options.output_derivatives = level;
     // Cold (Levenberg–Marquardt, then the chord endgame) and warm (the endgame at once).
     for (const BaseWrench& guess : {BaseWrench{}, solved}) {
-      SCOPED_TRACE(testing::Message() << "level " << static_cast<int>(level) << ", "
-                                      << (guess.force.isZero() ? "cold" : "warm"));
+      SCOPED_TRACE(::testing::Message() << "level " << static_cast<int>(level) << ", "
+                                        << (guess.force.isZero() ? "cold" : "warm"));
       const ShootingResult result = solve_equilibrium(rod, ClampedTip{moved}, guess, options);
       ASSERT_TRUE(result.summary.converged()) << result.summary.brief();
       expect_same_configuration(result.configuration, integrate(rod, result.base_wrench, level));
@@ -68,4 +69,5 @@ TEST(SolveOutput, ConfigurationIsTheIntegrationOfTheSolutionAtEachLevel) {
 }
 
 }  // namespace
+}  // namespace test_solve_output
 }  // namespace rodshape

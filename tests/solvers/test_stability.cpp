@@ -38,6 +38,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_stability {
 namespace {
 
 using std::numbers::pi;
@@ -351,4 +352,5 @@ TEST(Stability, BuckledModesOfAKirchhoffRod) {
 }
 
 }  // namespace
+}  // namespace test_stability
 }  // namespace rodshape

@@ -15,6 +15,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_stability_scale {
 namespace {
 
 ClampedTip band_pose() {
@@ -69,4 +70,5 @@ TEST(StabilityScale, VerdictAndMarginsDoNotDependOnTheOverallStiffnessScale) {
 }
 
 }  // namespace
+}  // namespace test_stability_scale
 }  // namespace rodshape

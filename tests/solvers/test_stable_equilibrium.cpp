@@ -10,6 +10,7 @@
 #include "rodshape/solvers/stable_equilibrium.hpp"
 
 namespace rodshape {
+namespace test_stable_equilibrium {
 namespace {
 
 ClampedTip compressed_tip() {
@@ -52,4 +53,5 @@ TEST(StableEquilibrium, FindsAStableShapeOfTheCompressedBand) {
 }
 
 }  // namespace
+}  // namespace test_stable_equilibrium
 }  // namespace rodshape

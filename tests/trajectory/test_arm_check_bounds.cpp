@@ -20,6 +20,7 @@
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
+namespace test_arm_check_bounds {
 namespace {
 
 void expect_same_reach(const ArmReach& a, const ArmReach& b) {
@@ -145,4 +146,5 @@ TEST(LeastGap, SkippingPairsFindsTheLeastPairOfEveryPairOnTheTwoArmPlan) {
 }
 
 }  // namespace
+}  // namespace test_arm_check_bounds
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
+namespace test_arm_link_clearance {
 namespace {
 
 const std::string kShelf = std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_panda_shelf.yaml";
@@ -108,4 +109,5 @@ TEST(ArmLinkClearance, AnArmWithoutCollisionGeometryHasNoRobotGap) {
 }
 
 }  // namespace
+}  // namespace test_arm_link_clearance
 }  // namespace rodshape

@@ -16,6 +16,7 @@
 #include "support/eigen_compare.hpp"
 #include "support/input_error.hpp"
 
+namespace test_arm_plan {
 namespace {
 
 using rodshape::ArmPlanOptions;
@@ -160,3 +161,4 @@ TEST(ArmPlan, WithoutTheReachAnUnreachableStartIsReportedNotThrown) {
 }
 
 }  // namespace
+}  // namespace test_arm_plan

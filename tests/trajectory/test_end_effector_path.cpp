@@ -11,6 +11,7 @@
 #include "rodshape/trajectory/end_effector_path.hpp"
 
 namespace rodshape {
+namespace test_end_effector_path {
 namespace {
 
 Pose pose_at(const Eigen::Vector3d& p, double angle_about_z = 0.0) {
@@ -222,4 +223,5 @@ TEST(EndEffectorPath, BadLimitsNameTheField) {
 }
 
 }  // namespace
+}  // namespace test_end_effector_path
 }  // namespace rodshape

@@ -17,6 +17,7 @@
 #include "support/scene_replay.hpp"
 
 namespace rodshape {
+namespace test_gentle_plan {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -233,4 +234,5 @@ TEST(GentlePlan, PoseIsUsedAloneWhenAskedAndNeedsTheWholeWay) {
 }
 
 }  // namespace
+}  // namespace test_gentle_plan
 }  // namespace rodshape

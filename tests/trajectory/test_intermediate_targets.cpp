@@ -8,6 +8,7 @@
 #include "rodshape/trajectory/intermediate_targets.hpp"
 
 namespace rodshape {
+namespace test_intermediate_targets {
 namespace {
 
 TEST(IntermediateTargets, LastStepIsTheObjectiveAndStepsAreEvenlySpaced) {
@@ -41,18 +42,18 @@ TEST(IntermediateTargets, FewerThanOneStepNamesTheField) {
 }
 
 }  // namespace
+}  // namespace test_intermediate_targets
 }  // namespace rodshape
 
 // ---- a moving base's sets (issue 21) ------------------------------------------------------------
 
+namespace test_intermediate_targets {
 namespace {
 
 /// The angle of a rotation matrix, rad.
 double angle_of(const Eigen::Matrix3d& R) {
   return std::acos(std::clamp(0.5 * (R.trace() - 1.0), -1.0, 1.0));
 }
-
-}  // namespace
 
 TEST(AlignedObjectiveSet, PointsOnALineAreTurnedByTheLeastRotationOntoTheTargetsDirection) {
   // The straight rod along x, its target a line along y shifted: Kabsch leaves the turn about the
@@ -87,3 +88,6 @@ TEST(AlignedObjectiveSet, EndsOnTheObjectiveStartsOnTheInitialAndMovesRigidlyOnT
   for (std::size_t i = 1; i < initial.size(); ++i)
     EXPECT_NEAR((half[i] - half[0]).norm(), (initial[i] - initial[0]).norm(), 1e-12);
 }
+
+}  // namespace
+}  // namespace test_intermediate_targets

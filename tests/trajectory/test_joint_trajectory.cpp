@@ -19,6 +19,7 @@
 #include "support/panda_dh.hpp"
 
 namespace rodshape {
+namespace test_joint_trajectory {
 namespace {
 
 using testing::rotation_angle;
@@ -192,4 +193,5 @@ TEST(JointTrajectoryResult, DefaultSeedIsTheReadyPoseOfASevenJointArm) {
 }
 
 }  // namespace
+}  // namespace test_joint_trajectory
 }  // namespace rodshape

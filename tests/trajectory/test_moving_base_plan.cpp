@@ -16,6 +16,7 @@
 #include "trajectory/moving_base_plan.hpp"
 
 namespace rodshape {
+namespace test_moving_base_plan {
 namespace {
 
 Eigen::Matrix3d along_x() {
@@ -112,9 +113,11 @@ TEST(MovingBasePlan, PoseAndSearchAreRefusedWithAMovingBase) {
 }
 
 }  // namespace
+}  // namespace test_moving_base_plan
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_moving_base_plan {
 namespace {
 
 TEST(MovingBasePlan, AFreeBasesChainMayExceedTheCosseratRodByItsStretchSlackOnly) {
@@ -135,4 +138,5 @@ TEST(MovingBasePlan, AFreeBasesChainMayExceedTheCosseratRodByItsStretchSlackOnly
 }
 
 }  // namespace
+}  // namespace test_moving_base_plan
 }  // namespace rodshape

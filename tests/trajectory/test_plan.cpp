@@ -14,6 +14,7 @@
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
+namespace test_plan {
 namespace {
 
 /// The paper's rubber band (EIy ≠ EIx where a buckled shape must not be neutral).
@@ -230,9 +231,11 @@ TEST(PlanResult, TrackingDetectsThatTheRodCannotReachAnotherBranch) {
 }
 
 }  // namespace
+}  // namespace test_plan
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_plan {
 namespace {
 
 // The bundled lifted bend asks, on straight lines between the objective sets, for shapes the rod
@@ -271,4 +274,5 @@ TEST(PlanResult, RefinementInsertsHalfwayStepsUpToTheLimit) {
 }
 
 }  // namespace
+}  // namespace test_plan
 }  // namespace rodshape

@@ -11,6 +11,7 @@
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/trajectory/plan.hpp"
 
+namespace test_plan_threads {
 namespace {
 
 using rodshape::PlanResult;
@@ -64,3 +65,4 @@ TEST(PlanThreads, ATaskWithoutArmFromTwoThreadsEqualsTheSerialPlan) {
 }
 
 }  // namespace
+}  // namespace test_plan_threads

@@ -36,6 +36,7 @@
 #include "support/scene_replay.hpp"
 
 namespace rodshape {
+namespace test_random_gentle {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -331,4 +332,5 @@ TEST(RandomGentleTargets, ArePlannedGentlyOrReportedWithTheirRatio) {
 }
 
 }  // namespace
+}  // namespace test_random_gentle
 }  // namespace rodshape

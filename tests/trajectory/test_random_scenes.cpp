@@ -28,6 +28,7 @@
 #include "support/scene_replay.hpp"
 
 namespace rodshape {
+namespace test_random_scenes {
 namespace {
 
 int case_count() {
@@ -182,4 +183,5 @@ TEST(RandomScenes, CompleteClearOrReportedNeverThroughAnObstacle) {
 }
 
 }  // namespace
+}  // namespace test_random_scenes
 }  // namespace rodshape

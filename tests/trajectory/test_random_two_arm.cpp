@@ -73,6 +73,7 @@
 #include "rodshape/trajectory/plan.hpp"
 
 namespace rodshape {
+namespace test_random_two_arm {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -364,9 +365,11 @@ TEST(RandomTwoArmTargets, BothArmsHaveIkAtEverySampleOrAreReported) {
 }
 
 }  // namespace
+}  // namespace test_random_two_arm
 }  // namespace rodshape
 
 namespace rodshape {
+namespace test_random_two_arm {
 namespace {
 
 /// The least gap between the two arms' links over the plan's joint samples.
@@ -436,4 +439,5 @@ TEST(TwoArmSweepCollisions, LinksFixedToBothHandsAreReportedWithTheReason) {
 }
 
 }  // namespace
+}  // namespace test_random_two_arm
 }  // namespace rodshape

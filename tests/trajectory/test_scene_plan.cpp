@@ -15,6 +15,7 @@
 #include "support/scene_replay.hpp"
 
 namespace rodshape {
+namespace test_scene_plan {
 namespace {
 
 using testing::input_error_message;
@@ -97,4 +98,5 @@ TEST(ScenePlan, WithoutADetourThePostEndsInCollisionNamingItAndWhere) {
 }
 
 }  // namespace
+}  // namespace test_scene_plan
 }  // namespace rodshape

@@ -14,6 +14,7 @@
 #include "support/solver_fixtures.hpp"
 
 namespace rodshape {
+namespace test_size_bounds {
 namespace {
 
 using testing::input_error_message;
@@ -135,4 +136,5 @@ TEST(SizeBounds, TheProductOfThePlansSizesIsBoundedByItsEstimatedTime) {
 }
 
 }  // namespace
+}  // namespace test_size_bounds
 }  // namespace rodshape

@@ -12,6 +12,7 @@
 #include "trajectory/target_behind_clamp.hpp"
 
 namespace rodshape {
+namespace test_target_behind_clamp {
 namespace {
 
 PlanProblem band_towards(const PointSet& points) {
@@ -52,4 +53,5 @@ TEST(TargetBehindClamp, APlanStraightBelowTheClampSaysWhyItStops) {
 }
 
 }  // namespace
+}  // namespace test_target_behind_clamp
 }  // namespace rodshape

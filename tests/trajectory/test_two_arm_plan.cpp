@@ -25,6 +25,7 @@
 #include "trajectory/arm_replanning.hpp"
 
 namespace rodshape {
+namespace test_two_arm_plan {
 namespace {
 
 using testing::input_error_message;
@@ -408,4 +409,5 @@ TEST(TwoArmPlan, HandsTooNearEachOtherMakeThePlanACollision) {
 }
 
 }  // namespace
+}  // namespace test_two_arm_plan
 }  // namespace rodshape
