@@ -292,10 +292,16 @@ Matrix36d hermite_jacobian(const ClampedRod& rod, const RodConfiguration& c, int
 
 namespace {
 
-/// The interval holding s (clamped to [0, L]).
-int interval_of(const RodConfiguration& c, double s) {
+/// The interval i holding s (clamped to [0, L]) and t = (s - s_i) / h there; c has 2 nodes or more.
+struct IntervalPoint {
+  int i;
+  double t;
+};
+IntervalPoint interval_point(const RodConfiguration& c, double s) {
+  s = std::clamp(s, c.s.front(), c.s.back());
   const auto upper = std::upper_bound(c.s.begin(), c.s.end(), s);
-  return std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+  const int i = std::clamp(static_cast<int>(upper - c.s.begin()) - 1, 0, c.nodes() - 2);
+  return {i, (s - c.s[i]) / (c.s[i + 1] - c.s[i])};
 }
 
 }  // namespace
@@ -303,11 +309,9 @@ int interval_of(const RodConfiguration& c, double s) {
 Matrix36d curve_point_jacobian(const ClampedRod& rod,
                                const RodConfiguration& configuration,
                                double s) {
-  const RodConfiguration& c = configuration;
-  if (c.nodes() < 2) return Matrix36d::Zero();
-  s = std::clamp(s, c.s.front(), c.s.back());
-  const int i = interval_of(c, s);
-  return hermite_jacobian(rod, c, i, (s - c.s[i]) / (c.s[i + 1] - c.s[i]));
+  if (configuration.nodes() < 2) return Matrix36d::Zero();
+  const auto [i, t] = interval_point(configuration, s);
+  return hermite_jacobian(rod, configuration, i, t);
 }
 
 Matrix36d curve_tangent_jacobian(const ClampedRod& rod,
@@ -315,11 +319,9 @@ Matrix36d curve_tangent_jacobian(const ClampedRod& rod,
                                  double s) {
   const RodConfiguration& c = configuration;
   if (c.nodes() < 2) return Matrix36d::Zero();
-  s = std::clamp(s, c.s.front(), c.s.back());
-  const int i = interval_of(c, s);
-  const double h = c.s[i + 1] - c.s[i], t = (s - c.s[i]) / h;
+  const auto [i, t] = interval_point(c, s);
   // d/ds of the Hermite basis: h00' = (6t² - 6t)/h = -h01', h10' = 3t² - 4t + 1, h11' = 3t² - 2t.
-  const double h00 = (6.0 * t * t - 6.0 * t) / h;
+  const double h00 = (6.0 * t * t - 6.0 * t) / (c.s[i + 1] - c.s[i]);
   return h00 * (c.dp_dw[i] - c.dp_dw[i + 1]) +
          (3.0 * t * t - 4.0 * t + 1.0) * tangent_derivative(rod, c, i) +
          (3.0 * t * t - 2.0 * t) * tangent_derivative(rod, c, i + 1);

@@ -155,14 +155,19 @@ TEST(MovingBaseProblem, OptimiserMovesTheBaseOntoATargetMadeFromAMovedClamp) {
   EXPECT_GT(clamped.cost.max_distance, 0.01) << clamped.brief();
 }
 
-/// The paper's smoothed Σ dist (W1 = 1e-3, W2 = 1), its points `offset` off the shape of the
-/// body-frame wrench wb from a clamp moved 3 cm and turned 0.24 rad from rod's (nodes 0 … 40).
-ShapeTarget target_off_moved_shape(const ClampedRod& rod, const Vector6d& wb, double offset) {
+/// The shape of the body-frame wrench wb from a clamp moved 3 cm and turned 0.24 rad from rod's.
+RodConfiguration moved_shape(const ClampedRod& rod, const Vector6d& wb) {
   ClampedRod moved = rod;
   moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
   moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
-  const RodConfiguration truth = integrate(
+  return integrate(
       moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+}
+
+/// The paper's smoothed Σ dist (W1 = 1e-3, W2 = 1), its points `offset` off moved_shape (nodes
+/// 0 … 40).
+ShapeTarget target_off_moved_shape(const ClampedRod& rod, const Vector6d& wb, double offset) {
+  const RodConfiguration truth = moved_shape(rod, wb);
   ShapeTarget target;
   for (int i : {0, 5, 12, 20, 28, 36, 40})
     target.points.push_back(truth.p[i] + offset * truth.R[i].col(i % 2));
@@ -257,15 +262,11 @@ TEST(MovingBaseProblem, TheEliminatedEvaluationInTheBasesFrameIsTheWorldsAtTheAl
   }
 }
 
-/// The alignment's problem: a moving base (motion weight 0.3) and points 5–20 mm off the shape of
-/// w_b at a moved clamp, one beyond the tip (its closest point is the end), Σ dist (smoothed) or
+/// The alignment's problem: a moving base (motion weight 0.3) and points 5–20 mm off moved_shape,
+/// one beyond the tip (its closest point is the end), Σ dist (smoothed) or
 /// Σ dist².
 ShapeProblem alignment_problem(const ClampedRod& rod, const Vector6d& wb, bool squared) {
-  ClampedRod moved = rod;
-  moved.clamp.position += Eigen::Vector3d(0.02, -0.015, 0.018);
-  moved.clamp.rotation = exp_so3(Eigen::Vector3d(0.1, 0.2, -0.1)) * rod.clamp.rotation;
-  const RodConfiguration truth = integrate(
-      moved, BaseWrench{moved.clamp.rotation * wb.head<3>(), moved.clamp.rotation * wb.tail<3>()});
+  const RodConfiguration truth = moved_shape(rod, wb);
   ShapeTarget target;
   const double offsets[] = {0.005, 0.012, 0.02, 0.008, 0.015, 0.01};
   const int nodes[] = {3, 10, 17, 24, 31, 37};
