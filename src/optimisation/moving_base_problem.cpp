@@ -469,7 +469,8 @@ bool ShapeProblem::align_base(const Vector6d& w_b, Vector6d& xi) {
 Vector6d ShapeProblem::predicted_xi(const Vector6d& w_b) const {
   if (!predictor_ready_) return xi_star_;
   const double L = rod_.properties.length;
-  const Vector6d step = xi_sensitivity_ * (w_b - predictor_w_);  // in ξ̃ = (δt / L, δφ)
+  // x_ = (w_b, ξ*) of the last eliminated evaluation, where the sensitivity was found.
+  const Vector6d step = xi_sensitivity_ * (w_b - x_.head<6>());  // in ξ̃ = (δt / L, δφ)
   Vector6d xi = xi_star_;
   xi.head<3>() += L * step.head<3>();
   xi.tail<3>() += step.tail<3>();
@@ -498,7 +499,6 @@ void ShapeProblem::evaluate_eliminated(const Vector6d& w_scaled) {
     return;
   }
   xi_star_ = xi;
-  predictor_w_ = w_b;
   Vector12d x;
   x << w_b, xi;
   evaluate_aligned(x);

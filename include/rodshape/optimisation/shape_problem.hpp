@@ -219,9 +219,8 @@ class ShapeProblem {
   bool eliminated_ = false;
   Vector6d xi_star_ = Vector6d::Zero();
   bool eliminated_evaluated_ = false;  // evaluate_eliminated() has run at x_.head<6>()
-  /// The next alignment's start, ξ̃*(w_b) to first order about the last one (at predictor_w_):
+  /// The next alignment's start, ξ̃*(w_b) to first order about the last one (at x_.head<6>()):
   /// alignment_sensitivity(), set by align_base().
-  Vector6d predictor_w_ = Vector6d::Zero();
   Matrix6d xi_sensitivity_ = Matrix6d::Zero();
   bool predictor_ready_ = false;
   Vector6d predicted_xi(const Vector6d& w_b) const;
