@@ -10,6 +10,9 @@
 #   RODSHAPE_FUZZ_STRICT=1 a converged solve with a non-finite configuration (or a residual above the
 #                          tolerance) is a finding too (known numeric findings: fuzz/findings/)
 #   RODSHAPE_JOBS          parallel compile jobs (default 2)
+#   RODSHAPE_FUZZ_BUILD    the build directory (default build-fuzz). One already configured with
+#                          clang and RODSHAPE_BUILD_FUZZ=ON is used as it is (its targets built, not
+#                          configured again): .ci/run's sanitizer build, whose tests share the library
 # Needs clang++ and libclang-rt-14-dev (libFuzzer). The corpus grows in build-fuzz/corpus/<target>/
 # (seeded from examples/*.yaml and fuzz/regressions/; the cloud reader's from fuzz/seeds/cloud/); a finding's reproducer is written to build-fuzz/findings/<target>/
 # and the script exits 1. Reproduce one with: (cd examples && ../build-fuzz/fuzz/<target> FILE)
@@ -19,15 +22,19 @@ root="$PWD"
 
 seconds="${1:-${RODSHAPE_FUZZ_SECONDS:-60}}"
 jobs="${RODSHAPE_JOBS:-2}"
-build="$root/build-fuzz"
+build="${RODSHAPE_FUZZ_BUILD:-$root/build-fuzz}"
+case "$build" in /*) ;; *) build="$root/$build" ;; esac
 targets=(fuzz_task_reader fuzz_equilibrium fuzz_cloud_reader)
 
 # -O1 with line tables, as libFuzzer recommends; assertions on.
 mkdir -p "$build"
-cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-  -DRODSHAPE_BUILD_FUZZ=ON -DRODSHAPE_BUILD_TESTS=OFF -DRODSHAPE_BUILD_BENCH=OFF \
-  -DRODSHAPE_BUILD_CLI=OFF -DRODSHAPE_UNITY_LIBRARY=ON > "$build/configure.log" 2>&1 || { cat "$build/configure.log"; exit 1; }
+if ! grep -qs '^RODSHAPE_BUILD_FUZZ:BOOL=ON' "$build/CMakeCache.txt"; then
+  cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+    -DRODSHAPE_BUILD_FUZZ=ON -DRODSHAPE_BUILD_TESTS=OFF -DRODSHAPE_BUILD_BENCH=OFF \
+    -DRODSHAPE_BUILD_CLI=OFF -DRODSHAPE_UNITY_LIBRARY=ON > "$build/configure.log" 2>&1 ||
+    { cat "$build/configure.log"; exit 1; }
+fi
 cmake --build "$build" -j "$jobs" --target "${targets[@]}"
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
