@@ -9,6 +9,9 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 jobs="${RODSHAPE_JOBS:-2}"
 
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DRODSHAPE_BUILD_TESTS=ON
+# The test programs in batches of 8 files (RODSHAPE_UNITY_TESTS): their compile took 949 CPU-s
+# file by file, about half of the build (BENCHMARKS.md, "CI's compile", 2026-11-27). A plain
+# `cmake -S . -B build` builds them file by file, which also catches a test file missing an #include.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DRODSHAPE_BUILD_TESTS=ON -DRODSHAPE_UNITY_TESTS=ON
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
