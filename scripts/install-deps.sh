@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages rodshape builds, tests and benchmarks with.
-# Usage: scripts/install-deps.sh        (as root, or with sudo available)
+# Usage: scripts/install-deps.sh [PACKAGE...]   (as root, or with sudo available)
+# Extra Debian packages may be named after it (.ci/run adds clang's for its sanitizer builds).
 set -euo pipefail
 
 packages=(
@@ -21,6 +22,7 @@ packages=(
   libnanoflann-dev         # feedback/: nearest points of a cloud to the model rod (k-d tree)
   libjs-three              # plan.html, validation.html: three.js, inlined when a page is written
   chromium chromium-driver python3-selenium  # the pages' test in a real browser (.ci/run, 3b)
+  "$@"
 )
 
 missing=()
