@@ -114,7 +114,8 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
         tip_(tip),
         work_(work),
         coarse_(coarse),
-        row_scale_(residual_row_scale(rod, tip)) {}
+        row_scale_(residual_row_scale(rod, tip)),
+        units_(rod.properties.bending_wrench_units()) {}
 
   int operator()(const InputType& w, ValueType& f) {
     if (!has_cache_ || Vector6d(w) != w_cached_) evaluate(w);
@@ -139,6 +140,14 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
     return residual_;
   }
   int integrations() const { return integrations_; }
+  /// Whether B ≈ dr/dw has full rank in the units of the trust region (rows scaled as the residual,
+  /// columns in bending units): rank-revealing LU with Eigen's threshold (pivots above 6 ε times
+  /// the largest). A Newton step along a direction the residual does not see (a Kirchhoff rod's
+  /// axial force while it is straight) would otherwise be round-off amplified, not a step.
+  bool invertible(const Matrix6d& B) const {
+    return Eigen::FullPivLU<Matrix6d>(row_scale_.asDiagonal() * B * units_.asDiagonal())
+        .isInvertible();
+  }
   /// ||diag(row_scale) r||_∞: the residual in the units of the trust region.
   double scaled_norm(const Vector6d& r) const {
     return row_scale_.cwiseProduct(r).lpNorm<Eigen::Infinity>();
@@ -201,6 +210,7 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   RodConfiguration& work_;
   CoarseStage* coarse_;  // null: no coarse stage
   Vector6d row_scale_;
+  Vector6d units_;  // the unknown's bending units (RodProperties::bending_wrench_units())
   Vector6d w_cached_ = Vector6d::Zero();
   Vector6d residual_ = Vector6d::Zero();
   Matrix6d jacobian_ = Matrix6d::Zero();
@@ -230,21 +240,24 @@ bool broyden_steps(ShootingProblem& problem,
                    Matrix6d& B,
                    Vector6d& w,
                    Vector6d& r,
-                   ShootingSummary& result) {
+                   ShootingSummary& result,
+                   const Vector6d* known_offset = nullptr) {
   constexpr int kMaxChordSteps = 8;
   constexpr int kMaxCoarseRounds = 3;
   // The coarse stage steps on r_c(w) + δ, with δ = r(w) − r_c(w) (the two discretisations'
   // difference, which hardly changes near the root) from the last point where both are known;
-  // the first round, before any, with δ = 0 and only down to √(tolerance |r|).
+  // the first round, before any, with δ = 0 and only down to √(tolerance |r|), unless the caller
+  // knows δ at w (`known_offset`).
   int coarse_rounds = problem.has_coarse_stage() ? 1 : 0;
-  Vector6d offset = Vector6d::Zero();
+  Vector6d offset = known_offset ? *known_offset : Vector6d::Zero();
   double round_tolerance =
-      std::max(options.residual_tolerance,
-               std::sqrt(options.residual_tolerance * r.lpNorm<Eigen::Infinity>()));
+      known_offset ? options.residual_tolerance
+                   : std::max(options.residual_tolerance,
+                              std::sqrt(options.residual_tolerance * r.lpNorm<Eigen::Infinity>()));
   for (int k = 0; k < kMaxChordSteps; ++k) {
     bool coarse = coarse_rounds > 0;
+    if (!problem.invertible(B)) return false;
     const Eigen::PartialPivLU<Matrix6d> lu(B);
-    if (!(std::abs(lu.determinant()) > 0.0)) return false;
     const Vector6d step = -lu.solve(r);
     const Vector6d w_next = w + step;
     Vector6d r_next = coarse ? Vector6d(problem.coarse_residual(w_next) + offset)
@@ -277,24 +290,38 @@ bool broyden_steps(ShootingProblem& problem,
   return false;
 }
 
-/// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point,
-/// then Broyden's steps (broyden_steps()). Returns true, with x at the root and B the updated
-/// Jacobian there, when ||r||_∞ ≤ tolerance; false, with x and the problem's cache unchanged, when
-/// a step fails to halve the scaled residual first.
-bool chord_endgame(ShootingProblem& problem,
+/// The endgame near a root: Newton's step with the exact Jacobian J(x) at the last accepted point
+/// of Levenberg–Marquardt on `lm_problem`, then Broyden's steps (broyden_steps()) on the rod's
+/// problem: `rod_problem`, or `lm_problem` itself when null. With a `rod_problem` (the global
+/// phase ran on the coarse stage's rod, coarse_phase()) J is the coarse rod's, within the
+/// discretisation's O(h⁴) of the rod's, and where x is the coarse rod's root already the rod's
+/// residual there gives the discretisations' difference for the steps. Returns true, with x at the
+/// root and B the updated Jacobian there, when ||r||_∞ ≤ tolerance; false, with x and
+/// `lm_problem`'s cache unchanged, when a step fails to halve the scaled residual first.
+bool chord_endgame(ShootingProblem& lm_problem,
+                   ShootingProblem* rod_problem,
                    const ShootingOptions& options,
                    Eigen::VectorXd& x,
                    Matrix6d& B,
                    ShootingSummary& result) {
-  const ShootingProblem::Snapshot at_x = problem.snapshot();
+  const ShootingProblem::Snapshot at_x = lm_problem.snapshot();
+  ShootingProblem& problem = rod_problem ? *rod_problem : lm_problem;
   B = at_x.J;
   Vector6d w = x;
   Vector6d r = at_x.r;
-  if (broyden_steps(problem, options, B, w, r, result)) {
+  std::optional<Vector6d> offset;
+  if (rod_problem && r.lpNorm<Eigen::Infinity>() <= options.residual_tolerance) {
+    r = problem.residual_without_jacobian(w);
+    result.residual_norm = r.lpNorm<Eigen::Infinity>();
+    if (result.residual_norm <= options.residual_tolerance) return true;
+    offset = r - at_x.r;
+  }
+  if (r.allFinite() &&
+      broyden_steps(problem, options, B, w, r, result, offset ? &*offset : nullptr)) {
     x = w;
     return true;
   }
-  problem.restore(at_x);  // Levenberg–Marquardt goes on from x as if nothing happened
+  lm_problem.restore(at_x);  // Levenberg–Marquardt goes on from x as if nothing happened
   result.residual_norm = at_x.r.lpNorm<Eigen::Infinity>();
   return false;
 }
@@ -332,25 +359,21 @@ std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w)
   return Vector6d(w - lu.solve(at_guess.r));
 }
 
-/// Levenberg–Marquardt from w (in: guess, out: last iterate), with the chord endgame; from the
-/// predictor's point when a valid `secant` start gives one (predict()). `secant` ends with
-/// the Jacobian estimate at the root when the solve converged (see detail::SecantStart).
-/// `work_is_output`: true when `work` ends as integrate(rod, w, options.output_derivatives) (the
-/// last integration was at the last iterate, with that level), so the caller need not integrate
-/// again. `coarse`: the chord steps' coarse stage, or null.
-ShootingSummary solve_direct(const ClampedRod& rod,
-                             const TipCondition& tip,
-                             const ShootingOptions& options,
-                             RodConfiguration& work,
-                             Vector6d& w,
-                             bool& work_is_output,
-                             detail::SecantStart* secant,
-                             CoarseStage* coarse) {
-  ShootingProblem problem(rod, tip, work, coarse);
-  ShootingSummary result;
-  std::optional<Vector6d> euler =
-      secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
-  if (secant) secant->valid = false;
+/// Levenberg–Marquardt on `problem` from x (in: guess, out: last iterate), with the chord endgame
+/// on `rod_problem` (chord_endgame(); the same problem when null). Returns whether it converged,
+/// with B the Jacobian estimate at the root; the status says why not. `euler`, when given,
+/// receives Euler's point from the first evaluation unless it holds one already (euler_point()).
+/// On the coarse stage's rod (a `rod_problem` given) the coarse residual is never the answer and a
+/// stall is not the rod's: it returns false where the endgame fails at the coarse rod's root or
+/// the coarse iteration stalls, for the rod's own Levenberg–Marquardt to go on from x.
+bool levenberg_marquardt(ShootingProblem& problem,
+                         ShootingProblem* rod_problem,
+                         const ClampedRod& rod,
+                         const ShootingOptions& options,
+                         Eigen::VectorXd& x,
+                         Matrix6d& B,
+                         std::optional<Vector6d>* euler,
+                         ShootingSummary& result) {
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
   // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
   lm.setFtol(0.0);
@@ -365,39 +388,39 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   lm.diag() = rod.properties.bending_wrench_units().cwiseInverse();
   lm.setFactor(1.0);
 
-  Matrix6d B;  // the Jacobian estimate at the root, when converged
-  Eigen::VectorXd x = w;
+  const bool coarse = rod_problem != nullptr;
+  const Vector6d guess = x;
   auto lm_status = lm.minimizeInit(x);
-  if (secant && !euler) euler = euler_point(problem, w);
+  if (euler && !*euler) *euler = euler_point(problem, guess);
   bool tried_chord_here = false;
+  const auto converged = [&] {
+    result.status = SolveStatus::Converged;
+    result.message = "converged";
+    return true;
+  };
   while (true) {
     const Vector6d& r = problem.residual_at(x);
     result.residual_norm =
         r.allFinite() ? r.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
-    if (result.residual_norm <= options.residual_tolerance) {
-      result.status = SolveStatus::Converged;
-      result.message = "converged";
+    if (!coarse && result.residual_norm <= options.residual_tolerance) {
       B = problem.snapshot().J;  // residual_at(x) integrated with derivatives at x
-      break;
+      return converged();
     }
     if (!x.allFinite()) {
       result.status = SolveStatus::Diverged;
       result.message = "the base wrench became non-finite";
-      break;
+      return false;
     }
-    if (!tried_chord_here && problem.scaled_norm(r) <= kChordThreshold) {
+    if (!tried_chord_here && r.allFinite() && problem.scaled_norm(r) <= kChordThreshold) {
       tried_chord_here = true;
-      if (chord_endgame(problem, options, x, B, result)) {
-        result.status = SolveStatus::Converged;
-        result.message = "converged";
-        break;
-      }
+      if (chord_endgame(problem, rod_problem, options, x, B, result)) return converged();
+      if (coarse && result.residual_norm <= options.residual_tolerance) return false;
       continue;
     }
     if (result.iterations >= options.max_iterations) {
       result.status = SolveStatus::IterationLimit;
       result.message = "reached solver.max_iterations = " + std::to_string(options.max_iterations);
-      break;
+      return false;
     }
     lm_status = lm.minimizeOneStep(x);
     ++result.iterations;
@@ -406,26 +429,81 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     if (lm_status == Status::TooManyFunctionEvaluation) {
       result.status = SolveStatus::IterationLimit;
       result.message = "too many rejected steps";
-      break;
+      return false;
     }
     if (lm_status != Status::Running) {
+      if (coarse) return false;
       // No step reduces |r| any more while r ≠ 0: a local minimum of |r|², where Jᵀr = 0, so the
       // Jacobian is singular (or the problem has no solution near the guess).
       const Vector6d& r_end = problem.residual_at(x);
       result.residual_norm = r_end.lpNorm<Eigen::Infinity>();
       if (result.residual_norm <= options.residual_tolerance) {
-        result.status = SolveStatus::Converged;
-        result.message = "converged";
         B = problem.snapshot().J;
-      } else {
-        result.status = SolveStatus::Singular;
-        result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
-                         ": the Jacobian is singular there, no step reduces the residual";
+        return converged();
       }
-      break;
+      result.status = SolveStatus::Singular;
+      result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
+                       ": the Jacobian is singular there, no step reduces the residual";
+      return false;
     }
   }
-  w = x;
+}
+
+/// The global phase on the coarse stage's rod (CoarseStage: steps twice as long, half the cost of
+/// an integration): Levenberg–Marquardt from w with the rod's endgame (chord_endgame()), sharing
+/// the iteration budget with the rod's. True, with w at the rod's root and B the estimate there,
+/// when that converges; else w is where the rod's own Levenberg–Marquardt goes on: the coarse
+/// phase's last point, or the guess when that is not finite.
+bool coarse_phase(ShootingProblem& problem,
+                  const ClampedRod& rod,
+                  const TipCondition& tip,
+                  const ShootingOptions& options,
+                  CoarseStage& coarse,
+                  Vector6d& w,
+                  Matrix6d& B,
+                  ShootingSummary& result) {
+  RodConfiguration work;
+  ShootingProblem on_coarse(coarse.compared.rod, tip, work, nullptr);
+  Eigen::VectorXd x = w;
+  const bool converged =
+      levenberg_marquardt(on_coarse, &problem, rod, options, x, B, nullptr, result);
+  result.integrations += on_coarse.integrations();
+  result.jacobian_evaluations += on_coarse.jacobian_evaluations();
+  if (x.allFinite()) w = x;
+  return converged;
+}
+
+/// The direct solve from w (in: guess, out: last iterate): Levenberg–Marquardt with the chord
+/// endgame from the predictor's point when a valid `secant` start gives one (predict()); else
+/// from w, without `secant` first on the coarse stage's rod when there is one (coarse_phase()).
+/// `secant` ends with the Jacobian estimate at the root when the solve converged (see
+/// detail::SecantStart). `work_is_output`: true when `work` ends as integrate(rod, w,
+/// options.output_derivatives) (the last integration was at the last iterate, with that level), so
+/// the caller need not integrate again. `coarse`: the chord steps' coarse stage, or null.
+ShootingSummary solve_direct(const ClampedRod& rod,
+                             const TipCondition& tip,
+                             const ShootingOptions& options,
+                             RodConfiguration& work,
+                             Vector6d& w,
+                             bool& work_is_output,
+                             detail::SecantStart* secant,
+                             CoarseStage* coarse) {
+  ShootingProblem problem(rod, tip, work, coarse);
+  ShootingSummary result;
+  Matrix6d B;  // the Jacobian estimate at the root, when converged
+  std::optional<Vector6d> euler =
+      secant && secant->valid ? predict(problem, *secant, w) : std::nullopt;
+  if (secant) secant->valid = false;
+  bool converged = false;
+  // A solve of its own (not a continuation substep, whose first evaluation gives the next
+  // substep's predictor) runs its global phase on the coarse stage's rod.
+  if (coarse && !secant)
+    converged = coarse_phase(problem, rod, tip, options, *coarse, w, B, result);
+  if (!converged) {
+    Eigen::VectorXd x = w;
+    levenberg_marquardt(problem, nullptr, rod, options, x, B, secant ? &euler : nullptr, result);
+    w = x;
+  }
   if (secant && result.converged()) {
     secant->valid = true;
     secant->jacobian = B;
@@ -434,8 +512,8 @@ ShootingSummary solve_direct(const ClampedRod& rod,
     if (euler) secant->euler_error = w - *euler;
   }
   work_is_output = problem.work_holds(w, options.output_derivatives);
-  result.integrations = problem.integrations();
-  result.jacobian_evaluations = problem.jacobian_evaluations();
+  result.integrations += problem.integrations();
+  result.jacobian_evaluations += problem.jacobian_evaluations();
   return result;
 }
 

@@ -1,5 +1,6 @@
-// The chord steps' coarse stage (src/solvers/shooting_solver.cpp, CoarseStage): steps checked on
-// the accuracy check's longer steps, whose last integration is the check's comparison run.
+// The coarse stage (src/solvers/shooting_solver.cpp, CoarseStage): a solve's global phase
+// (Levenberg–Marquardt, coarse_phase()) runs on the accuracy check's longer steps, and the chord
+// steps are checked on them; the stage's last integration is the check's comparison run.
 #include <gtest/gtest.h>
 
 #include "rodshape/core/rod_integrator.hpp"
@@ -8,6 +9,7 @@
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "solvers/step_doubling.hpp"
+#include "support/solver_fixtures.hpp"
 
 namespace rodshape {
 namespace test_coarse_stage {
@@ -53,6 +55,29 @@ TEST(CoarseStage, WarmSolveSharesTheAccuracyCheckAndConverges) {
   EXPECT_LE(((warm.base_wrench.to_vector() - plain.base_wrench.to_vector()).cwiseQuotient(units))
                 .lpNorm<Eigen::Infinity>(),
             1e-6);
+}
+
+// A cold solve's global phase on the stage's rod ends at the rod's own equilibrium: both solves'
+// residuals are within τ, so the two roots differ by at most ||J⁻¹||_∞ 2τ (to first order).
+TEST(CoarseStage, ColdSolveFromTheStageReachesTheRodsRoot) {
+  const ClampedRod rod = samples::rubber_band(ConstitutiveModel::Cosserat, 100);
+  const ClampedTip tip{samples::bent_tip()};
+  ShootingOptions options = tip_only_output();
+  options.continuation = false;
+  const ShootingResult staged = solve_equilibrium(rod, tip, {}, options);
+  options.integration_tolerance = std::numeric_limits<double>::infinity();  // no stage
+  const ShootingResult plain = solve_equilibrium(rod, tip, {}, options);
+  ASSERT_TRUE(staged.summary.converged()) << staged.brief();
+  ASSERT_TRUE(plain.summary.converged()) << plain.brief();
+  EXPECT_LE(shooting_residual(tip, staged.configuration).lpNorm<Eigen::Infinity>(),
+            options.residual_tolerance);
+  const Matrix6d J = testing::residual_jacobian(rod, tip, plain.base_wrench);
+  const double bound = testing::inverse_inf_norm(J) * 2.0 * options.residual_tolerance;
+  EXPECT_LE(
+      (staged.base_wrench.to_vector() - plain.base_wrench.to_vector()).lpNorm<Eigen::Infinity>(),
+      bound);
+  // The global phase's Levenberg–Marquardt steps are the same in number on either rod here.
+  EXPECT_EQ(staged.summary.iterations, plain.summary.iterations);
 }
 
 // Odd intervals and sub-steps: the check integrates at twice the sub-steps, so there is no coarse

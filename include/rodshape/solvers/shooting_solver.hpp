@@ -2,7 +2,8 @@
 // w = (n(0), m(0)) with Levenberg–Marquardt on the exact Jacobian (Eigen's MINPACK port, trust
 // region in bending units), ending with Newton and chord steps near the root, warm-started from a
 // guess, and with continuation of the boundary condition from the unloaded rod when the direct
-// solve fails.
+// solve fails. Where the accuracy check compares with steps twice as long, the global phase runs
+// on those (half the cost of an integration) and only the endgame's checks on the rod itself.
 #pragma once
 
 #include <limits>
