@@ -89,12 +89,33 @@ Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
   return scale;
 }
 
-/// The chord steps' first stage: integrations with the accuracy check's steps twice as long (half
-/// the cost), down to the root of that coarser discretisation; the rod's own steps then finish.
-/// The last coarse integration is kept: when the solve ends at its wrench, it is the check's
-/// comparison run (step_doubling_error()), which then costs no integration.
+/// The coarse stage's rod: the comparison rod (steps twice as long), its steps doubled again
+/// (comparison_rod()) while it keeps at least kMinGlobalSteps Runge–Kutta steps. At h = L/20
+/// RK4's error on a rod bent into a full loop (κh ≈ 0.31) is of order (κh)⁴/5! ≈ 1e-4 relative,
+/// far inside the chord threshold (kChordThreshold, 1e-2), so the rod's endgame starts where its
+/// steps converge; where it does not, Levenberg–Marquardt on the rod itself takes over
+/// (solve_direct()).
+constexpr int kMinGlobalSteps = 20;
+ClampedRod global_rod(const detail::ComparisonRod& compared) {
+  ClampedRod rod = compared.rod;
+  while (true) {
+    const detail::ComparisonRod coarser = detail::comparison_rod(rod);
+    if (!coarser.coarse || coarser.rod.intervals * coarser.rod.substeps < kMinGlobalSteps)
+      return rod;
+    rod = coarser.rod;
+  }
+}
+
+/// The coarse stage: the rod with steps two or more times as long (`stage`, global_rod()), that
+/// much cheaper an integration, where a solve's global phase runs (coarse_phase()) and the chord
+/// steps go down to the root of that coarser discretisation before the rod's own residual
+/// finishes. When `stage` is the accuracy check's comparison rod (`compared`, steps twice as
+/// long), the last coarse integration is kept: when the solve ends at its wrench, it is the
+/// check's comparison run (step_doubling_error()), which then costs no integration.
 struct CoarseStage {
   detail::ComparisonRod compared;
+  ClampedRod stage;
+  bool stage_is_compared = false;
   RodConfiguration work;  // integrate(compared.rod, w, Derivatives::None) when `holds`
   Vector6d w = Vector6d::Zero();
   bool holds = false;
@@ -185,8 +206,8 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   bool has_coarse_stage() const { return coarse_ != nullptr; }
   /// The residual at w of the coarse stage's rod (CoarseStage), without derivatives.
   const Vector6d& coarse_residual(const Vector6d& w) {
-    integrate(coarse_->compared.rod, Wrench::from_vector(w), coarse_->work, Derivatives::None);
-    coarse_->w = w, coarse_->holds = true;
+    integrate(coarse_->stage, Wrench::from_vector(w), coarse_->work, Derivatives::None);
+    coarse_->w = w, coarse_->holds = coarse_->stage_is_compared;
     residual_ = shooting_residual(tip_, coarse_->work);
     has_cache_ = false;
     ++integrations_;
@@ -365,7 +386,7 @@ std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w)
 /// receives Euler's point from the first evaluation unless it holds one already (euler_point()).
 /// On the coarse stage's rod (a `rod_problem` given) the coarse residual is never the answer and a
 /// stall is not the rod's: it returns false where the endgame fails at the coarse rod's root or
-/// the coarse iteration stalls, for the rod's own Levenberg–Marquardt to go on from x.
+/// the coarse iteration stalls. Each call has max_iterations.
 bool levenberg_marquardt(ShootingProblem& problem,
                          ShootingProblem* rod_problem,
                          const ClampedRod& rod,
@@ -393,6 +414,7 @@ bool levenberg_marquardt(ShootingProblem& problem,
   auto lm_status = lm.minimizeInit(x);
   if (euler && !*euler) *euler = euler_point(problem, guess);
   bool tried_chord_here = false;
+  int iterations = 0;  // this call's: each stage has max_iterations
   const auto converged = [&] {
     result.status = SolveStatus::Converged;
     result.message = "converged";
@@ -417,12 +439,13 @@ bool levenberg_marquardt(ShootingProblem& problem,
       if (coarse && result.residual_norm <= options.residual_tolerance) return false;
       continue;
     }
-    if (result.iterations >= options.max_iterations) {
+    if (iterations >= options.max_iterations) {
       result.status = SolveStatus::IterationLimit;
       result.message = "reached solver.max_iterations = " + std::to_string(options.max_iterations);
       return false;
     }
     lm_status = lm.minimizeOneStep(x);
+    ++iterations;
     ++result.iterations;
     tried_chord_here = false;
     using Eigen::LevenbergMarquardtSpace::Status;
@@ -449,11 +472,12 @@ bool levenberg_marquardt(ShootingProblem& problem,
   }
 }
 
-/// The global phase on the coarse stage's rod (CoarseStage: steps twice as long, half the cost of
-/// an integration): Levenberg–Marquardt from w with the rod's endgame (chord_endgame()), sharing
-/// the iteration budget with the rod's. True, with w at the rod's root and B the estimate there,
-/// when that converges; else w is where the rod's own Levenberg–Marquardt goes on: the coarse
-/// phase's last point, or the guess when that is not finite.
+/// The global phase on the coarse stage's rod (CoarseStage): Levenberg–Marquardt from w with the
+/// rod's endgame (chord_endgame()), with max_iterations of its own. True, with w at the rod's root
+/// and B the estimate there, when that converges; else w is still the guess, from which the rod's
+/// own Levenberg–Marquardt starts as if the stage had not been tried: where the coarse
+/// discretisation misleads (a rod bent too much for its steps), the solve is no worse than the
+/// rod's own, at the cost of the attempt.
 bool coarse_phase(ShootingProblem& problem,
                   const ClampedRod& rod,
                   const TipCondition& tip,
@@ -463,13 +487,13 @@ bool coarse_phase(ShootingProblem& problem,
                   Matrix6d& B,
                   ShootingSummary& result) {
   RodConfiguration work;
-  ShootingProblem on_coarse(coarse.compared.rod, tip, work, nullptr);
+  ShootingProblem on_coarse(coarse.stage, tip, work, nullptr);
   Eigen::VectorXd x = w;
   const bool converged =
       levenberg_marquardt(on_coarse, &problem, rod, options, x, B, nullptr, result);
   result.integrations += on_coarse.integrations();
   result.jacobian_evaluations += on_coarse.jacobian_evaluations();
-  if (x.allFinite()) w = x;
+  if (converged) w = x;
   return converged;
 }
 
@@ -610,6 +634,8 @@ namespace {
 /// The two parts of estimated_failing_solve_seconds(): the iterations of a solve that does not
 /// converge, and the re-solves with more sub-steps that the accuracy check may ask for.
 double iterations_seconds(const ClampedRod& rod, const ShootingOptions& options) {
+  // 7 measured on the rod alone; the coarse stage's attempt (the direct solve's first stage, on
+  // at most half the steps) adds at most half an integration per iteration to the 7.
   return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * 4.1e-7;
 }
 double substeps_seconds(const ClampedRod& rod, const ShootingOptions& options) {
@@ -670,7 +696,12 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
   std::optional<CoarseStage> coarse;
   if (std::isfinite(options.integration_tolerance)) {
     detail::ComparisonRod compared = detail::comparison_rod(rod);
-    if (compared.coarse) coarse.emplace().compared = std::move(compared);
+    if (compared.coarse) {
+      coarse.emplace().stage = global_rod(compared);
+      coarse->stage_is_compared = coarse->stage.intervals == compared.rod.intervals &&
+                                  coarse->stage.substeps == compared.rod.substeps;
+      coarse->compared = std::move(compared);
+    }
   }
 
   Vector6d w = guess.to_vector();

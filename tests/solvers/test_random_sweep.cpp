@@ -135,10 +135,11 @@ std::vector<ClampedRod> sweep_rods() {
 }
 
 /// Smaller limits than the defaults, so that 10⁴ solves take seconds; the bound on the work
-/// follows from them. A direct solve takes at most 20 max_iterations integrations (Eigen's
+/// follows from them. A direct solve's stage takes at most 20 max_iterations integrations (Eigen's
 /// function-evaluation limit) plus 12 per visit below the chord threshold (at most one per
 /// iteration, and one before the first: 8 chord steps, 3 residuals of the rod at the coarse
-/// stage's roots, 1 coarse step checked again on the rod); the continuation at most
+/// stage's roots, 1 coarse step checked again on the rod), and a direct solve has two stages (the
+/// coarse stage's global phase, then the rod's own where it fails); the continuation at most
 /// max_continuation_steps successful steps, each after at most log2(max_continuation_steps) + 1
 /// halvings; the accuracy check at most log2(max_substeps) re-solves, each with two integrations
 /// for its estimate.
@@ -152,7 +153,7 @@ ShootingOptions sweep_options() {
 }
 
 long work_bound(const ShootingOptions& o) {
-  const long direct = 20L * o.max_iterations + 12L * (o.max_iterations + 1) + 2;
+  const long direct = 2 * (20L * o.max_iterations + 12L * (o.max_iterations + 1) + 2);
   const long attempts =
       1 + o.max_continuation_steps * (static_cast<long>(std::log2(o.max_continuation_steps)) + 2);
   const long solve = attempts * direct + 1;

@@ -23,8 +23,9 @@ struct ShootingOptions {
   static constexpr int kMaxIterations = 10'000;
   static constexpr int kMaxContinuationSteps = 4096;
 
-  int max_iterations = 100;  // Levenberg–Marquardt iterations (accepted steps) per solve;
-                             // the endgame adds at most 8 chord steps per attempt
+  int max_iterations = 100;  // Levenberg–Marquardt iterations (accepted steps) per solve and
+                             // stage (the coarse stage's global phase, then the rod's own where
+                             // that fails); the endgame adds at most 8 chord steps per attempt
   double residual_tolerance =
       1e-10;  // converged when ||r(w)||_∞ ≤ residual_tolerance (m, rad, N, N·m)
   /// When the direct solve fails, step the boundary condition from the unloaded rod: clamped and
@@ -82,7 +83,9 @@ struct ShootingResult {
 /// converges:
 ///  * failing: about 7 integrations with derivatives per allowed iteration (the direct solve and
 ///    the continuation's stages each use them all), each 4.1e-7 s per interval:
-///    7 × max_iterations × intervals × 4.1e-7 s (100 iterations: 29 s measured and estimated);
+///    7 × max_iterations × intervals × 4.1e-7 s (100 iterations: 29 s measured and estimated,
+///    before the direct solve's coarse stage, whose attempt adds at most half an integration per
+///    iteration);
 ///  * the accuracy check's re-solves with more sub-steps (the continuation's too): about
 ///    1.2e-5 s × max_substeps × intervals (16: 19 s, 64: 74 s measured).
 /// A solve that converges takes a small part of it (1.3 s there).
