@@ -94,7 +94,7 @@ Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
 /// RK4's error on a rod bent into a full loop (κh ≈ 0.31) is of order (κh)⁴/5! ≈ 1e-4 relative,
 /// far inside the chord threshold (kChordThreshold, 1e-2), so the rod's endgame starts where its
 /// steps converge; where it does not, Levenberg–Marquardt on the rod itself takes over
-/// (solve_direct()).
+/// (solve_direct()). A comparison rod with fewer steps is the stage of the chord steps only.
 constexpr int kMinGlobalSteps = 20;
 ClampedRod global_rod(const detail::ComparisonRod& compared) {
   ClampedRod rod = compared.rod;
@@ -520,8 +520,9 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   if (secant) secant->valid = false;
   bool converged = false;
   // A solve of its own (not a continuation substep, whose first evaluation gives the next
-  // substep's predictor) runs its global phase on the coarse stage's rod.
-  if (coarse && !secant)
+  // substep's predictor) runs its global phase on the coarse stage's rod when that has the steps
+  // for it (global_rod()).
+  if (coarse && !secant && coarse->stage.intervals * coarse->stage.substeps >= kMinGlobalSteps)
     converged = coarse_phase(problem, rod, tip, options, *coarse, w, B, result);
   if (!converged) {
     Eigen::VectorXd x = w;
