@@ -96,12 +96,13 @@ Vector6d residual_row_scale(const ClampedRod& rod, const TipCondition& tip) {
 /// steps converge; where it does not, Levenberg–Marquardt on the rod itself takes over
 /// (solve_direct()). A comparison rod with fewer steps is the stage of the chord steps only.
 constexpr int kMinGlobalSteps = 20;
+/// Runge–Kutta steps along the rod.
+int rk4_steps(const ClampedRod& rod) { return rod.intervals * rod.substeps; }
 ClampedRod global_rod(const detail::ComparisonRod& compared) {
   ClampedRod rod = compared.rod;
   while (true) {
     const detail::ComparisonRod coarser = detail::comparison_rod(rod);
-    if (!coarser.coarse || coarser.rod.intervals * coarser.rod.substeps < kMinGlobalSteps)
-      return rod;
+    if (!coarser.coarse || rk4_steps(coarser.rod) < kMinGlobalSteps) return rod;
     rod = coarser.rod;
   }
 }
@@ -115,10 +116,13 @@ ClampedRod global_rod(const detail::ComparisonRod& compared) {
 struct CoarseStage {
   detail::ComparisonRod compared;
   ClampedRod stage;
-  bool stage_is_compared = false;
   RodConfiguration work;  // integrate(compared.rod, w, Derivatives::None) when `holds`
   Vector6d w = Vector6d::Zero();
   bool holds = false;
+
+  bool stage_is_compared() const {
+    return stage.intervals == compared.rod.intervals && stage.substeps == compared.rod.substeps;
+  }
 };
 
 /// The shooting residual as Eigen's Levenberg–Marquardt sees it. Every evaluation integrates with
@@ -207,7 +211,7 @@ class ShootingProblem : public Eigen::DenseFunctor<double> {
   /// The residual at w of the coarse stage's rod (CoarseStage), without derivatives.
   const Vector6d& coarse_residual(const Vector6d& w) {
     integrate(coarse_->stage, Wrench::from_vector(w), coarse_->work, Derivatives::None);
-    coarse_->w = w, coarse_->holds = coarse_->stage_is_compared;
+    coarse_->w = w, coarse_->holds = coarse_->stage_is_compared();
     residual_ = shooting_residual(tip_, coarse_->work);
     has_cache_ = false;
     ++integrations_;
@@ -387,6 +391,45 @@ std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w)
 /// On the coarse stage's rod (a `rod_problem` given) the coarse residual is never the answer and a
 /// stall is not the rod's: it returns false where the endgame fails at the coarse rod's root or
 /// the coarse iteration stalls. Each call has max_iterations.
+/// Eigen's Levenberg–Marquardt set up for the shooting problem: it stops on our criterion only
+/// (||r||_∞ ≤ residual_tolerance, so its own tolerances are 0), and its trust region is measured in
+/// bending units of the unknown (forces in EI/L², moments in EI/L), starting at one such unit.
+/// Column-norm scaling (MINPACK's default) lets the first step from a straight rod jump to an axial
+/// force of order EA/L, because shortening by bending is of second order; the physical scale keeps
+/// it to the bending forces that actually move the tip.
+void configure(Eigen::LevenbergMarquardt<ShootingProblem>& lm,
+               const ClampedRod& rod,
+               const ShootingOptions& options) {
+  lm.setFtol(0.0);
+  lm.setXtol(0.0);
+  lm.setGtol(0.0);
+  lm.setMaxfev(20 * options.max_iterations);
+  lm.setExternalScaling(true);
+  lm.diag() = rod.properties.bending_wrench_units().cwiseInverse();
+  lm.setFactor(1.0);
+}
+
+/// Where no Levenberg–Marquardt step reduces |r| any more at x: converged when ||r||_∞ is within
+/// the tolerance there (B the Jacobian at x), else a local minimum of |r|² with r ≠ 0, where
+/// Jᵀr = 0, so the Jacobian is singular (or the problem has no solution near the guess).
+bool stalled(ShootingProblem& problem,
+             const ShootingOptions& options,
+             const Eigen::VectorXd& x,
+             Matrix6d& B,
+             ShootingSummary& result) {
+  result.residual_norm = problem.residual_at(x).lpNorm<Eigen::Infinity>();
+  if (result.residual_norm <= options.residual_tolerance) {
+    B = problem.snapshot().J;
+    result.status = SolveStatus::Converged;
+    result.message = "converged";
+    return true;
+  }
+  result.status = SolveStatus::Singular;
+  result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
+                   ": the Jacobian is singular there, no step reduces the residual";
+  return false;
+}
+
 bool levenberg_marquardt(ShootingProblem& problem,
                          ShootingProblem* rod_problem,
                          const ClampedRod& rod,
@@ -396,19 +439,7 @@ bool levenberg_marquardt(ShootingProblem& problem,
                          std::optional<Vector6d>* euler,
                          ShootingSummary& result) {
   Eigen::LevenbergMarquardt<ShootingProblem> lm(problem);
-  // Stop on our criterion only: ||r||_∞ ≤ residual_tolerance.
-  lm.setFtol(0.0);
-  lm.setXtol(0.0);
-  lm.setGtol(0.0);
-  lm.setMaxfev(20 * options.max_iterations);
-  // The trust region is measured in bending units of the unknown: forces in EI/L², moments in EI/L,
-  // and starts at one such unit. Column-norm scaling (MINPACK's default) lets the first step from a
-  // straight rod jump to an axial force of order EA/L, because shortening by bending is of second
-  // order; the physical scale keeps it to the bending forces that actually move the tip.
-  lm.setExternalScaling(true);
-  lm.diag() = rod.properties.bending_wrench_units().cwiseInverse();
-  lm.setFactor(1.0);
-
+  configure(lm, rod, options);
   const bool coarse = rod_problem != nullptr;
   const Vector6d guess = x;
   auto lm_status = lm.minimizeInit(x);
@@ -454,21 +485,7 @@ bool levenberg_marquardt(ShootingProblem& problem,
       result.message = "too many rejected steps";
       return false;
     }
-    if (lm_status != Status::Running) {
-      if (coarse) return false;
-      // No step reduces |r| any more while r ≠ 0: a local minimum of |r|², where Jᵀr = 0, so the
-      // Jacobian is singular (or the problem has no solution near the guess).
-      const Vector6d& r_end = problem.residual_at(x);
-      result.residual_norm = r_end.lpNorm<Eigen::Infinity>();
-      if (result.residual_norm <= options.residual_tolerance) {
-        B = problem.snapshot().J;
-        return converged();
-      }
-      result.status = SolveStatus::Singular;
-      result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
-                       ": the Jacobian is singular there, no step reduces the residual";
-      return false;
-    }
+    if (lm_status != Status::Running) return !coarse && stalled(problem, options, x, B, result);
   }
 }
 
@@ -522,7 +539,7 @@ ShootingSummary solve_direct(const ClampedRod& rod,
   // A solve of its own (not a continuation substep, whose first evaluation gives the next
   // substep's predictor) runs its global phase on the coarse stage's rod when that has the steps
   // for it (global_rod()).
-  if (coarse && !secant && coarse->stage.intervals * coarse->stage.substeps >= kMinGlobalSteps)
+  if (coarse && !secant && rk4_steps(coarse->stage) >= kMinGlobalSteps)
     converged = coarse_phase(problem, rod, tip, options, *coarse, w, B, result);
   if (!converged) {
     Eigen::VectorXd x = w;
@@ -699,8 +716,6 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
     detail::ComparisonRod compared = detail::comparison_rod(rod);
     if (compared.coarse) {
       coarse.emplace().stage = global_rod(compared);
-      coarse->stage_is_compared = coarse->stage.intervals == compared.rod.intervals &&
-                                  coarse->stage.substeps == compared.rod.substeps;
       coarse->compared = std::move(compared);
     }
   }
