@@ -198,8 +198,12 @@ TEST(RandomSweep, ConvergedMeansFiniteAndAccurateAndNothingIsUnbounded) {
   }
   std::cout << "random sweep (seed " << seed << "): " << count << " solves, " << converged
             << " converged, " << input_errors << " input errors\n";
-  // Most draws are solvable: a sweep where nothing converges tests nothing.
-  EXPECT_GT(converged, count / 4);
+  // A sweep where nothing converges tests nothing. About a third of the draws converge (3186 of
+  // 10⁴ with seed 1; the rest ask for the impossible on purpose: wrenches far beyond what bends the
+  // rod, tips beyond its length): a binomial count with p = 0.32 has its mean 0.32 n and standard
+  // deviation √(0.22 n), so n/8 lies more than 4 σ below the mean for every n ≥ 100 (5.9 σ at
+  // 200), and a seed does not fail it by chance as n/4 did (49 of 200, seed 2).
+  EXPECT_GT(converged, count / 8);
 }
 
 }  // namespace
