@@ -7,30 +7,28 @@
 
 namespace rodshape::feedback_detail {
 
-namespace {
-
-/// nanoflann's view of the nodes p_i.
-struct NodeCloud {
-  const RodConfiguration& c;
-  std::size_t kdtree_get_point_count() const { return c.p.size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t dim) const {
-    return c.p[i](static_cast<Eigen::Index>(dim));
-  }
-  template <class BoundingBox>
-  bool kdtree_get_bbox(BoundingBox& /*box*/) const {
-    return false;  // let nanoflann compute it
-  }
-};
-
-using NodeTree =
-    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, NodeCloud>,
-                                        NodeCloud,
-                                        3,
-                                        std::size_t>;
-
-}  // namespace
-
+/// The k-d tree over the nodes. Its types are its own members rather than a file's anonymous
+/// namespace: Tree has external linkage, and a field of an anonymous type in it is GCC's
+/// -Wsubobject-linkage wherever this file is not the main one (a unity batch).
 struct CentrelineIndex::Tree {
+  /// nanoflann's view of the nodes p_i.
+  struct NodeCloud {
+    const RodConfiguration& c;
+    std::size_t kdtree_get_point_count() const { return c.p.size(); }
+    double kdtree_get_pt(std::size_t i, std::size_t dim) const {
+      return c.p[i](static_cast<Eigen::Index>(dim));
+    }
+    template <class BoundingBox>
+    bool kdtree_get_bbox(BoundingBox& /*box*/) const {
+      return false;  // let nanoflann compute it
+    }
+  };
+  using NodeTree =
+      nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, NodeCloud>,
+                                          NodeCloud,
+                                          3,
+                                          std::size_t>;
+
   explicit Tree(const RodConfiguration& c)
       : nodes{c}, index(3, nodes, nanoflann::KDTreeSingleIndexAdaptorParams(8)) {
     index.buildIndex();

@@ -384,13 +384,6 @@ std::optional<Vector6d> euler_point(ShootingProblem& problem, const Vector6d& w)
   return Vector6d(w - lu.solve(at_guess.r));
 }
 
-/// Levenberg–Marquardt on `problem` from x (in: guess, out: last iterate), with the chord endgame
-/// on `rod_problem` (chord_endgame(); the same problem when null). Returns whether it converged,
-/// with B the Jacobian estimate at the root; the status says why not. `euler`, when given,
-/// receives Euler's point from the first evaluation unless it holds one already (euler_point()).
-/// On the coarse stage's rod (a `rod_problem` given) the coarse residual is never the answer and a
-/// stall is not the rod's: it returns false where the endgame fails at the coarse rod's root or
-/// the coarse iteration stalls. Each call has max_iterations.
 /// Eigen's Levenberg–Marquardt set up for the shooting problem: it stops on our criterion only
 /// (||r||_∞ ≤ residual_tolerance, so its own tolerances are 0), and its trust region is measured in
 /// bending units of the unknown (forces in EI/L², moments in EI/L), starting at one such unit.
@@ -409,6 +402,13 @@ void configure(Eigen::LevenbergMarquardt<ShootingProblem>& lm,
   lm.setFactor(1.0);
 }
 
+/// Sets the verdict "converged"; returns true.
+bool converged_verdict(ShootingSummary& result) {
+  result.status = SolveStatus::Converged;
+  result.message = "converged";
+  return true;
+}
+
 /// Where no Levenberg–Marquardt step reduces |r| any more at x: converged when ||r||_∞ is within
 /// the tolerance there (B the Jacobian at x), else a local minimum of |r|² with r ≠ 0, where
 /// Jᵀr = 0, so the Jacobian is singular (or the problem has no solution near the guess).
@@ -420,9 +420,7 @@ bool stalled(ShootingProblem& problem,
   result.residual_norm = problem.residual_at(x).lpNorm<Eigen::Infinity>();
   if (result.residual_norm <= options.residual_tolerance) {
     B = problem.snapshot().J;
-    result.status = SolveStatus::Converged;
-    result.message = "converged";
-    return true;
+    return converged_verdict(result);
   }
   result.status = SolveStatus::Singular;
   result.message = "stalled at |r| = " + detail::format_value(result.residual_norm) +
@@ -430,6 +428,13 @@ bool stalled(ShootingProblem& problem,
   return false;
 }
 
+/// Levenberg–Marquardt on `problem` from x (in: guess, out: last iterate), with the chord endgame
+/// on `rod_problem` (chord_endgame(); the same problem when null). Returns whether it converged,
+/// with B the Jacobian estimate at the root; the status says why not. `euler`, when given,
+/// receives Euler's point from the first evaluation unless it holds one already (euler_point()).
+/// On the coarse stage's rod (a `rod_problem` given) the coarse residual is never the answer and a
+/// stall is not the rod's: it returns false where the endgame fails at the coarse rod's root or
+/// the coarse iteration stalls. Each call has max_iterations.
 bool levenberg_marquardt(ShootingProblem& problem,
                          ShootingProblem* rod_problem,
                          const ClampedRod& rod,
@@ -446,18 +451,13 @@ bool levenberg_marquardt(ShootingProblem& problem,
   if (euler && !*euler) *euler = euler_point(problem, guess);
   bool tried_chord_here = false;
   int iterations = 0;  // this call's: each stage has max_iterations
-  const auto converged = [&] {
-    result.status = SolveStatus::Converged;
-    result.message = "converged";
-    return true;
-  };
   while (true) {
     const Vector6d& r = problem.residual_at(x);
     result.residual_norm =
         r.allFinite() ? r.lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
     if (!coarse && result.residual_norm <= options.residual_tolerance) {
       B = problem.snapshot().J;  // residual_at(x) integrated with derivatives at x
-      return converged();
+      return converged_verdict(result);
     }
     if (!x.allFinite()) {
       result.status = SolveStatus::Diverged;
@@ -466,7 +466,8 @@ bool levenberg_marquardt(ShootingProblem& problem,
     }
     if (!tried_chord_here && r.allFinite() && problem.scaled_norm(r) <= kChordThreshold) {
       tried_chord_here = true;
-      if (chord_endgame(problem, rod_problem, options, x, B, result)) return converged();
+      if (chord_endgame(problem, rod_problem, options, x, B, result))
+        return converged_verdict(result);
       if (coarse && result.residual_norm <= options.residual_tolerance) return false;
       continue;
     }
