@@ -1,5 +1,6 @@
 #include "converged_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -90,8 +91,17 @@ void confirm_converged(const ClampedRod& rod,
     }
     refined.substeps = next_substeps(refined.substeps, summary.integration_error,
                                      options.integration_tolerance, options.max_substeps);
+    // The re-solve starts from the equilibrium just found, which the finer steps move by about
+    // the error estimate: a direct solve, without the check (this loop is it) and without the
+    // continuation from rest, which would retrace the whole path at `substeps` times the cost and
+    // could end on another equilibrium than the one being checked (in the test suite and the
+    // examples, none of the 16 re-solves that fell back to it converged). Its iterations are
+    // bounded apart, as they cost `substeps` times a solve's (of 51,000 re-solves there, all
+    // but 4 of those that converged took at most 30; BENCHMARKS.md).
     ShootingOptions inner = options;
     inner.integration_tolerance = std::numeric_limits<double>::infinity();
+    inner.continuation = false;
+    inner.max_iterations = std::min(options.max_iterations, ShootingOptions::kRefinementIterations);
     ShootingResult again = solve_equilibrium(refined, tip, solution.base_wrench, inner);
     add_counts(summary, again.summary);
     summary.substeps = refined.substeps;

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <unsupported/Eigen/LevenbergMarquardt>
@@ -609,6 +610,10 @@ void continue_from_rest(const ClampedRod& rod,
   const Pose rest_tip = integrate(unloaded, BaseWrench{}).tip();
   FollowOptions follow;
   follow.shooting = options;
+  // The homotopy's intermediate equilibria are only stepping stones: their accuracy check (and its
+  // re-solves with up to max_substeps sub-steps at every step) would be the most of a failing
+  // solve's time. The equilibrium at σ = 1 is checked by solve_equilibrium as a direct solve's is.
+  follow.shooting.integration_tolerance = std::numeric_limits<double>::infinity();
   follow.adaptive = true;
   static_assert(ShootingOptions::kMaxContinuationSteps <= FollowOptions::kMaxSubsteps);
   follow.max_substeps = options.max_continuation_steps;
@@ -653,12 +658,14 @@ namespace {
 /// The two parts of estimated_failing_solve_seconds(): the iterations of a solve that does not
 /// converge, and the re-solves with more sub-steps that the accuracy check may ask for.
 double iterations_seconds(const ClampedRod& rod, const ShootingOptions& options) {
-  // 7 measured on the rod alone; the coarse stage's attempt (the direct solve's first stage, on
-  // at most half the steps) adds at most half an integration per iteration to the 7.
-  return 7.0 * options.max_iterations * static_cast<double>(rod.intervals) * 4.1e-7;
+  // At most 13.4 integrations with derivatives per allowed iteration measured (the direct solve
+  // and the continuation's attempts), 2.9e-7 s per interval each; 16 for a margin.
+  return 16.0 * options.max_iterations * static_cast<double>(rod.intervals) * 2.9e-7;
 }
 double substeps_seconds(const ClampedRod& rod, const ShootingOptions& options) {
-  return 1.2e-5 * options.max_substeps * static_cast<double>(rod.intervals);
+  // The check's re-solves at 2, 4, ... sub-steps, each at most kRefinementIterations iterations:
+  // 1.6e-5 s per interval and unit of max_substeps measured at worst; 2.0e-5 for a margin.
+  return 2.0e-5 * options.max_substeps * static_cast<double>(rod.intervals);
 }
 
 }  // namespace

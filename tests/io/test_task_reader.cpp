@@ -170,7 +170,7 @@ TEST(TaskReader, NodesTimesIterationsAndSubstepsBeyondTheirBoundIsRejectedWithTh
   EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n") +
                      "solver: {max_iterations: 1000, max_substeps: 128}\n"),
             "task.yaml:10: solver.max_iterations = 1000 with 100001 rod nodes: a solve could take "
-            "about 441 s (287 s to fail in solver.max_iterations = 1000, 154 s for "
+            "about 720 s (464 s to fail in solver.max_iterations = 1000, 256 s for "
             "solver.max_substeps = 128); at most 300 s (docs/limits.md): lower one of them");
   // Either alone is fine.
   EXPECT_EQ(error_of(band_with("  length: 0.29\n", "  length: 0.29\n  nodes: 100001\n")), "");

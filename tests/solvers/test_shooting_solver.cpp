@@ -25,6 +25,7 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/core/so3.hpp"
+#include "rodshape/solvers/integration_error.hpp"
 #include "rodshape/solvers/shooting_residual.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "support/analytic_rods.hpp"
@@ -434,6 +435,33 @@ TEST(ShootingSolverContinuation, HeldTipFarFromRestCosserat) {
   const ClampedTip tip{
       integrate(rod, Wrench::from_vector(xi.cwiseProduct(testing::wrench_scale(rod)))).tip()};
   expect_continuation_rescues(rod, tip);
+}
+
+// A free tip loaded with (10, 0, 10) N and (0, 10, 0) N·m at 1000 intervals: the direct solve fails
+// and the continuation from rest reaches the load, where the accuracy check asks for 2 sub-steps.
+// The check runs on the equilibrium at σ = 1 only: when every continuation step ran it (and its
+// re-solves with more sub-steps), the steps restarted from the re-solved wrenches and the last one
+// stopped at |r| = 3.5e-8 (status diverged, 268 integrations; 249 now).
+TEST(ShootingSolverContinuation, ChecksTheAccuracyOfTheLoadedEquilibriumOnly) {
+  const ClampedRod rod = testing::rubber_band(ConstitutiveModel::Cosserat, 1000);
+  const FreeTip tip{{Eigen::Vector3d(10.0, 0.0, 10.0), Eigen::Vector3d(0.0, 10.0, 0.0)}};
+  ShootingOptions options;
+  options.continuation = false;
+  const ShootingResult direct = solve_equilibrium(rod, tip, {}, options);
+  ASSERT_FALSE(direct.summary.converged()) << direct.summary.brief();
+
+  options.continuation = true;
+  const ShootingResult continued = solve_equilibrium(rod, tip, {}, options);
+  ASSERT_TRUE(continued.summary.converged()) << continued.summary.brief();
+  EXPECT_GT(continued.summary.continuation_steps, 0);
+  EXPECT_GT(continued.summary.substeps, 1);  // the check refined the loaded equilibrium
+  EXPECT_LE(continued.summary.residual_norm, kTau);
+  EXPECT_NEAR(continued.summary.residual_norm, recomputed_residual_norm(tip, continued),
+              16.0 * kEps);
+  ClampedRod solved = rod;
+  solved.substeps = continued.summary.substeps;
+  EXPECT_LE(integration_error_estimate(solved, continued.base_wrench, continued.configuration),
+            options.integration_tolerance);
 }
 
 // ---- statuses

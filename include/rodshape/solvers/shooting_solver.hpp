@@ -19,9 +19,11 @@ namespace rodshape {
 
 struct ShootingOptions {
   /// Upper bounds (docs/limits.md, "Sizes"): an iteration or a continuation step integrates the
-  /// rod with its derivatives (about 0.04 s at 100,001 nodes).
+  /// rod with its derivatives (about 0.03 s at 100,001 nodes).
   static constexpr int kMaxIterations = 10'000;
   static constexpr int kMaxContinuationSteps = 4096;
+  /// The most iterations of each re-solve that the accuracy check asks for (below).
+  static constexpr int kRefinementIterations = 30;
 
   int max_iterations = 100;  // Levenberg–Marquardt iterations (accepted steps) per solve and
                              // stage (the coarse stage's global phase, then the rod's own where
@@ -39,8 +41,9 @@ struct ShootingOptions {
   /// "Converged" also promises accuracy: the step-doubling estimate of the returned
   /// configuration's integration error (integration_error_estimate(): |Δp|/L, rad, |Δm|/(EI/L)) is
   /// at most this. Where it is not, each interval is crossed in more Runge–Kutta sub-steps
-  /// (powers of two, at most max_substeps) and the equilibrium solved again; past max_substeps the
-  /// status is DiscretisationTooCoarse. +inf turns the check off.
+  /// (powers of two, at most max_substeps) and the equilibrium solved again (a direct solve from
+  /// the last one, in at most min(max_iterations, kRefinementIterations) iterations); past
+  /// max_substeps the status is DiscretisationTooCoarse. +inf turns the check off.
   double integration_tolerance = 1e-6;
   int max_substeps = 64;  // 1 ≤ max_substeps ≤ ClampedRod::kMaxSubsteps
   /// Not used by the solver: what a held pose may ask of the model (check_model_validity()).
@@ -78,17 +81,16 @@ struct ShootingResult {
   std::string brief() const { return summary.brief(); }
 };
 
-/// The time a solve may take at worst, s, on the machine docs/limits.md was measured on, the sum
-/// of two parts measured on the band with 100,000 intervals and its tip loaded far beyond what
-/// converges:
-///  * failing: about 7 integrations with derivatives per allowed iteration (the direct solve and
-///    the continuation's stages each use them all), each 4.1e-7 s per interval:
-///    7 × max_iterations × intervals × 4.1e-7 s (100 iterations: 29 s measured and estimated,
-///    before the direct solve's coarse stage, whose attempt adds at most half an integration per
-///    iteration);
-///  * the accuracy check's re-solves with more sub-steps (the continuation's too): about
-///    1.2e-5 s × max_substeps × intervals (16: 19 s, 64: 74 s measured).
-/// A solve that converges takes a small part of it (1.3 s there).
+/// The time a solve may take at worst, s, on the machine docs/limits.md was measured on: the sum
+/// of two parts fitted to the slowest of 40 solves that fail or barely converge on the band with
+/// 100,000 intervals (free tips loaded up to 1e4 N and N·m, held tips out of reach):
+///  * the direct solve and the continuation's attempts: at most 13.4 integrations with
+///    derivatives per allowed iteration measured, each 2.9e-7 s per interval:
+///    16 × max_iterations × intervals × 2.9e-7 s (100 iterations: 39.5 s measured, 46 s estimated);
+///  * the accuracy check's re-solves with 2, 4, ... max_substeps sub-steps, each a direct solve of
+///    at most ShootingOptions::kRefinementIterations iterations: 2.0e-5 s × max_substeps ×
+///    intervals (64: 102 s measured, 128 s estimated).
+/// A solve that converges takes a small part of it (0.3–12 s there).
 double estimated_failing_solve_seconds(const ClampedRod& rod, const ShootingOptions& options);
 
 /// The most estimated_failing_solve_seconds() that solve_equilibrium() accepts: rod.intervals,
