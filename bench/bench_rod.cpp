@@ -289,6 +289,24 @@ void BM_SolveClampedClampedWarm(benchmark::State& state) {
   report(state, summary);
 }
 
+/// A solve that cannot converge: the free tip loaded with (1e4, 0, 1e4) N and (0, 1e4, 0) N·m at
+/// 1000 intervals, default options (the direct solve, then the continuation from rest until its
+/// steps fail): how long the solver takes to say no.
+void BM_SolveFreeTipFarBeyondConvergence(benchmark::State& state) {
+  const ClampedRod rod = rubber_band(static_cast<int>(state.range(0)));
+  const TipCondition tip = FreeTip{{{1e4, 0.0, 1e4}, {0.0, 1e4, 0.0}}};
+  ShootingOptions options;
+  options.output_derivatives = Derivatives::None;
+  ShootingSummary summary;
+  for (auto _ : state) {
+    const ShootingResult solution = solve_equilibrium(rod, tip, BaseWrench{}, options);
+    if (solution.summary.converged()) state.SkipWithError("the solve converged");
+    summary = solution.summary;
+  }
+  report(state, summary);
+  state.counters["continuation_steps"] = summary.continuation_steps;
+}
+
 BENCHMARK(BM_PlainRk4Kernel)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Forward)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ForwardWithDerivatives)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
@@ -298,5 +316,6 @@ BENCHMARK(BM_ForwardWithAllNodeDerivatives)->Arg(100)->Unit(benchmark::kMicrosec
 BENCHMARK(BM_BasePoseDerivatives)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolveClampedClampedCold)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SolveClampedClampedWarm)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SolveFreeTipFarBeyondConvergence)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
