@@ -611,8 +611,9 @@ void continue_from_rest(const ClampedRod& rod,
   FollowOptions follow;
   follow.shooting = options;
   // The homotopy's intermediate equilibria are only stepping stones: their accuracy check (and its
-  // re-solves with up to max_substeps sub-steps at every step) would be the most of a failing
-  // solve's time. The equilibrium at σ = 1 is checked by solve_equilibrium as a direct solve's is.
+  // re-solves with up to max_substeps sub-steps at every step) took most of a failing solve's
+  // time. The equilibrium at σ = 1 is checked by solve_equilibrium as a direct solve's is. (The
+  // check off also leaves out the coarse stage; with it these steps were slower: BENCHMARKS.md.)
   follow.shooting.integration_tolerance = std::numeric_limits<double>::infinity();
   follow.adaptive = true;
   static_assert(ShootingOptions::kMaxContinuationSteps <= FollowOptions::kMaxSubsteps);
@@ -655,16 +656,12 @@ void take_as_output(RodConfiguration& work, Derivatives derivatives, RodConfigur
 
 namespace {
 
-/// The two parts of estimated_failing_solve_seconds(): the iterations of a solve that does not
-/// converge, and the re-solves with more sub-steps that the accuracy check may ask for.
+/// The two parts of estimated_failing_solve_seconds() (its comment has the measurements): the
+/// iterations of a solve that does not converge, and the accuracy check's re-solves.
 double iterations_seconds(const ClampedRod& rod, const ShootingOptions& options) {
-  // At most 13.4 integrations with derivatives per allowed iteration measured (the direct solve
-  // and the continuation's attempts), 2.9e-7 s per interval each; 16 for a margin.
   return 16.0 * options.max_iterations * static_cast<double>(rod.intervals) * 2.9e-7;
 }
 double substeps_seconds(const ClampedRod& rod, const ShootingOptions& options) {
-  // The check's re-solves at 2, 4, ... sub-steps, each at most kRefinementIterations iterations:
-  // 1.6e-5 s per interval and unit of max_substeps measured at worst; 2.0e-5 for a margin.
   return 2.0e-5 * options.max_substeps * static_cast<double>(rod.intervals);
 }
 

@@ -202,9 +202,9 @@ TEST(RandomSweep, ConvergedMeansFiniteAndAccurateAndNothingIsUnbounded) {
   // A sweep where nothing converges tests nothing. About a third of the draws converge (3511 of
   // 10⁴ with seed 1, 3186 when every continuation step ran the accuracy check; the rest ask for
   // the impossible on purpose: wrenches far beyond what bends the rod, tips beyond its length): a
-  // binomial count with p = 0.32 has its mean 0.32 n and standard deviation √(0.22 n), so n/8 lies
-  // more than 4 σ below the mean for every n ≥ 100 (5.9 σ at 200), and a seed does not fail it by
-  // chance as n/4 did (49 of 200, seed 2).
+  // binomial count with p = 0.35 has its mean 0.35 n and standard deviation √(0.23 n), so n/8 lies
+  // more than 4 σ below the mean for every n ≥ 100 (6.7 σ at 200), and a seed does not fail it by
+  // chance as n/4 did (49 of 200, seed 2, at a rate of 0.32).
   EXPECT_GT(converged, count / 8);
 }
 
