@@ -265,6 +265,10 @@ std::string plan_result_json(const PlanResult& plan, const PlanTask& task) {
   result["target"] = target_object(request.target);
   result["feasibility"] = feasibility_object(plan.feasibility, task.problem.target.points);
   result["final"] = final_object(plan);
+  result["reach"] = {
+      {"target_distance", json_number(plan.target_distance)},
+      {"target_point", plan.target_point >= 0 ? Json(plan.target_point) : Json(nullptr)},
+      {"tolerance", json_number(plan.reach_tolerance)}};
   result["initial"] =
       plan.initial_configuration.nodes() > 0
           ? io_detail::configuration_json(plan.initial_configuration, plan.initial_wrench,

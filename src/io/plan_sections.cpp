@@ -201,7 +201,7 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
   trajectory.expect_mapping(
       {"steps", "max_linear_speed", "max_angular_speed", "max_linear_acceleration",
        "max_angular_acceleration", "rate", "track", "tracking_substeps", "max_refinements",
-       "interpolation", "base_end_effector"},
+       "interpolation", "base_end_effector", "reach_tolerance"},
       {{"n_inter", "the number of intermediate steps is trajectory.steps"},
        {"base_max_linear_speed",
         "the base gripper's limits are trajectory.base_end_effector.max_linear_speed etc."}});
@@ -223,6 +223,8 @@ void read_trajectory_section(const YamlField& trajectory, PlanOptions& options) 
                PlanOptions::kMaxRefinements);
   if (const YamlField interpolation = trajectory.get("interpolation"); interpolation.present())
     options.interpolation = read_interpolation(interpolation);
+  if (const YamlField reach = trajectory.get("reach_tolerance"); reach.present())
+    options.reach_tolerance = reach.positive_number();
 
   // The base gripper: the tip's limits (one clock, one sample rate), with its own keys over them.
   options.base_end_effector = options.end_effector;

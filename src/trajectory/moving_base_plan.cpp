@@ -277,6 +277,7 @@ PlanResult plan_moving_base(const PlanProblem& problem,
     result.message =
         "complete: " + std::to_string(result.steps.size()) + " steps, the base moving with the tip";
   plan_stages::settle_status(result);
+  plan_stages::settle_reach(result, problem, options);
   time_both_ends(problem, options, initial.configuration, result);
   result.interpolation.tried = {{result.interpolation.used, result.status,
                                  plan_stages::peak_ratio(result),

@@ -3,6 +3,7 @@
 #include "rodshape/trajectory/plan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -22,6 +23,19 @@
 
 namespace rodshape {
 
+namespace {
+
+/// A gripper that transmits no component of the wrench does not hold the rod: nothing it does
+/// moves the rod (a plan of a 0 s path that ends where it began).
+void require_holds(const std::string& field, const std::array<bool, 6>& released) {
+  if (std::all_of(released.begin(), released.end(), [](bool r) { return r; }))
+    throw InputError(field,
+                     " releases all six components of the wrench: the gripper would not "
+                     "hold the rod (keep at least one held)");
+}
+
+}  // namespace
+
 void PlanOptions::validate() const {
   detail::require_count("PlanOptions.steps", steps, 1, kMaxSteps);
   detail::require_count("PlanOptions.horizon", horizon, 0, steps);
@@ -38,6 +52,7 @@ void PlanOptions::validate() const {
                      " = " + detail::format_value(scene_margin) +
                          " must be <= " + detail::format_value(kMaxSceneMargin));
   detail::require_positive("PlanOptions.scene_reach", scene_reach);
+  if (reach_tolerance) detail::require_positive("PlanOptions.reach_tolerance", *reach_tolerance);
 }
 
 void PlanProblem::validate() const {
@@ -55,6 +70,7 @@ void PlanProblem::validate() const {
   }
   scene.validate();
   scene.check_clamp(rod.clamp.position);
+  require_holds("Grasp.released", grasp.released);
   if (moving_base) moving_base->validate();
   if (base_arm && !moving_base)
     throw InputError("PlanProblem.base_arm",
@@ -63,6 +79,7 @@ void PlanProblem::validate() const {
 
 void MovingBase::validate() const {
   workspace.validate();
+  require_holds("PlanProblem.moving_base.grasp.released", grasp.released);
   detail::require_non_negative("PlanProblem.moving_base.motion_weight", motion_weight);
   detail::require_pose("PlanProblem.moving_base.grasp.tip_to_end_effector",
                        grasp.tip_to_end_effector);
@@ -116,11 +133,10 @@ std::string PlanResult::brief(int steps_requested) const {
   if (tracking.refinements > 0)
     out << ", " << tracking.refinements << " inserted where the rod would jump";
   out << ")";
-  if (completed > 0) {
-    const ShapeCostBreakdown& cost = steps.back().solution.cost;
-    out << ", final max distance " << std::setprecision(3) << cost.max_distance * 1e3
-        << " mm, energy " << std::setprecision(3) << cost.energy << " J";
-  }
+  if (std::isfinite(target_distance))  // to the target, not to the last set reached
+    out << ", final max distance " << std::setprecision(3) << target_distance * 1e3 << " mm";
+  if (completed > 0)
+    out << ", energy " << std::setprecision(3) << steps.back().solution.cost.energy << " J";
   if (tracking.performed) {
     out << "; tracked peak energy " << std::setprecision(3) << tracking.peak_energy << " J";
     if (completed > 0) {
@@ -473,6 +489,7 @@ PlanResult plan_by_sets(const PlanProblem& problem,
   if (plan_steps(problem, options, loop, result))
     result.message = "complete: " + std::to_string(result.steps.size()) + " steps";
   plan_stages::settle_status(result);
+  plan_stages::settle_reach(result, problem, options);
   if (result.status == PlanStatus::Partial || result.status == PlanStatus::SnapThrough)
     result.message += plan_stages::behind_clamp_note(problem);  // why, for a target behind it
   // 7. The timed end-effector path through the waypoints.
@@ -585,6 +602,7 @@ PlanResult plan_by_pose(const PlanProblem& problem,
     return failed;
   }
   result->interpolation.used = ObjectiveInterpolation::Pose;
+  plan_stages::settle_reach(*result, problem, options);
   return std::move(*result);
 }
 
@@ -652,6 +670,7 @@ PlanResult plan_by_search(const PlanProblem& problem,
         "snaps on the way or arrives elsewhere (the path passes where the "
         "equilibrium's branch divides)";
   }
+  plan_stages::settle_reach(result, problem, options);
   return result;
 }
 
@@ -712,9 +731,11 @@ PlanResult gentlest_plan(const PlanProblem& problem,
 
 }  // namespace
 
-PlanResult plan_rod(const PlanProblem& problem,
-                    const PlanOptions& options,
-                    const plan_stages::InitialEquilibrium& initial) {
+namespace {
+
+PlanResult plan_by_scheme(const PlanProblem& problem,
+                          const PlanOptions& options,
+                          const plan_stages::InitialEquilibrium& initial) {
   if (problem.base_moves()) return plan_moving_base(problem, options, initial);
   switch (options.interpolation) {
     case ObjectiveInterpolation::Auto:
@@ -735,6 +756,16 @@ PlanResult plan_rod(const PlanProblem& problem,
       return result;
     }
   }
+}
+
+}  // namespace
+
+PlanResult plan_rod(const PlanProblem& problem,
+                    const PlanOptions& options,
+                    const plan_stages::InitialEquilibrium& initial) {
+  PlanResult result = plan_by_scheme(problem, options, initial);
+  plan_stages::settle_reach(result, problem, options);  // the failed schemes' distance too
+  return result;
 }
 
 }  // namespace detail
@@ -783,6 +814,11 @@ PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
                      " = " + to_string(options.interpolation) +
                          " follows the tip alone: with a moving base use shape, arc_length, "
                          "projection or auto (which is shape there)");
+  if (options.reach_tolerance && *options.reach_tolerance > problem.rod.properties.length)
+    throw InputError("PlanOptions.reach_tolerance",
+                     " = " + detail::format_value(*options.reach_tolerance) +
+                         " m must be at most the rod's length, " +
+                         detail::format_value(problem.rod.properties.length) + " m");
   check_plan_cost(problem, options);
   PlanResult result =
       problem.arm || problem.base_arm

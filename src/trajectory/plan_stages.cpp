@@ -8,6 +8,7 @@
 
 #include "rodshape/core/rod_integrator.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/optimisation/curve_distance.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
 #include "rodshape/solvers/model_validity.hpp"
 #include "rodshape/solvers/rod_reach.hpp"
@@ -266,7 +267,8 @@ SegmentTracking track_segment(const PlanProblem& problem,
     out << "on the way to waypoint " << waypoint << " the rod comes within " << least->gap * 1e3
         << " mm of obstacle " << obstacle.label(least->obstacle)
         << " at s = " << (least->segment + least->t) * problem.rod.step() << " m (required "
-        << (least->gap - least->margin) * 1e3 << " mm)";
+        << (least->gap - least->margin) * 1e3 << " mm, " << -least->margin * 1e3
+        << " mm nearer than that)";
     segment.note = out.str();
   }
   return segment;
@@ -317,7 +319,7 @@ void start_scene(const PlanProblem& problem,
     out.precision(3);
     out << ": the initial rod comes within " << gap.gap * 1e3 << " mm of obstacle "
         << result.scene->obstacle_label << " at s = " << result.scene->s << " m (required "
-        << (gap.gap - gap.margin) * 1e3 << " mm)";
+        << (gap.gap - gap.margin) * 1e3 << " mm, " << -gap.margin * 1e3 << " mm nearer than that)";
     throw InputError("PlanProblem.initial", out.str());
   }
 }
@@ -365,6 +367,35 @@ void settle_status(PlanResult& result) {
     result.status = PlanStatus::Collision;
     result.message = "the rod would not stay clear of the scene: " + result.scene->note;
   }
+}
+
+void settle_reach(PlanResult& result, const PlanProblem& problem, const PlanOptions& options) {
+  const RodConfiguration& final_shape = result.steps.empty()
+                                            ? result.initial_configuration
+                                            : result.steps.back().solution.configuration;
+  result.reach_tolerance = options.reach_tolerance_for(problem.rod.properties.length);
+  result.target_distance = 0.0;
+  result.target_point = -1;
+  if (final_shape.p.empty()) return;  // no initial equilibrium (an input error before any step)
+  std::vector<IntervalBall> balls;
+  interval_balls(final_shape, balls);
+  for (std::size_t k = 0; k < problem.target.points.size(); ++k) {
+    const double d = project_onto_curve(final_shape, problem.target.points[k], balls).distance;
+    if (d > result.target_distance || result.target_point < 0) {
+      result.target_distance = d;
+      result.target_point = static_cast<int>(k);
+    }
+  }
+  if (result.status != PlanStatus::Complete || result.horizon > 0 ||
+      !(result.target_distance > result.reach_tolerance))
+    return;
+  std::ostringstream out;
+  out.precision(3);
+  out << "every step succeeded (" << result.steps.size() << "), but the final shape passes "
+      << result.target_distance * 1e3 << " mm from target point " << result.target_point
+      << ", beyond the reach tolerance of " << result.reach_tolerance * 1e3 << " mm";
+  result.status = PlanStatus::Partial;
+  result.message = out.str();
 }
 
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,

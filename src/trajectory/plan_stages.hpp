@@ -152,6 +152,10 @@ ShapeResult solve_in_scene_rounds(const PlanProblem& problem,
 /// After the steps: the tracking's note, and Complete turned into SnapThrough when the tracked rod
 /// jumped, into Collision when it came too near the scene.
 void settle_status(PlanResult& result);
+/// The final shape's distance to the target (PlanResult::target_distance, target_point,
+/// reach_tolerance), and Complete turned into Partial, with the distance, where it exceeds the
+/// reach tolerance (not with a horizon: that plan ends short of the target on purpose).
+void settle_reach(PlanResult& result, const PlanProblem& problem, const PlanOptions& options);
 /// 7. The timed end-effector path from the initial pose through every step's waypoint.
 std::vector<TimedPose> time_waypoints(const Pose& initial_end_effector,
                                       const std::vector<PlanStep>& steps,

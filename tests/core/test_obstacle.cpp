@@ -216,6 +216,79 @@ TEST(Scene, TheSweptGapBoundsTheGapAlongTheWayFromBelow) {
   }
 }
 
+// A clamp mounted on an obstacle of any shape (on its surface, or nearer than the rod's radius):
+// the rod swings about the clamp, leaving it outwards. The gap at the clamp cannot change, so the
+// swept bound must not fall below the mount's own gap (the first segment's Lipschitz bound did,
+// by half its free node's step: a false collision on every mounted clamp), and it still bounds
+// the gap along the way from below (the 200-sample oracle).
+TEST(Scene, AClampMountedOnAnyShapeStaysClearAsTheRodSwingsAboutIt) {
+  const Eigen::Matrix3d turned =
+      Eigen::AngleAxisd(0.4, Vector3d(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
+  struct Mount {
+    Obstacle obstacle;
+    Vector3d surface;  // a point on its surface
+    Vector3d normal;   // the outward normal there
+  };
+  const std::vector<Mount> mounts = {
+      {{"ball", SphereObstacle{{0.0, 0.0, -0.05}, 0.05}}, {0.0, 0.0, 0.0}, Vector3d::UnitZ()},
+      {{"crate", BoxObstacle{{0.0, 0.0, -0.02}, {0.1, 0.1, 0.04}, turned}},
+       turned * Vector3d(0.01, -0.02, 0.02) + Vector3d(0.0, 0.0, -0.02),
+       turned * Vector3d::UnitZ()},
+      {{"rail", CapsuleObstacle{{-0.1, 0.0, -0.01}, {0.1, 0.0, -0.01}, 0.01}},
+       {0.02, 0.0, 0.0},
+       Vector3d::UnitZ()},
+      {{"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.0}}, {0.0, 0.0, 0.0}, Vector3d::UnitZ()}};
+  for (const Mount& mount : mounts) {
+    for (const double height : {0.0, 0.001}) {  // on the surface; 1 mm above it (radius 2 mm)
+      rodshape::Scene scene;
+      scene.clearance = 0.005;
+      scene.rod_radius = 0.002;
+      scene.obstacles = {mount.obstacle};
+      const Vector3d clamp = mount.surface + height * mount.normal;
+      const std::vector<double> required = scene.required_gaps(clamp);
+      ASSERT_NEAR(required[0], height - scene.rod_radius, 1e-12) << mount.obstacle.name;
+      const Vector3d side = mount.normal.unitOrthogonal();
+      const auto rod_at = [&](double angle) {  // 20 intervals over 0.2 m, turned about the clamp
+        const Vector3d e = std::cos(angle) * mount.normal + std::sin(angle) * side;
+        std::vector<Vector3d> nodes;
+        for (int i = 0; i <= 20; ++i) nodes.push_back(clamp + 0.01 * i * e);
+        return nodes;
+      };
+      for (const double step : {1e-5, 1e-3, 0.05}) {  // radians per substep
+        const std::vector<Vector3d> from = rod_at(0.3), to = rod_at(0.3 + step);
+        const rodshape::SceneGap swept = scene.swept_gap(from, to, required);
+        EXPECT_TRUE(swept.clear()) << mount.obstacle.name << " at " << height << " m, step " << step
+                                   << ": margin " << swept.margin;
+        double least = std::numeric_limits<double>::infinity();
+        for (int k = 0; k <= 200; ++k)
+          least = std::min(least, scene.least_gap(rod_at(0.3 + step * k / 200.0), required).margin);
+        EXPECT_LE(swept.margin, least) << mount.obstacle.name;
+      }
+    }
+  }
+}
+
+// The refinement does not hide a motion that does pass through an obstacle: a rod swept across
+// a ball between two places clear of it.
+TEST(Scene, TheSweptGapStillFindsAMotionThroughAnObstacle) {
+  rodshape::Scene scene;
+  scene.clearance = 0.005;
+  scene.rod_radius = 0.002;
+  scene.obstacles = {{"ball", SphereObstacle{{0.1, 0.0, 0.0}, 0.01}}};
+  const std::vector<double> required(1, scene.clearance);
+  std::vector<Vector3d> from, to;
+  for (int i = 0; i <= 20; ++i) {
+    from.emplace_back(0.01 * i, -0.05, 0.0);
+    to.emplace_back(0.01 * i, 0.05, 0.0);
+  }
+  ASSERT_TRUE(scene.least_gap(from, required).clear());
+  ASSERT_TRUE(scene.least_gap(to, required).clear());
+  const rodshape::SceneGap swept = scene.swept_gap(from, to, required);
+  EXPECT_FALSE(swept.clear());
+  EXPECT_LE(swept.gap, -0.01 - scene.rod_radius + 1e-12);  // at least as deep as the centre passes
+  EXPECT_EQ(swept.segment == 9 || swept.segment == 10, true);
+}
+
 TEST(Scene, BadObstaclesNameTheirField) {
   using rodshape::testing::input_error_message;
   rodshape::Scene scene;

@@ -3,10 +3,13 @@
 // followed along every sample of the timed end-effector path (the rate's step, not the planner's
 // tracking substeps), whose least gap to every obstacle must stay at or above the clearance.
 // Targets inside an obstacle are infeasible; a clamp inside one, or a scene without tracking, is
-// bad input; a way the planner cannot get past ends in the status Collision.
+// bad input; a way the planner cannot get past ends in the status Collision; a clamp mounted on an
+// obstacle of any shape plans clear of it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/follow_equilibrium.hpp"
@@ -42,6 +45,29 @@ TEST(ScenePlan, TheBundledPostIsPassedByADetourAndAnIndependentReplayStaysClear)
   EXPECT_LT(check.followed.arrival_deviation, 1e-3);
   EXPECT_GE(check.least.gap, task.problem.scene.clearance - SceneResult::kTolerance)
       << "segment " << check.least.segment << " of obstacle " << check.least.obstacle;
+}
+
+// A clamp mounted on an obstacle of each shape (the band stands on it, along its outward normal):
+// the plan completes and stays clear of the mount (it ended in a false collision, the first
+// segment's swept bound half a node step below the mount's own gap).
+TEST(ScenePlan, ABandClampedOnAnObstacleOfEveryShapePlansClearOfItsMount) {
+  const std::vector<Obstacle> mounts = {
+      {"table", HalfSpaceObstacle{{0.0, 0.0, -1.0}, 0.0}},
+      {"block", BoxObstacle{{0.0, 0.0, -0.05}, {0.4, 0.4, 0.1}, Eigen::Matrix3d::Identity()}},
+      {"knob", SphereObstacle{{0.0, 0.0, -0.03}, 0.03}},
+      {"rail", CapsuleObstacle{{0.0, -0.1, -0.02}, {0.0, 0.1, -0.02}, 0.02}}};
+  for (const Obstacle& mount : mounts) {
+    PlanTask task = read_plan_task(kExamples + "plan_s_curve.yaml");
+    task.problem.scene.clearance = 0.005;
+    task.problem.scene.rod_radius = 0.5 * std::sqrt(2.0) * 0.02;  // the 2 cm square's
+    task.problem.scene.obstacles = {mount};
+    const PlanResult plan = rodshape::plan(task.problem, task.options);
+    EXPECT_EQ(plan.status, PlanStatus::Complete) << mount.name << ": " << plan.message;
+    ASSERT_TRUE(plan.scene.has_value());
+    EXPECT_TRUE(plan.scene->clear()) << mount.name << ": margin " << plan.scene->margin;
+    // The mount's own gap: the clamp on the surface, the rod's surface a radius into it.
+    EXPECT_NEAR(plan.scene->min_gap, -task.problem.scene.rod_radius, 1e-9) << mount.name;
+  }
 }
 
 TEST(ScenePlan, ATargetPointInsideAnObstacleIsInfeasibleAndNamed) {

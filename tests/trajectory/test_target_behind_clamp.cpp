@@ -37,13 +37,15 @@ TEST(TargetBehindClamp, APlanStraightBelowTheClampSaysWhyItStops) {
   const PlanProblem problem = band_towards({{0.0, 0.0, -0.05}, {0.0, 0.0, -0.1}});
   PlanOptions options;
   options.steps = 7;
-  // auto tries pose, projection and search too; projection "completes" with the rod left
-  // straight, 10 cm off the points, and is not taken for a plan of this target; search has no
-  // optimum to go to.
+  // auto tries pose, projection and search too; projection's steps all succeed with the rod left
+  // straight, 10 cm off the points: partial, beyond the reach tolerance; search has no optimum to
+  // go to.
   const PlanResult result = plan(problem, options);
   EXPECT_NE(result.status, PlanStatus::Complete);
   ASSERT_EQ(result.interpolation.tried.size(), 4u);
-  EXPECT_NE(result.interpolation.tried[2].note.find("farther from the target"), std::string::npos);
+  EXPECT_EQ(result.interpolation.tried[2].status, PlanStatus::Partial);
+  EXPECT_NE(result.interpolation.tried[2].note.find("beyond the reach tolerance"), std::string::npos)
+      << result.interpolation.tried[2].note;
   EXPECT_EQ(result.interpolation.tried[3].scheme, ObjectiveInterpolation::Search);
   EXPECT_NE(result.interpolation.tried[3].status, PlanStatus::Complete);
   EXPECT_NE(result.message.find("ShapeTarget.points[0] lies 180 degrees from the rod's direction "

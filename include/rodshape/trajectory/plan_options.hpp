@@ -3,6 +3,7 @@
 // only when the problem has an arm) the reach shell and the re-plans.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "rodshape/optimisation/shape_optimiser.hpp"
@@ -116,6 +117,17 @@ struct PlanOptions {
   /// through an obstacle (detour_search.hpp); false: such a plan ends in the status Collision.
   bool scene_detour = true;
   ArmPlanOptions arm;  // used when the problem has an arm
+  /// Complete means the final shape passes within this distance of every target point (m, > 0,
+  /// at most the rod's length); absent: kDefaultReachFraction of the rod's length, the distance
+  /// beyond which the planner already takes an optimum to be off the points (plan.cpp,
+  /// optimum_plan). A plan whose steps all succeed but whose final shape ends farther is Partial,
+  /// with the distance. Not applied with a horizon (such a plan ends short on purpose).
+  std::optional<double> reach_tolerance;
+  static constexpr double kDefaultReachFraction = 0.01;
+  /// The reach tolerance for a rod of length `length`, m.
+  double reach_tolerance_for(double length) const {
+    return reach_tolerance.value_or(kDefaultReachFraction * length);
+  }
   /// Throws InputError naming the field ("PlanOptions.steps", "PlanOptions.max_refinements" etc.).
   void validate() const;
 };

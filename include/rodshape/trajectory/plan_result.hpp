@@ -22,12 +22,14 @@
 
 namespace rodshape {
 
-/// Complete: every step succeeded and the tracked rod follows the plan (when tracked).
+/// Complete: every step succeeded, the tracked rod follows the plan (when tracked) and the final
+/// shape passes within PlanOptions::reach_tolerance of every target point (without a horizon).
 /// SnapThrough: every step succeeded, but the tracked rod would jump between two waypoints even
 /// after the refinements allowed (TrackingResult says where and the energy released): a plan
-/// defect, not a success. Partial: a step's optimisation failed. Infeasible: no step was tried.
-/// Collision: every step succeeded, but the tracked rod comes nearer to an obstacle of the scene
-/// than the clearance even after the refinements allowed (SceneResult says where).
+/// defect, not a success. Partial: a step's optimisation failed, or the final shape ends farther
+/// than the reach tolerance from a target point (PlanResult::target_distance). Infeasible: no step
+/// was tried. Collision: every step succeeded, but the tracked rod comes nearer to an obstacle of
+/// the scene than the clearance even after the refinements allowed (SceneResult says where).
 enum class PlanStatus { Complete, SnapThrough, Partial, Infeasible, Collision };
 /// "complete", "snap_through", "partial", "infeasible", "collision"
 std::string to_string(PlanStatus status);
@@ -187,6 +189,13 @@ struct PlanResult {
   std::optional<SceneResult> scene;       // when the problem has a scene
   std::optional<ArmPlanResult> arm;       // when the problem has an arm
   std::optional<ArmPlanResult> base_arm;  // when the problem has a base arm (PlanProblem::base_arm)
+
+  /// The largest distance from the final shape (the last step's, or the initial one without
+  /// steps) to a target point (ShapeTarget::points, not an intermediate set), m, and that point.
+  double target_distance = std::numeric_limits<double>::quiet_NaN();
+  int target_point = -1;
+  /// The reach tolerance the plan was judged with (PlanOptions::reach_tolerance_for), m.
+  double reach_tolerance = std::numeric_limits<double>::quiet_NaN();
 
   bool complete() const { return status == PlanStatus::Complete; }
   /// One line: "complete plan, 7 steps (7 requested), final max distance 0.37 mm, energy 0.25 J"
