@@ -312,6 +312,10 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     problem.validate();
     task.options.validate();
   });
+  // The plant's rod (the planner's with the plant's parameters) before any plan: its bounds are
+  // said as the plant's fields (plant.stiffness_scale, not the planner's rod.stiffness.EIx).
+  if (const YamlField plant = root.get("plant"); plant.present())
+    plant.located([&] { (void)task.plant.real_rod(problem.rod); });
   // The sizes' product (each has its own bound): said in the task's names, at no one line.
   try {
     check_plan_cost(problem, task.options);

@@ -256,18 +256,62 @@ std::string to_string(ValidationStatus status) {
   return std::string(name_of(kValidationStatusNames, status, "lost"));
 }
 
+namespace {
+
+/// The median and the largest of `values` (finite, not empty).
+struct RunSpread {
+  double median = 0.0, worst = 0.0;
+};
+RunSpread run_spread(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return {n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]), values.back()};
+}
+
+}  // namespace
+
 std::string ValidationResult::brief() const {
   std::ostringstream out;
   out.precision(3);
   out << to_string(status);
-  if (!runs.empty()) {
+  std::vector<double> e3, e2;  // the final measured errors of the runs that saw a marker
+  std::vector<double> true_error;
+  std::size_t unseen = 0;  // runs that saw no marker at the last frame
+  for (const ValidationRun& run : runs) {
+    const ShapeError& e = run.final;
+    if (std::isfinite(e.error_3d)) {
+      e3.push_back(e.error_3d);
+      e2.push_back(e.error_2d);
+    } else {  // no marker seen at the last frame: nothing measured (shape_error())
+      ++unseen;
+    }
+    true_error.push_back(e.true_error);
+  }
+  if (runs.size() == 1) {
     const ShapeError& e = runs.front().final;
-    if (std::isfinite(e.error_3d))
+    if (!e3.empty())
       out << ": final 3D error " << 1e3 * e.error_3d << " mm (2D " << 1e3 * e.error_2d
           << " mm, true " << 1e3 * e.true_error << " mm)";
-    else  // no marker seen at the last frame: nothing measured (shape_error())
+    else
       out << ": final true error " << 1e3 * e.true_error
           << " mm (no marker seen: no measured error)";
+  } else if (!runs.empty()) {  // over the runs: the median and the worst (per run: the runs)
+    const auto mm = [&out](const char* what, const std::vector<double>& values) {
+      const RunSpread s = run_spread(values);
+      out << what << "median " << 1e3 * s.median << " mm, worst " << 1e3 * s.worst << " mm";
+    };
+    if (!e3.empty()) {
+      mm(": final 3D error ", e3);
+      mm(" (2D ", e2);
+      mm("; true ", true_error);
+      out << ")";
+      if (unseen > 0)
+        out << " (" << unseen << " of " << runs.size()
+            << " runs saw no marker at the end: not in the measured errors)";
+    } else {
+      mm(": final true error ", true_error);
+      out << " (no marker seen: no measured error)";
+    }
   }
   out << ", " << runs.size() << (runs.size() == 1 ? " run" : " runs");
   if (status != ValidationStatus::Complete) out << "; " << message;

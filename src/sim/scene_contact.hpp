@@ -1,7 +1,8 @@
 // scene_contact.hpp (private): the plant's rod against the plan's scene, frame by frame: its least
 // gap, and a contact event where its surface would touch an obstacle (gap < 0). The plant models no
 // contact force: the event says what a real rod would hit, when and how deep; one event per
-// obstacle and contact, at its first frame, with the deepest penetration of that contact.
+// obstacle and contact, at its first frame, with the deepest penetration of that contact (its
+// depth, and its message: the onset, then the deepest frame's time and arc length).
 #pragma once
 
 #include <limits>

@@ -442,9 +442,90 @@ void check_seeds(const PlanProblem& problem, const ArmPlanOptions& options) {
     problem.base_arm->model.check_joint_positions(options.base_seed, "ArmPlanOptions.base_seed");
 }
 
+/// mm, three digits: "12.3 mm".
+std::string overlap_millimetres(double metres) {
+  std::ostringstream out;
+  out.precision(3);
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+/// The capsules of `arm` at `q` (standing at world_T_base) whose frame `keep(frame)` says, as
+/// world capsule obstacles (world_capsules()), with their index into link_capsules().
+template <typename Keep>
+std::vector<std::pair<int, CapsuleObstacle>> capsules_where(const ArmModel& arm,
+                                                            const Pose& world_T_base,
+                                                            const Eigen::VectorXd& q,
+                                                            Keep&& keep) {
+  std::vector<std::pair<int, CapsuleObstacle>> kept;
+  const std::vector<Obstacle> all = world_capsules(arm, world_T_base, q);
+  for (std::size_t c = 0; c < all.size(); ++c)
+    if (keep(arm.link_capsules()[c].frame))
+      kept.emplace_back(static_cast<int>(c), std::get<CapsuleObstacle>(all[c].shape));
+  return kept;
+}
+
+/// Throws InputError when the two arms' base links (the capsules no joint moves) overlap: the
+/// bases stand in each other whatever the joints do, so no plan can be carried out (issue 43,
+/// item 7; found before only after planning, as a collision).
+void check_bases_apart(const PlanProblem& problem, const ArmPlanOptions& options) {
+  const ArmModel& tip = problem.arm->model;
+  const ArmModel& base = problem.base_arm->model;
+  const Pose& world_T_tip = problem.arm->placement.world_T_base;
+  const Pose& world_T_base = problem.base_arm->placement.world_T_base;
+  const auto fixed = [](const ArmModel& arm) {
+    return [&arm](int frame) { return arm.joints_moving_frame(frame) == 0; };
+  };
+  const auto ours = capsules_where(tip, world_T_tip, options.joints.first_seed(tip), fixed(tip));
+  const auto theirs = capsules_where(
+      base, world_T_base, options.base_seed.size() > 0 ? options.base_seed : default_seed(base),
+      fixed(base));
+  for (const auto& [c, a] : ours) {
+    for (const auto& [d, b] : theirs) {
+      const double gap = Obstacle{"", b}.distance(a.from, a.to).distance - a.radius;
+      if (gap >= -SceneGap::kTolerance) continue;
+      throw InputError(
+          "PlanArm.placement.world_T_base",
+          ": the arm's base link " + tip.link_capsules()[static_cast<std::size_t>(c)].label() +
+              " overlaps the base arm's base link " +
+              base.link_capsules()[static_cast<std::size_t>(d)].label() +
+              " (placed by PlanProblem.base_arm.placement.world_T_base) by " +
+              overlap_millimetres(-gap) + ": the two bases stand in each other; move one of them");
+    }
+  }
+}
+
+/// Throws InputError when a link fixed to the arm's hand (every joint moves it: the last joint's
+/// link, the flange, the hand) overlaps an obstacle at the start: the rod's pose there fixes the
+/// hand, no joint can take it out, so the plan would end in a collision.
+void check_hand_clear(const PlanProblem& problem, const ArmSide& side, const ArmStart& start) {
+  const ArmModel& model = side.model();
+  if (problem.scene.empty() || model.joints() <= 1 || !start.ik.converged()) return;
+  const auto hand =
+      capsules_where(model, side.placement().world_T_base, start.ik.q,
+                     [&](int frame) { return model.joints_moving_frame(frame) == model.joints(); });
+  for (const auto& [c, capsule] : hand) {
+    for (std::size_t j = 0; j < problem.scene.obstacles.size(); ++j) {
+      const Obstacle& obstacle = problem.scene.obstacles[j];
+      const double gap = obstacle.distance(capsule.from, capsule.to).distance - capsule.radius;
+      if (gap >= -SceneGap::kTolerance) continue;
+      const std::string label = obstacle.name.empty() ? "" : " (" + obstacle.label(0) + ")";
+      throw InputError(
+          "Scene.obstacles[" + std::to_string(j) + "]",
+          label + ": " + side.name + "'s link " +
+              model.link_capsules()[static_cast<std::size_t>(c)].label() +
+              ", fixed to its hand, starts inside it (" + overlap_millimetres(-gap) +
+              " deep) where " + (side.base ? "the rod's base starts" : "the rod starts") +
+              ": the hand holds the rod there and no joint can move it out; move the obstacle "
+              "or the rod's start");
+    }
+  }
+}
+
 Arms prepare_arms(const PlanProblem& problem,
                   const ArmPlanOptions& options,
                   const Pose& initial_tip) {
+  if (problem.arm && problem.base_arm) check_bases_apart(problem, options);
   const bool two = problem.arm && problem.base_arm;
   // Link clearance with a scene, or with two arms (their gap from each other and from the rod).
   const auto with_clearance = [&](const PlanArm& arm) {
@@ -464,6 +545,8 @@ Arms prepare_arms(const PlanProblem& problem,
                              with_clearance(*problem.base_arm), base.result);
     arms.base = std::move(base);
   }
+  for (const std::optional<ArmState>* state : {&arms.tip, &arms.base})
+    if (*state) check_hand_clear(problem, (*state)->side, (*state)->start);
   return arms;
 }
 

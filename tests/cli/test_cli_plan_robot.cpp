@@ -3,7 +3,9 @@
 // whose last positions put the end effector where plan.json says; an unknown tip link is bad input
 // (exit 2) named with its line; an arm too far from the clamp to hold the rod where it starts is
 // bad input (exit 2) that gives the wrist's distance; without the reach shell it gives exit 3,
-// plan.json saying why; plan.json's robot section holds the shell and every step's joints.
+// plan.json saying why; plan.json's robot section holds the shell and every step's joints. Bad
+// input the library finds (two bases in each other, a hand starting in a box, a base out of its
+// arm's reach, the plant's bounds) names the task file's fields, never the library's types.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -310,6 +312,82 @@ TEST_F(CliPlanRobot, WithoutTheReachShellAnArmOutOfReachWritesThePlanAndExitsThr
   EXPECT_TRUE(summary.at("file").is_null());
   EXPECT_NE(summary.at("message").get<std::string>().find("not computed"), std::string::npos)
       << summary.at("message");
+}
+
+// ---- issue 43: checks up front (item 7) and no library names in task-file errors (item 4c) -----
+
+/// An example with every `../data/robots/panda.urdf` made absolute (the copy is elsewhere).
+std::string example_text_of(const std::string& name) {
+  std::string text = read_file(kSource / "examples" / name);
+  const std::string from = "urdf: ../data/robots/panda.urdf";
+  const std::string to = "urdf: " + (kSource / "data" / "robots" / "panda.urdf").string();
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The library's type names that prefix its field names (grep InputError in src/: the structs
+/// whose fields the library's errors name), which no task-file error may show; space-separated.
+const std::string kLibraryNames =
+    "PlanProblem. PlanOptions. PlanArm ClampedRod. RodProperties. RodDescription. Scene. "
+    "ShootingOptions. ShapeTarget. ShapeOptimiserOptions StrainLimits. Workspace. "
+    "WrenchBounds Grasp. EndEffectorLimits MovingBase ArmPlanOptions. ArmReachOptions. "
+    "ArmPlacement PlantModel MarkerSensorModel DepthSensorModel ValidationOptions. "
+    "EstimationOptions. ClosedLoopOptions. FreeTip. ClampedTip. GraspedTip. IkOptions. "
+    "FollowOptions. BaseMotion. StatePrior. CloudFrame EstimateTask. ModelValidity "
+    "BaseGripperPath";
+
+/// A bad task the library refuses (not the reader's own key checks): the edit, the task-file
+/// field the one-line error must start with (after "<file>:<line>: "), and words it must hold.
+struct BadTask {
+  const char* example;
+  const char* from;
+  const char* to;
+  const char* field;
+  const char* words;
+};
+
+TEST_F(CliPlanRobot, LibraryErrorsNameTaskFieldsNeverLibraryTypes) {
+  const BadTask cases[] = {
+      // Item 7: two bases standing in each other, found before planning (was exit 3).
+      {"plan_two_pandas.yaml", "position: [0.4, 0, 0]", "position: [-0.45, 0.05, 0]",
+       "robot.base: the arm's base link panda_link0 overlaps the base arm's base link panda_link0",
+       "(placed by base_robot.base) by 34 mm: the two bases stand in each other"},
+      // Item 7: a hand that starts inside a box (the shelf example's hand at the start).
+      {"plan_panda_shelf.yaml", "  obstacles:\n",
+       "  obstacles:\n"
+       "    - {name: crate, shape: box, center: [0.0354, -0.0354, 0.3534], size: [0.02, 0.02, "
+       "0.02]}\n",
+       "scene.obstacles[0] ('crate'): the arm's link panda_link", "fixed to its hand"},
+      // Item 4c: the base outside the base arm's reach (was PlanProblem.rod.clamp).
+      {"plan_two_pandas.yaml", "position: [-0.4, 0, 0]", "position: [-1.6, 0, 0]",
+       "base: where the rod's base starts, the base arm's wrist would be", "reach shell"},
+      // Item 4c: a scheme that follows the tip alone with a moving base (was
+      // PlanOptions.interpolation).
+      {"plan_two_pandas.yaml", "  steps: 7\n", "  steps: 7\n  interpolation: pose\n",
+       "trajectory.interpolation = pose follows the tip alone", "with a moving base"},
+      // Item 4b: the plant's scale as given (was rod.stiffness.EIx = 4e+298), before planning.
+      {"plan_two_pandas.yaml", "stiffness_scale: 0.85", "stiffness_scale: 1e300",
+       "plant.stiffness_scale = 1e+300 makes the plant's EIx = 1e+300 x the planner's 0.04 N*m^2",
+       "must be in ["},
+  };
+  for (const BadTask& bad : cases) {
+    SCOPED_TRACE(std::string(bad.example) + ": " + bad.to);
+    const std::string text = replaced_first(example_text_of(bad.example), bad.from, bad.to);
+    const fs::path task = write_task("bad.yaml", text);
+    const Outcome outcome = plan(task, directory_ / "out");
+    EXPECT_EQ(outcome.exit_code, 2) << outcome.err;
+    EXPECT_EQ(std::count(outcome.err.begin(), outcome.err.end(), '\n'), 1) << outcome.err;
+    const std::size_t field = outcome.err.find(bad.field);
+    EXPECT_NE(field, std::string::npos) << outcome.err;
+    // "error: <file>:<line>: <field>": the field right after the place.
+    EXPECT_EQ(outcome.err.rfind(": ", field), field - 2) << outcome.err;
+    EXPECT_NE(outcome.err.find(bad.words), std::string::npos) << outcome.err;
+    std::istringstream names(kLibraryNames);
+    for (std::string name; names >> name;)
+      EXPECT_EQ(outcome.err.find(name), std::string::npos) << name << " in " << outcome.err;
+    EXPECT_FALSE(fs::exists(directory_ / "out" / "plan.json"));
+  }
 }
 
 }  // namespace

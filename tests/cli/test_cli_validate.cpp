@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "support/cli_runner.hpp"
+#include "support/task_text.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -201,6 +202,43 @@ TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritt
     EXPECT_FALSE(fs::exists(outdir()));
   }
   EXPECT_EQ(validate(kTask, " --runs 0").exit_code, 2);
+}
+
+// Issue 43, 4b: a plant field that takes the plant's rod out of its bounds was reported as the
+// planner's field it scales (`plant.stiffness_scale: 1e300` as `rod.stiffness.EIx = 4e+298`), after
+// the plan; it is named as given, with the bound it must keep, before any plan.
+TEST_F(CliValidate, APlantFieldBeyondTheRodsBoundsIsNamedAsGivenWithItsBound) {
+  const std::string curved =
+      rodshape::testing::replaced_first(kTask, "target:", "  rest_curvature: [2, 0, 0]\ntarget:");
+  const std::pair<std::string, const char*> cases[] = {
+      {kTask + "plant: {stiffness_scale: 1e300}\n",
+       "plant.stiffness_scale = 1e+300 makes the plant's EIx = 1e+300 x the planner's 0.04 N*m^2 = "
+       "4e+298 N*m^2, outside [1e-20, 1e+20] N*m^2; with this rod (and these factors) it must be "
+       "in [3.57143e-19, 7.8125e+16]"},
+      {kTask + "plant: {stiffness_scale: 1e-30}\n",
+       "plant.stiffness_scale = 1e-30 makes the plant's EIx"},
+      {kTask + "plant: {stiffness_factors: {GJ: 1e30}}\n",
+       "plant.stiffness_factors.GJ = 1e+30 makes the plant's GJ = 1 x 1e+30 x the planner's 0.028 "
+       "N*m^2 = 2.8e+28 N*m^2, outside [1e-20, 1e+20] N*m^2; with this rod it must be in"},
+      {kTask + "plant: {stiffness_factors: {EA: 1e15}}\n",
+       "plant.stiffness_factors.EA: the plant's rod has EA = 1.28e+18 N, EI = 0.04 N*m^2"},
+      {kTask + "plant: {rest_curvature: [1e5, 0, 0]}\n",
+       "plant.rest_curvature: |u| = 100000 1/m turns the plant's rod of length 0.29 m "
+       "through |u| L = 29000 rad, beyond 10000 rad; |u| must be at most 34482.8 1/m"},
+      {curved + "plant: {length: 9000}\n",
+       "plant.length = 9000 m with the planner's rest curvature of 2 1/m turns the plant's rod"},
+  };
+  for (const auto& [text, message] : cases) {
+    SCOPED_TRACE(message);
+    fs::remove_all(outdir());
+    const Outcome result = validate(text);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find("rod.stiffness"), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find("rod.rest_curvature"), std::string::npos) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(outdir()));  // refused before the plan
+  }
 }
 
 TEST_F(CliValidate, ASeedOutsideItsRangeIsBadInputAndNothingRuns) {

@@ -379,6 +379,26 @@ TEST(MovingBaseReader, LibraryFieldsInTaskNames) {
   EXPECT_EQ(task_field_name("PlanArm"), "robot");
 }
 
+// Issue 43, 4c: library names that reached task-file errors unmapped (PlanProblem.rod.clamp, the
+// base arm's seed, the interpolation with a moving base, the arms' placements of item 7).
+TEST(MovingBaseReader, EveryLibraryFieldATaskErrorNamesHasItsTaskField) {
+  EXPECT_EQ(task_field_name("PlanProblem.rod.clamp"), "base");
+  EXPECT_EQ(task_field_name("PlanProblem.rod.clamp.position"), "base.position");
+  EXPECT_EQ(task_field_name("ArmPlanOptions.base_seed"), "base_robot.seed");
+  EXPECT_EQ(fields_in_task_names("ArmPlanOptions.base_seed[3] = 0 must be in [-3.07, -0.07]"),
+            "base_robot.seed[3] = 0 must be in [-3.07, -0.07]");
+  EXPECT_EQ(task_field_name("PlanOptions.interpolation"), "trajectory.interpolation");
+  EXPECT_EQ(task_field_name("PlanArm.placement.world_T_base"), "robot.base");
+  EXPECT_EQ(task_field_name("PlanArm.placement.flange_T_ee"), "robot.flange_to_end_effector");
+  EXPECT_EQ(task_field_name("PlanProblem.base_arm.placement.world_T_base"), "base_robot.base");
+  EXPECT_EQ(task_field_name("PlanProblem.base_arm.placement.flange_T_ee"),
+            "base_robot.flange_to_end_effector");
+  EXPECT_EQ(task_field_name("BaseMotion.motion_weight"), "base.motion_weight");
+  EXPECT_EQ(task_field_name("Scene.obstacles[2]"), "scene.obstacles[2]");
+  EXPECT_EQ(task_field_name("PlantModel.factors.EIx"), "plant.stiffness_factors.EIx");
+  EXPECT_EQ(task_field_name("EstimateTask.tip"), "tip");
+}
+
 TEST(MovingBaseReader, LibraryErrorsAreLocatedInTheTask) {
   const PlanTask task =
       parse_plan_task(plan_with("moving: true", "moving: true\n  motion_weight: 0.5") +

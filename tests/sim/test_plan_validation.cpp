@@ -164,6 +164,30 @@ TEST(PlanValidation, ABriefWithoutAMarkerSeenSaysNothingWasMeasured) {
             "complete: final true error 0.2 mm (no marker seen: no measured error), 1 run");
 }
 
+// Issue 43, 4d: the brief said run 1's errors alone (2.52 mm of 8 runs at 2.19 ... 10.3 mm); it
+// says the median and the worst over the runs.
+TEST(PlanValidation, ABriefOfSeveralRunsSaysTheirMedianAndWorst) {
+  ValidationResult result;
+  result.status = ValidationStatus::Complete;
+  for (const double mm : {2.52, 2.19, 10.3, 2.4, 2.6, 3.0, 2.3, 2.8}) {
+    ValidationRun& run = result.runs.emplace_back();
+    run.final.error_3d = 1e-3 * mm;
+    run.final.error_2d = 0.5e-3 * mm;
+    run.final.true_error = 0.1e-3 * mm;
+  }
+  // Sorted: 2.19 2.3 2.4 2.52 2.6 2.8 3.0 10.3: the median (2.52 + 2.6) / 2 = 2.56.
+  EXPECT_EQ(result.brief(),
+            "complete: final 3D error median 2.56 mm, worst 10.3 mm (2D median 1.28 mm, worst "
+            "5.15 mm; true median 0.256 mm, worst 1.03 mm), 8 runs");
+  // A run that saw no marker at the end is left out of the measured errors, and said so.
+  result.runs[2].final.error_3d = result.runs[2].final.error_2d =
+      std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(result.brief(),
+            "complete: final 3D error median 2.52 mm, worst 3 mm (2D median 1.26 mm, worst 1.5 mm; "
+            "true median 0.256 mm, worst 1.03 mm) (1 of 8 runs saw no marker at the end: not in "
+            "the measured errors), 8 runs");
+}
+
 TEST(ShapeError, PolylineDistanceByHand) {
   const std::vector<Eigen::Vector3d> polyline{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}};
   EXPECT_DOUBLE_EQ(polyline_distance(polyline, Eigen::Vector3d(0.5, 0, 0.5)), 0.5);

@@ -44,6 +44,26 @@ TEST(SceneContact, OneEventPerContactWithItsDeepestOverlap) {
   EXPECT_NEAR(contact.min_gap(), -0.003, 1e-15);
 }
 
+// Issue 43, 4a: the message said the onset's overlap ("1 mm deep") where `depth` and the least
+// gap say 3 mm; it says the deepest frame, when and where along the rod, as `depth` does.
+TEST(SceneContact, TheMessageSaysTheDeepestFrameAsTheDepthDoes) {
+  Scene scene;
+  scene.rod_radius = 0.002;
+  scene.obstacles = {{"ball", SphereObstacle{{0.0, 0.0, 0.05}, 0.01}}};
+  sim_detail::SceneContact contact(scene, Eigen::Vector3d::Zero());
+  contact.see(frame_along_z(0.1, 0.011));  // overlap 1 mm: the onset
+  contact.see(frame_along_z(0.2, 0.009));  // overlap 3 mm, nearest at node 5 (s = 0.05 m)
+  contact.see(frame_along_z(0.3, 0.010));  // 2 mm: shallower, the message keeps the deepest
+  ASSERT_EQ(contact.contacts().size(), 1u);
+  const PlantEvent& event = contact.contacts()[0];
+  EXPECT_NEAR(event.depth, 0.003, 1e-15);
+  EXPECT_NEAR(-contact.min_gap(), event.depth, 1e-15);
+  EXPECT_NE(event.message.find("from t = 0.1 s"), std::string::npos) << event.message;
+  EXPECT_NE(event.message.find("deepest 3 mm at t = 0.2 s, s = 0.05 m"), std::string::npos)
+      << event.message;
+  EXPECT_EQ(event.message.find("1 mm"), std::string::npos) << event.message;
+}
+
 TEST(SceneContact, ThePostExamplesPlantKeepsItsGapAndAnUnplannedObstacleIsAContact) {
   const PlanTask task =
       read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_around_post.yaml");

@@ -2,14 +2,19 @@
 // example completes with every link clear, checked sample by sample independently of the planner;
 // without the links' null-space term the same plan's forearm runs 4 cm into the board; an obstacle
 // on the hand's own path, which no redundancy can avoid, gives the status collision naming the
-// step, the link, the obstacle and the gap; a scene plan without link geometry has no robot gap.
+// step, the link, the obstacle and the gap; a scene plan without link geometry has no robot gap; a
+// hand that starts inside an obstacle is bad input before any plan.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_clearance.hpp"
 #include "rodshape/trajectory/plan.hpp"
+#include "support/input_error.hpp"
 
 namespace rodshape {
 namespace test_arm_link_clearance {
@@ -91,6 +96,45 @@ TEST(ArmLinkClearance, AnObstacleTheHandItselfMeetsGivesCollisionNamingStepLinkO
   EXPECT_GT(plan.scene->robot->step, 0);
   // The rod itself is clear: the collision is the arm's.
   EXPECT_TRUE(plan.scene->clear());
+}
+
+// Issue 43, item 7: a box in which the hand starts was found only after planning (status
+// collision, exit 3): the pose where the rod starts fixes the hand, so it is bad input before any
+// plan, naming the obstacle and the link.
+TEST(ArmLinkClearance, AHandStartingInsideABoxIsBadInputBeforeAnyPlan) {
+  PlanTask task = read_plan_task(kShelf);
+  const PlanResult clear = rodshape::plan(task.problem, task.options);
+  ASSERT_EQ(clear.status, PlanStatus::Complete) << clear.message;
+  ASSERT_TRUE(clear.arm && !clear.arm->joints.q.empty());
+  // The hand's capsule where the rod starts; a 2 cm box on its end farther from the rod.
+  const PlanArm& arm = *task.problem.arm;
+  const std::vector<Obstacle> links =
+      world_capsules(arm.model, arm.placement.world_T_base, clear.arm->joints.q.front());
+  const auto hand = std::find_if(links.begin(), links.end(), [](const Obstacle& link) {
+    return link.name == "panda_link8 (hand)";
+  });
+  ASSERT_NE(hand, links.end());
+  const auto& capsule = std::get<CapsuleObstacle>(hand->shape);
+  const auto rod_distance = [&](const Eigen::Vector3d& p) {
+    double least = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& node : clear.initial_configuration.p)
+      least = std::min(least, (node - p).norm());
+    return least;
+  };
+  const Eigen::Vector3d end =
+      rod_distance(capsule.from) > rod_distance(capsule.to) ? capsule.from : capsule.to;
+  PlanProblem boxed = task.problem;
+  boxed.scene.obstacles.push_back({"crate", BoxObstacle{end, Eigen::Vector3d(0.02, 0.02, 0.02)}});
+  // The box keeps off the rod (its clearance and more): only the hand is in it.
+  ASSERT_GT(rod_distance(end) - std::sqrt(3.0) * 0.01 - boxed.scene.rod_radius,
+            boxed.scene.clearance);
+  const std::string index = std::to_string(boxed.scene.obstacles.size() - 1);
+  const std::string message =
+      testing::input_error_message([&] { (void)rodshape::plan(boxed, task.options); });
+  EXPECT_EQ(message.find("Scene.obstacles[" + index + "] ('crate'): the arm's link panda_link"), 0u)
+      << message;
+  EXPECT_NE(message.find("fixed to its hand, starts inside it ("), std::string::npos) << message;
+  EXPECT_NE(message.find("where the rod starts"), std::string::npos) << message;
 }
 
 TEST(ArmLinkClearance, AnArmWithoutCollisionGeometryHasNoRobotGap) {

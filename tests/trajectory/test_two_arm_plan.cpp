@@ -6,7 +6,8 @@
 // base arm's reach shell is bad input naming PlanProblem.rod.clamp, and one IK cannot reach is
 // reported by the base arm; a planner standing in for the optimisation shows the re-plan with the
 // base arm's shell tightened by the tip's rule, and the two arms' re-plans sharing one budget; two
-// hands brought together give a negative arm–arm margin and the status collision.
+// hands brought together give a negative arm–arm margin and the status collision; two bases
+// that overlap are bad input before any plan.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -406,6 +407,33 @@ TEST(TwoArmPlan, HandsTooNearEachOtherMakeThePlanACollision) {
       problem.base_arm->placement.world_T_base,
       plan.base_arm->joints.q[static_cast<std::size_t>(robot.sample)], problem.scene.clearance);
   EXPECT_NEAR(replay.margin, robot.margin, 1e-12);
+}
+
+// Issue 43, item 7: two bases standing in each other were found only after planning (a collision);
+// they are bad input before the rod is planned, naming both base links.
+TEST(TwoArmPlan, OverlappingBasesAreBadInputBeforeAnyPlan) {
+  PlanProblem problem = two_pandas();
+  // The tip arm beside the base arm, 0.1 m to its side, both facing +x: their base links' capsules
+  // (radius 6 cm each, at the same x) overlap by 2 cm.
+  problem.arm->placement.world_T_base = {Eigen::Vector3d(-0.4, 0.1, 0),
+                                         Eigen::Matrix3d::Identity()};
+  PlanOptions options;
+  int planned = 0;
+  const auto planner = [&](const PlanProblem&) {
+    ++planned;
+    return hand_made_plan(problem, options, 1);
+  };
+  const Pose initial_tip = integrate(problem.rod, BaseWrench{}).tip();
+  const std::string message = input_error_message(
+      [&] { (void)detail::plan_with_arms(problem, options, initial_tip, planner); });
+  EXPECT_EQ(message.find("PlanArm.placement.world_T_base: the arm's base link panda_link0 "
+                         "overlaps the base arm's base link panda_link0"),
+            0u)
+      << message;
+  EXPECT_NE(message.find("PlanProblem.base_arm.placement.world_T_base"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("by 20 mm"), std::string::npos) << message;
+  EXPECT_EQ(planned, 0);
 }
 
 }  // namespace

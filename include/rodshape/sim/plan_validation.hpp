@@ -103,7 +103,9 @@ struct ValidationResult {
   /// Every run's plant followed the arm's joint trajectory through its forward kinematics (a plan
   /// with an arm and a complete joint trajectory; commanded_path()), else the end-effector path.
   bool driven_by_joints() const;
-  /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run".
+  /// "complete: final 3D error 1.2 mm (2D 0.8 mm, true 0.4 mm), 1 run"; over several runs the
+  /// median and the worst of each ("final 3D error median 2.4 mm, worst 10.3 mm (2D median …;
+  /// true median …), 8 runs"; each run's own in `runs`).
   std::string brief() const;
 };
 
