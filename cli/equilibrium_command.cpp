@@ -29,9 +29,9 @@ class EquilibriumCommand final : public Command {
         ->type_name("TASK.yaml");
     command
         ->add_option("-o,--output", output_path_,
-                     "Write the JSON result to this file (whole or not at all; a device or a "
-                     "FIFO is written in place, a symbolic link is followed) instead of standard "
-                     "output; '-' is standard output")
+                     "Write the JSON result to this file (whole or not at all; never into a "
+                     "device, a FIFO or through a symbolic link) instead of standard output; '-' "
+                     "is standard output")
         ->type_name("OUT.json");
     command->add_flag("-q,--quiet", quiet_,
                       "Print nothing on standard output: with -o, no one-line summary; without "
@@ -43,7 +43,10 @@ class EquilibriumCommand final : public Command {
   int run() override {
     const EquilibriumTask task = read_equilibrium_task(task_path_);
     const bool to_file = !output_path_.empty() && output_path_ != "-";
-    if (to_file) check_not_an_input(output_path_, {task_path_});  // before solving: nothing written
+    if (to_file) {  // before solving: nothing written
+      check_not_an_input(output_path_, {task_path_});
+      check_output_path(output_path_);
+    }
 
     EquilibriumAnalysis analysis;
     try {

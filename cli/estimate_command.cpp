@@ -37,8 +37,9 @@ class EstimateCommand final : public Command {
         ->type_name("FILE");
     command
         ->add_option("-o,--output", output_path_,
-                     "Write the JSON result to this file (whole or not at all) instead of "
-                     "standard output; '-' is standard output")
+                     "Write the JSON result to this file (whole or not at all; never into a "
+                     "device, a FIFO or through a symbolic link) instead of standard output; '-' "
+                     "is standard output")
         ->type_name("OUT.json");
     return command;
   }
@@ -46,7 +47,10 @@ class EstimateCommand final : public Command {
   int run() override {
     const EstimateTask task = read_estimate_task(task_path_);
     const bool to_file = !output_path_.empty() && output_path_ != "-";
-    if (to_file) check_not_an_input(output_path_, {task_path_, cloud_path_});
+    if (to_file) {  // before reading the cloud: nothing written
+      check_not_an_input(output_path_, {task_path_, cloud_path_});
+      check_output_path(output_path_);
+    }
     const std::vector<Eigen::Vector3d> points = read_cloud(cloud_path_);
     CloudEstimate result;
     try {

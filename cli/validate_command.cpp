@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <thread>
+#include <variant>
 #include <vector>
 
 #include "exit_code.hpp"
@@ -37,6 +40,96 @@ std::uint64_t parse_seed(const std::string& text) {
     throw InputError("--seed = " + text + " must be a whole number in [0, " +
                      std::to_string(std::numeric_limits<std::uint64_t>::max()) + "]");
   return seed;
+}
+
+// validate's time, estimated before any work (docs/limits.md, "Sizes of a validation"): one core's
+// work, as the CPU seconds of the Release build (2 shared cores) on examples/plan_c_arc.yaml
+// (100 intervals, 10 markers and points, 497 frames a run, 7 checkpoints; open loop 2/8/32 runs
+// 0.37/0.51/1.16 s, closed loop 2/8 runs 0.67/2.50 s) and examples/validate_depth_camera.yaml
+// (512 x 424 pixels, 500 points a frame; open loop 2/8 runs 1.34/4.17 s, closed loop 2/4 runs
+// 3.61/7.21 s). Per run: open loop frames x (markers + points) x kMarkerSeconds or frames x
+// pixels x kPixelSeconds; the plant's solve per frame, once open loop and per run closed loop,
+// intervals x kPlantSeconds; closed loop, per checkpoint a re-plan (the plan's estimate per step,
+// times the horizon) and, for a depth camera, the fit of the pooled cloud, intervals x points x
+// kCloudFitSeconds. The sum is the fit times kMargin (--jobs is not counted: with 2 jobs on 2
+// shared cores the closed loop took 0.9 x the time of 1 job).
+constexpr double kPlantSeconds = 5.0e-6;      // per interval and frame (0.25 s for 497 x 100)
+constexpr double kMarkerSeconds = 2.6e-6;     // per marker and target point, frame and run
+constexpr double kPixelSeconds = 4.4e-9;      // per pixel, frame and run (the camera's rays)
+constexpr double kCloudFitSeconds = 1.75e-7;  // per interval and pooled point, checkpoint and run
+constexpr double kMargin = 1.5;
+constexpr double kAnnouncedSeconds = 10.0;  // an estimate this long is said on standard error
+
+/// "0.42", "4.2", "683": two significant digits below 10 s, whole seconds above.
+std::string seconds_text(double seconds) {
+  if (seconds >= 10.0) return std::to_string(std::lround(seconds));
+  std::ostringstream out;
+  out.precision(2);
+  out << seconds;
+  return out.str();
+}
+
+/// The estimate of a validation's time, s, and what it comes from. `path_frames`: the frames of
+/// the plan's path a run sees (0 before planning: a lower bound then).
+struct ValidationCost {
+  double seconds = 0.0;
+  std::string from;
+};
+
+ValidationCost estimated_validation_cost(const PlanTask& task,
+                                         const ValidationOptions& options,
+                                         double steps,
+                                         double path_frames) {
+  const double intervals = task.problem.rod.intervals;
+  const double runs = options.runs;
+  const SensorModel sensor = task.sensor_model();
+  const auto* depth = std::get_if<DepthSensorModel>(&sensor);
+  const auto* markers = std::get_if<MarkerSensorModel>(&sensor);
+  const double seeing =  // one frame seen in one run
+      depth ? kPixelSeconds * depth->width * depth->height
+            : kMarkerSeconds * ((markers ? markers->markers : 0) +
+                                static_cast<double>(task.problem.target.points.size()));
+  const double plant = kPlantSeconds * intervals;  // one frame driven
+  const double plan = estimated_plan_seconds(task.problem, task.options);
+  double seconds = plan;
+  ValidationCost cost;
+  std::ostringstream from;
+  from << options.runs << (options.runs == 1 ? " run" : " runs") << ", "
+       << (options.closed_loop ? "closed loop" : "open loop") << ", ";
+  if (path_frames > 0.0)
+    from << path_frames << " frames of the path a run";
+  else
+    from << "the path's frames not yet known";
+  from << ", " << task.problem.rod.intervals + 1 << " rod nodes, "
+       << (depth ? std::to_string(depth->width) + " x " + std::to_string(depth->height) +
+                       " depth pixels"
+                 : std::to_string(markers ? markers->markers : 0) + " markers");
+  if (!options.closed_loop) {
+    seconds += path_frames * (plant + runs * seeing);
+  } else {
+    const double checkpoint_frames = options.loop.checkpoint_frames;
+    const double frames = path_frames + steps * (checkpoint_frames + 1.0);
+    const double horizon = options.loop.horizon > 0 ? options.loop.horizon : 0.5 * steps;
+    double checkpoint = plan / std::max(steps, 1.0) * std::min(horizon, steps);
+    if (depth) checkpoint += kCloudFitSeconds * intervals * checkpoint_frames * depth->points;
+    seconds += runs * (frames * (plant + seeing) + steps * checkpoint);
+    from << ", " << steps << " checkpoints of " << options.loop.checkpoint_frames << " frames";
+  }
+  cost.seconds = kMargin * seconds;
+  cost.from = from.str();
+  return cost;
+}
+
+/// InputError when `cost` is beyond `max_seconds` (a lower bound when `at_least`).
+void check_validation_cost(const std::string& task_path,
+                           const ValidationCost& cost,
+                           double max_seconds,
+                           bool at_least) {
+  if (cost.seconds <= max_seconds) return;
+  throw InputError(task_path + ": validate would take " + (at_least ? "at least " : "") + "about " +
+                   seconds_text(cost.seconds) + " s, estimated from " + cost.from + "; at most " +
+                   seconds_text(max_seconds) +
+                   " s (docs/limits.md): lower --runs, or raise --max-seconds");
 }
 
 /// The cores, within [1, ValidationOptions::kMaxJobs].
@@ -80,6 +173,13 @@ class ValidateCommand final : public Command {
                          "); the results are the same for every value")
         ->check(CLI::Range(1, ValidationOptions::kMaxJobs))
         ->type_name("N");
+    command
+        ->add_option("--max-seconds", max_seconds_,
+                     "Refuse a validation estimated to take longer (default " +
+                         seconds_text(kMaxEstimatedPlanSeconds) +
+                         " s, as for plan; docs/limits.md)")
+        ->check(CLI::PositiveNumber)
+        ->type_name("S");
     command->add_flag("--closed-loop", options_.closed_loop,
                       "Close the loop: at each waypoint, estimate the rod from the sensors and "
                       "re-plan the rest (the task's closed_loop section)");
@@ -112,6 +212,12 @@ class ValidateCommand final : public Command {
     std::vector<std::string> outputs = plan_file_names();
     for (const std::string& name : validation_file_names()) outputs.push_back(name);
     check_output_files(output_directory_, outputs, task.input_files);
+    options.loop = task.closed_loop;
+    options.planning = task.options;
+    // Before planning, a lower bound (the path's frames are not known yet); after, the estimate.
+    check_validation_cost(task_path_,
+                          estimated_validation_cost(task, options, task.options.steps, 0.0),
+                          max_seconds_, true);
     PlanResult plan;
     ValidationResult result;
     try {
@@ -124,12 +230,20 @@ class ValidateCommand final : public Command {
       std::cerr << "error: " << task_path_
                 << ": nothing to validate: " << fields_in_task_names(plan.brief(task.options.steps))
                 << "\n";
-      write_plan(output_directory_, plan, task, {.html = !no_html_});
-      remove_earlier_outputs(output_directory_, validation_file_names());
+      OutputSet set = plan_outputs(plan, task, {.html = !no_html_});
+      for (const std::string& name : validation_file_names()) set.stale.push_back(name);
+      write_output_set(output_directory_, std::move(set));
       return kPartialPlan;
     }
-    options.loop = task.closed_loop;
-    options.planning = task.options;
+    const double duration = plan.end_effector_path.back().t - plan.end_effector_path.front().t;
+    const double rate =
+        std::visit([](const auto& model) { return model.frame_rate; }, task.sensor_model());
+    const ValidationCost cost = estimated_validation_cost(
+        task, options, static_cast<double>(plan.steps.size()), std::floor(duration * rate) + 2.0);
+    check_validation_cost(task_path_, cost, max_seconds_, false);
+    if (!quiet_ && cost.seconds >= kAnnouncedSeconds)
+      std::cerr << "validate: about " << seconds_text(cost.seconds) << " s estimated (" << cost.from
+                << ")\n";
     {
       ProgressLine progress("validate", options.closed_loop ? "runs" : "frames", !quiet_);
       if (progress.active())
@@ -141,11 +255,10 @@ class ValidateCommand final : public Command {
       }
     }
     warn_without_html(no_html_);
-    std::vector<std::string> written =
-        write_plan(output_directory_, plan, task, {.html = !no_html_});
-    for (const std::string& name :
-         write_validation(output_directory_, result, plan, task, {.html = !no_html_}))
-      written.push_back(name);
+    // The plan's files and the validation's as one set: all checked, all written, then renamed.
+    OutputSet set = plan_outputs(plan, task, {.html = !no_html_});
+    set.append(validation_outputs(result, plan, task, {.html = !no_html_}));
+    const std::vector<std::string> written = write_output_set(output_directory_, std::move(set));
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief()) << "; wrote";
       for (const std::string& name : written)
@@ -163,6 +276,7 @@ class ValidateCommand final : public Command {
   std::string output_directory_;
   ValidationOptions options_;
   std::string seed_ = "1";
+  double max_seconds_ = kMaxEstimatedPlanSeconds;
   bool quiet_ = false;
   bool no_html_ = false;
 };

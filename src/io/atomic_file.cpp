@@ -1,5 +1,5 @@
-// atomic_file.cpp: write to a temporary file beside the target, fsync, rename (POSIX); devices and
-// FIFOs are written in place; symbolic links are followed.
+// atomic_file.cpp: write to temporary files beside the targets, fsync, then rename them all
+// (POSIX); devices, FIFOs and symbolic links at a target are refused, never opened (issue 43).
 #include "rodshape/io/atomic_file.hpp"
 
 #include <fcntl.h>
@@ -49,85 +49,106 @@ int write_all(int fd, const std::string& content) {
       if (errno == EINTR) continue;
       return errno;
     }
-    if (written == 0) return EIO;  // a device that takes nothing more
+    if (written == 0) return EIO;
     data += written;
     left -= static_cast<std::size_t>(written);
   }
   return 0;
 }
 
-/// What `path` names after following symbolic links in its last component (at most 40, as the
-/// kernel does; more fail with ELOOP). A dangling link gives the path it points to.
-std::string follow_links(const std::string& path) {
-  fs::path current(path);
-  for (int hops = 0; hops <= 40; ++hops) {
-    std::error_code error;
-    if (!fs::is_symlink(fs::symlink_status(current, error))) return current.string();
-    const fs::path target = fs::read_symlink(current, error);
-    if (error) fail(path, error.value());
-    current = target.is_absolute() ? target : current.parent_path() / target;
+/// A checked target: its existing permissions (nullopt when nothing is there).
+std::optional<mode_t> checked_target(const std::string& path) {
+  if (path.empty()) fail(path, ENOENT);
+  if (!fs::path(path).has_filename()) fail(path, EISDIR);  // "dir/"
+  struct stat status {};
+  if (::lstat(path.c_str(), &status) != 0) {
+    if (errno == ENOENT) return std::nullopt;
+    fail(path, errno);
   }
-  fail(path, ELOOP);
+  const char* what = nullptr;
+  switch (status.st_mode & S_IFMT) {
+    case S_IFREG:
+      return status.st_mode & 07777;
+    case S_IFDIR:
+      fail(path, EISDIR);
+    case S_IFLNK:
+      what = "a symbolic link";
+      break;
+    case S_IFIFO:
+      what = "a FIFO";
+      break;
+    case S_IFCHR:
+      what = "a character device";
+      break;
+    case S_IFBLK:
+      what = "a block device";
+      break;
+    default:
+      what = "a socket";
+  }
+  throw InputError(path + ": cannot write: it is " + what +
+                   "; outputs are never written into a device, a pipe or through a symbolic "
+                   "link (docs/limits.md): remove it or give another output");
 }
 
-/// Opens an existing device or FIFO for writing, without O_CREAT or O_TRUNC, and writes it.
-void write_in_place(const std::string& path,
-                    const std::string& target,
-                    const std::string& content) {
-  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) fail(path, errno);
-  int error = write_all(fd, content);
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error != 0) fail(path, error);
-}
-
-/// Writes a temporary file beside `target` with the given permissions, then renames it over
-/// `target`.
-void replace_atomically(const std::string& path,
-                        const std::string& target,
-                        const std::string& content,
-                        std::optional<mode_t> permissions) {
-  std::string temporary;
-  int fd = -1;
-  for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-    temporary = temporary_name(target);
-    // 0666 before the umask, as for any new file.
-    fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0 && errno != EEXIST) fail(path, errno);
+/// A temporary file written and flushed beside its target, removed unless renamed.
+class Temporary {
+ public:
+  Temporary(const std::string& path, const std::string& content, std::optional<mode_t> mode)
+      : path_(path) {
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+      name_ = temporary_name(path);
+      // 0666 before the umask, as for any new file.
+      fd = ::open(name_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if (fd < 0 && errno != EEXIST) fail(path, errno);
+    }
+    if (fd < 0) fail(path, EEXIST);
+    int error = 0;
+    if (mode && ::fchmod(fd, *mode) != 0) error = errno;
+    if (error == 0) error = write_all(fd, content);
+    if (error == 0 && ::fsync(fd) != 0) error = errno;
+    if (::close(fd) != 0 && error == 0) error = errno;
+    if (error != 0) {
+      ::unlink(name_.c_str());
+      fail(path, error);
+    }
   }
-  if (fd < 0) fail(path, EEXIST);
-
-  int error = 0;
-  if (permissions && ::fchmod(fd, *permissions) != 0) error = errno;
-  if (error == 0) error = write_all(fd, content);
-  if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error == 0 && std::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
-  if (error != 0) {
-    ::unlink(temporary.c_str());
-    fail(path, error);
+  Temporary(const Temporary&) = delete;
+  Temporary& operator=(const Temporary&) = delete;
+  Temporary(Temporary&& other) noexcept
+      : path_(std::move(other.path_)), name_(std::exchange(other.name_, {})) {}
+  Temporary& operator=(Temporary&&) = delete;
+  ~Temporary() {
+    if (!name_.empty()) ::unlink(name_.c_str());
   }
-}
+
+  /// Renames the temporary over its target (which rename() replaces, never follows).
+  void commit() {
+    if (std::rename(name_.c_str(), path_.c_str()) != 0) fail(path_, errno);
+    name_.clear();
+  }
+
+ private:
+  std::string path_, name_;
+};
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  if (path.empty()) fail(path, ENOENT);
-  const std::string target = follow_links(path);
-  if (!fs::path(target).has_filename()) fail(path, EISDIR);  // "dir/"
+void check_output_path(const std::string& path) { checked_target(path); }
 
-  struct stat status {};
-  std::optional<mode_t> permissions;
-  if (::stat(target.c_str(), &status) == 0) {
-    if (S_ISDIR(status.st_mode)) fail(path, EISDIR);
-    if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode) || S_ISFIFO(status.st_mode)) {
-      write_in_place(path, target, content);
-      return;
-    }
-    if (!S_ISREG(status.st_mode)) throw InputError(path + ": cannot write: it is a socket");
-    permissions = status.st_mode & 07777;
-  }
-  replace_atomically(path, target, content, permissions);
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::optional<mode_t>> modes;
+  for (const auto& [path, content] : files) modes.push_back(checked_target(path));
+  std::vector<Temporary> temporaries;
+  temporaries.reserve(files.size());
+  for (std::size_t k = 0; k < files.size(); ++k)
+    temporaries.emplace_back(files[k].first, files[k].second, modes[k]);
+  for (Temporary& temporary : temporaries) temporary.commit();
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  write_files_atomically({{path, content}});
 }
 
 void write_to_standard_output(const std::string& content) {

@@ -1,5 +1,5 @@
-// output_files.cpp: an earlier run's outputs told from other files, and outputs that are inputs
-// (output_files.hpp; docs/limits.md, "Files written").
+// output_files.cpp: an earlier run's outputs told from other files, outputs that are inputs, and
+// a run's files written as a set (output_files.hpp; docs/limits.md, "Files written").
 #include "rodshape/io/output_files.hpp"
 
 #include <algorithm>
@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "rodshape/error.hpp"
+#include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/version.hpp"
 
@@ -65,7 +66,7 @@ std::string generator_signature() { return "rodshape " + version(); }
 
 bool is_rodshape_output(const std::string& path) {
   std::error_code error;
-  if (!fs::is_regular_file(path, error)) return false;
+  if (!fs::is_regular_file(fs::symlink_status(path, error))) return false;
   const std::string head = head_of(path);
   const std::string name = fs::path(path).filename().string();
   const std::string extension = fs::path(path).extension().string();
@@ -99,13 +100,10 @@ void check_output_files(const std::string& directory,
     check_not_an_input(path, inputs);
     std::error_code error;
     const fs::file_status status = fs::symlink_status(path, error);
-    if (error || !fs::exists(status) || is_rodshape_output(path)) continue;
-    // A device or a FIFO is written in place, a dangling link creates what it names: neither
-    // loses a file (docs/limits.md, "Files written").
-    const fs::file_type type = fs::status(path, error).type();
-    if (type == fs::file_type::character || type == fs::file_type::block ||
-        type == fs::file_type::fifo || type == fs::file_type::not_found)
-      continue;
+    if (error || !fs::exists(status)) continue;
+    // A link, a device or a FIFO: refused, never opened (a FIFO would block).
+    if (!fs::is_directory(status)) check_output_path(path);
+    if (is_rodshape_output(path)) continue;
     throw InputError(path +
                      ": is in the way of an output and is not one rodshape wrote (no rodshape "
                      "signature); move it away or choose another output directory");
@@ -121,6 +119,28 @@ void remove_earlier_outputs(const std::string& directory, const std::vector<std:
       throw InputError(path.string() +
                        ": cannot remove the file of an earlier run: " + error.message());
   }
+}
+
+void OutputSet::append(OutputSet other) {
+  for (auto& file : other.files) files.push_back(std::move(file));
+  for (auto& name : other.stale) stale.push_back(std::move(name));
+}
+
+std::vector<std::string> write_output_set(const std::string& directory, OutputSet set) {
+  std::error_code error;
+  fs::create_directories(directory, error);
+  if (error)
+    throw InputError(directory + ": cannot create the output directory: " + error.message());
+  if (!fs::is_directory(directory, error))
+    throw InputError(directory + ": cannot create the output directory: it is not a directory");
+  std::vector<std::string> written;
+  for (auto& file : set.files) {  // names become paths; the contents are not copied
+    written.push_back(file.first);
+    file.first = (fs::path(directory) / file.first).string();
+  }
+  write_files_atomically(set.files);
+  remove_earlier_outputs(directory, set.stale);
+  return written;
 }
 
 }  // namespace rodshape

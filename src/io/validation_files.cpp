@@ -1,12 +1,9 @@
 // validation_files.cpp: validation.csv and the files `rodshape validate` writes
 // (validation_output.hpp).
-#include <filesystem>
 #include <iomanip>
 #include <optional>
 #include <sstream>
 
-#include "rodshape/error.hpp"
-#include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/validation_output.hpp"
 
@@ -30,31 +27,29 @@ const std::vector<std::string>& validation_file_names() {
   return names;
 }
 
+OutputSet validation_outputs(const ValidationResult& result,
+                             const PlanResult& plan,
+                             const PlanTask& task,
+                             const FigureFiles& figures) {
+  OutputSet set;
+  set.files.emplace_back("validation.json", validation_json(result, plan, task));
+  set.files.emplace_back("validation.csv", validation_csv(result));
+  set.files.emplace_back("validation.svg", validation_svg(result));
+  const std::optional<PageLibrary> library = figures.html ? load_page_library() : std::nullopt;
+  if (library)
+    set.files.emplace_back("validation.html", validation_html(result, plan, task.problem,
+                                                              figure_caption(task), *library));
+  else
+    set.stale.emplace_back("validation.html");
+  return set;
+}
+
 std::vector<std::string> write_validation(const std::string& directory,
                                           const ValidationResult& result,
                                           const PlanResult& plan,
                                           const PlanTask& task,
                                           const FigureFiles& figures) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  fs::create_directories(directory, error);
-  if (error || !fs::is_directory(directory, error))
-    throw InputError(directory + ": cannot create the output directory");
-  std::vector<std::string> written;
-  const auto write = [&](const char* name, const std::string& content) {
-    write_file_atomically((fs::path(directory) / name).string(), content);
-    written.push_back(name);
-  };
-  write("validation.json", validation_json(result, plan, task));
-  write("validation.csv", validation_csv(result));
-  write("validation.svg", validation_svg(result));
-  const std::optional<PageLibrary> library = figures.html ? load_page_library() : std::nullopt;
-  if (library)
-    write("validation.html",
-          validation_html(result, plan, task.problem, figure_caption(task), *library));
-  else
-    remove_earlier_outputs(directory, {"validation.html"});
-  return written;
+  return write_output_set(directory, validation_outputs(result, plan, task, figures));
 }
 
 }  // namespace rodshape

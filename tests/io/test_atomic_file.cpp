@@ -1,5 +1,6 @@
 // test_atomic_file.cpp: output files are written whole or not at all, and no temporary is left; a
-// device or a FIFO is written in place and stays what it is; a symbolic link is followed and stays.
+// device, a FIFO or a symbolic link (dangling or not) at an output is refused and stays what it is,
+// what a link names untouched (issue 43).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -74,78 +75,89 @@ TEST_F(AtomicFile, DirectoryAsTargetFailsAndIsLeftAlone) {
   EXPECT_EQ(entries(), 1);
 }
 
-// ---- devices, FIFOs and symbolic links ----------------------------------------------------------
+// ---- devices, FIFOs and symbolic links: never written into (issue 43) --------------------------
 
-TEST_F(AtomicFile, NullDeviceIsWrittenInPlaceAndStaysADevice) {
+/// The message of a refused output: its path and what it is.
+std::string refusal(const fs::path& path, const std::string& what) {
+  return path.string() + ": cannot write: it is " + what +
+         "; outputs are never written into a device, a pipe or through a symbolic link "
+         "(docs/limits.md): remove it or give another output";
+}
+
+TEST_F(AtomicFile, NullDeviceIsRefusedAndStaysADevice) {
   const auto null = testing::memory_device(directory_ / "null", testing::kNullMinor);
   if (!null) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
-  write_file_atomically(null->string(), "{}\n");
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(null->string(), "{}\n"); }),
+            refusal(*null, "a character device"));
   EXPECT_TRUE(testing::is_character_device(*null)) << "the device was replaced";
   EXPECT_EQ(entries(), 1) << "a temporary file was left behind";
 }
 
-TEST_F(AtomicFile, FullDeviceFailsWithNoSpaceAndStaysADevice) {
+TEST_F(AtomicFile, FullDeviceIsRefusedAndStaysADevice) {
   const auto full = testing::memory_device(directory_ / "full", testing::kFullMinor);
   if (!full) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
   EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(full->string(), "{}\n"); }),
-            full->string() + ": cannot write: No space left on device");
+            refusal(*full, "a character device"));
   EXPECT_TRUE(testing::is_character_device(*full)) << "the device was replaced";
   EXPECT_EQ(entries(), 1);
 }
 
-TEST_F(AtomicFile, FifoIsWrittenInPlaceForItsReader) {
+TEST_F(AtomicFile, FifoIsRefusedAndNothingGoesThrough) {
   const fs::path fifo = directory_ / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  // A reader is there before the write (non-blocking, so that a write that never comes cannot
-  // hang the test); the content fits in the pipe's buffer.
+  // A reader is there (non-blocking), so that a writer that opened the FIFO could not hang the
+  // test: what it wrote would show in the pipe.
   const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
   ASSERT_GE(reader, 0);
-  write_file_atomically(fifo.string(), "through the pipe\n");
+  const std::string message = testing::input_error_message(
+      [&] { write_file_atomically(fifo.string(), "into the pipe\n"); });
   std::array<char, 64> buffer{};
   const ssize_t count = ::read(reader, buffer.data(), buffer.size());
   ::close(reader);
-  EXPECT_EQ(std::string(buffer.data(), count > 0 ? static_cast<std::size_t>(count) : 0),
-            "through the pipe\n");
+  EXPECT_EQ(message, refusal(fifo, "a FIFO"));
+  EXPECT_LE(count, 0) << "written into the FIFO";
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo))) << "the FIFO was replaced";
   EXPECT_EQ(entries(), 1);
 }
 
-TEST_F(AtomicFile, SymbolicLinkIsFollowedAndStays) {
+TEST_F(AtomicFile, SymbolicLinkIsRefusedAndWhatItNamesIsUntouched) {
   const fs::path real = directory_ / "real.json";
   const fs::path link = directory_ / "link.json";
-  std::ofstream(real) << "old\n";
+  std::ofstream(real) << "another run's\n";
   fs::create_symlink("real.json", link);  // relative, as ln -s makes them
-  write_file_atomically(link.string(), "new\n");
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(link.string(), "new\n"); }),
+            refusal(link, "a symbolic link"));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link))) << "the link was replaced";
-  EXPECT_EQ(fs::read_symlink(link), fs::path("real.json"));
-  EXPECT_EQ(contents(real), "new\n");
+  EXPECT_EQ(contents(real), "another run's\n");
   EXPECT_EQ(entries(), 2) << "a temporary file was left behind";
 }
 
-TEST_F(AtomicFile, DanglingSymbolicLinkCreatesTheFileItNames) {
+TEST_F(AtomicFile, DanglingSymbolicLinkIsRefusedAndCreatesNothing) {
   const fs::path link = directory_ / "link.json";
   fs::create_symlink(directory_ / "later.json", link);
-  write_file_atomically(link.string(), "made\n");
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(link.string(), "made\n"); }),
+            refusal(link, "a symbolic link"));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
-  EXPECT_EQ(contents(directory_ / "later.json"), "made\n");
+  EXPECT_FALSE(fs::exists(directory_ / "later.json"));
 }
 
-TEST_F(AtomicFile, SymbolicLinkToADeviceWritesTheDevice) {
+TEST_F(AtomicFile, SymbolicLinkToADeviceIsRefused) {
   const auto null = testing::memory_device(directory_ / "null", testing::kNullMinor);
   if (!null) GTEST_SKIP() << "cannot make a device node here (needs root and CAP_MKNOD)";
   const fs::path link = directory_ / "out.json";
   fs::create_symlink(*null, link);
-  write_file_atomically(link.string(), "{}\n");
+  EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(link.string(), "{}\n"); }),
+            refusal(link, "a symbolic link"));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
   EXPECT_TRUE(testing::is_character_device(*null));
 }
 
-TEST_F(AtomicFile, LoopOfSymbolicLinksFails) {
+TEST_F(AtomicFile, LoopOfSymbolicLinksIsRefusedAsALink) {
   const fs::path a = directory_ / "a", b = directory_ / "b";
   fs::create_symlink(b, a);
   fs::create_symlink(a, b);
   EXPECT_EQ(testing::input_error_message([&] { write_file_atomically(a.string(), "x"); }),
-            a.string() + ": cannot write: Too many levels of symbolic links");
+            refusal(a, "a symbolic link"));
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(a)));
 }
 

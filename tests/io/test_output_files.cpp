@@ -1,8 +1,10 @@
 // test_output_files.cpp: issue 24, item 4. An earlier run's outputs are told from other files by
 // their signature (the JSON's first member, the CSV's header, the SVG's comment); an output that
 // is an input of the run is bad input; a file in the way that is not rodshape's is named and left
-// alone; only rodshape's files are removed.
+// alone; only rodshape's files are removed; a link (dangling or not) or a FIFO at an output is
+// refused (issue 43).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -97,6 +99,37 @@ TEST(OutputFiles, AFileInTheWayThatIsNotRodshapesIsNamedAndLeftAlone) {
       [&] { check_output_files(d.string(), plan_file_names(), {task.string()}); });
   EXPECT_NE(named.find("an input of this run"), std::string::npos) << named;
   EXPECT_TRUE(fs::exists(task));
+  fs::remove_all(d.parent_path());
+}
+
+TEST(OutputFiles, ALinkOrAFifoAtAnOutputIsRefusedNamedAndLeftAlone) {
+  // Issue 43: outputs are never written into a device, a pipe or through a symbolic link.
+  const fs::path d = fresh_directory("links"), other = fresh_directory("other_run");
+  const auto refusal = [](const fs::path& path, const std::string& what) {
+    return path.string() + ": cannot write: it is " + what +
+           "; outputs are never written into a device, a pipe or through a symbolic link "
+           "(docs/limits.md): remove it or give another output";
+  };
+  const auto message = [&](const std::vector<std::string>& names) {
+    return testing::input_error_message([&] { check_output_files(d.string(), names, {}); });
+  };
+  // Dangling: it created what it named (or failed after the set's first files were written).
+  fs::create_symlink("nowhere/trajectory.csv", d / "trajectory.csv");
+  EXPECT_EQ(message(plan_file_names()), refusal(d / "trajectory.csv", "a symbolic link"));
+  fs::remove(d / "trajectory.csv");
+  // Into another run's directory, at a file that is rodshape's: that run's file was written.
+  const std::string json =
+      "{\"" + std::string(kGeneratorKey) + "\": \"" + generator_signature() + "\"}\n";
+  fs::create_symlink(written(other / "plan.json", json), d / "plan.json");
+  EXPECT_EQ(message(plan_file_names()), refusal(d / "plan.json", "a symbolic link"));
+  remove_earlier_outputs(d.string(), plan_file_names());
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(d / "plan.json"))) << "the link was removed";
+  EXPECT_EQ(std::ifstream(other / "plan.json").peek(), '{');
+  fs::remove(d / "plan.json");
+  // A FIFO: writing it blocked until a reader came.
+  ASSERT_EQ(::mkfifo((d / "validation.csv").c_str(), 0600), 0);
+  EXPECT_EQ(message(validation_file_names()), refusal(d / "validation.csv", "a FIFO"));
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(d / "validation.csv")));
   fs::remove_all(d.parent_path());
 }
 

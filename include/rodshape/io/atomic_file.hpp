@@ -1,23 +1,30 @@
-// atomic_file.hpp: output files are written whole or not at all, and never replace a device, a
-// FIFO or a symbolic link.
+// atomic_file.hpp: output files are written whole or not at all, a set of them together, and
+// never into a device, a FIFO or through a symbolic link (issue 43: an output is a regular file
+// rodshape makes; docs/limits.md, "Files written").
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace rodshape {
 
-/// Writes `content` to `path`. On failure throws InputError "<path>: cannot write: <reason>"
-/// (e.g. "out.json: cannot write: No space left on device").
-///   - A regular file, or a path where nothing is: `content` goes to a new temporary file in the
-///     same directory, which is flushed to disk and renamed over `path` (atomic on POSIX file
-///     systems; an existing file keeps its permissions). On failure the temporary file is removed
-///     and `path` is left as it was.
-///   - A symbolic link is followed (through up to 40 links) and what it names is written as
-///     above; the link stays. A dangling link creates the file it names.
-///   - A character or block device or a FIFO (/dev/null, /dev/stdout, a named pipe) is opened
-///     and written in place, without truncating or replacing it; a FIFO waits for its reader. A
-///     device that takes less than the whole content (/dev/full) is an error.
-///   - A directory or a socket is an error.
+/// InputError "<path>: cannot write: it is a symbolic link; outputs are never written into a
+/// device, a pipe or through a symbolic link (docs/limits.md): remove it or give another output"
+/// (or "a FIFO", "a character device", "a block device", "a socket"; a directory: "<path>: cannot
+/// write: Is a directory") when something other than a regular file is at `path`. A link is
+/// refused whether or not it dangles. Never opens `path` (a FIFO cannot block it).
+void check_output_path(const std::string& path);
+
+/// Writes each (path, content) of `files` as one set: every path is checked first
+/// (check_output_path), then every content goes to a new temporary file beside its path, flushed
+/// to disk, and only when all are written are they renamed over their paths, in order (atomic per
+/// file on POSIX file systems; an existing file keeps its permissions). On any failure before the
+/// renames nothing is changed and the temporaries are removed. Throws InputError "<path>: cannot
+/// write: <reason>" (e.g. "out.json: cannot write: No space left on device").
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
+
+/// write_files_atomically() of one file.
 void write_file_atomically(const std::string& path, const std::string& content);
 
 /// Writes `content` to standard output (file descriptor 1, unbuffered), all of it or

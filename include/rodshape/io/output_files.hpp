@@ -2,10 +2,13 @@
 // output that is one of the run's own inputs (its task file, its URDF) is bad input. A file where
 // an output goes is replaced or removed only when it is recognisably rodshape's, an earlier run's
 // output: by the signature its JSON begins with, the header its CSV begins with, or the comment
-// its SVG begins with. Any other file in the way is bad input, named, and left alone.
+// its SVG begins with. Any other file in the way is bad input, named, and left alone. A device, a
+// FIFO or a symbolic link at an output is refused (issue 43), and a run's files are written as a
+// set: all checked, all written to temporaries, then renamed (write_output_set()).
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rodshape/figures/figures.hpp"
@@ -24,16 +27,17 @@ std::string generator_signature();  // "rodshape <version>"
 /// first member is kGeneratorKey with a value starting "rodshape", an SVG or an HTML page with
 /// the signature comment, trajectory.csv (with or without a moving base's columns) or
 /// validation.csv with their exact headers, joint_trajectory.csv and base_joint_trajectory.csv
-/// with a header "t,<joint names>". False for anything else, including files
-/// it cannot read.
+/// with a header "t,<joint names>". False for anything else, including files it cannot read and
+/// symbolic links (not followed).
 bool is_rodshape_output(const std::string& path);
 
 /// InputError "<output>: is <input>, an input of this run; ..." when `output` names the same file
 /// as one of `inputs` (through links, or as a hard link).
 void check_not_an_input(const std::string& output, const std::vector<std::string>& inputs);
 
-/// For each of `names` in `directory`: InputError when it is one of `inputs` or an existing file
-/// that is not rodshape's (is_rodshape_output), naming it. Writes and removes nothing.
+/// For each of `names` in `directory`: InputError when it is one of `inputs`, a device, a FIFO or a
+/// symbolic link (check_output_path()), or an existing file that is not rodshape's
+/// (is_rodshape_output), naming it. Writes and removes nothing, opens no device or FIFO.
 void check_output_files(const std::string& directory,
                         const std::vector<std::string>& names,
                         const std::vector<std::string>& inputs);
@@ -41,5 +45,19 @@ void check_output_files(const std::string& directory,
 /// Removes those of `names` in `directory` that are rodshape's outputs (an earlier run's); other
 /// files are left alone. InputError when one cannot be removed.
 void remove_earlier_outputs(const std::string& directory, const std::vector<std::string>& names);
+
+/// The files of one run, to be written together by write_output_set().
+struct OutputSet {
+  std::vector<std::pair<std::string, std::string>> files;  // (name in the directory, content)
+  std::vector<std::string> stale;  // names not written: an earlier run's files there are removed
+  void append(OutputSet other);
+};
+
+/// Creates `directory` (and its parents) if missing, writes set.files into it as one set
+/// (write_files_atomically(): every path checked before any is written, all written to
+/// temporaries, then renamed; a refused path or a failed write changes nothing), then removes the
+/// earlier run's files among set.stale (remove_earlier_outputs()). Returns the names written, in
+/// order. InputError naming the directory or the path.
+std::vector<std::string> write_output_set(const std::string& directory, OutputSet set);
 
 }  // namespace rodshape

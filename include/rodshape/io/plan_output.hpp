@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "rodshape/figures/figures.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
 #include "rodshape/trajectory/joint_trajectory.hpp"
@@ -87,15 +88,21 @@ const std::vector<std::string>& plan_file_names();
 /// exists and cannot be removed.
 void remove_plan_files(const std::string& directory);
 
-/// Writes the plan into `directory` (created with its parents if missing): plan.json; unless the
-/// plan is infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html;
-/// with a complete joint trajectory,
-/// joint_trajectory.csv and joint_trajectory.json; with a base arm's complete joint trajectory,
-/// base_joint_trajectory.csv and base_joint_trajectory.json (same forms). Each file is written
-/// whole or not at all, and the files of an earlier run that this plan does not write are removed
-/// when they are rodshape's (they would not match plan.json; check_output_files() first, to refuse
-/// others). Returns the names written, in order. Throws InputError when the directory cannot be
-/// made or a file cannot be written.
+/// The files of the plan, for write_output_set() (output_files.hpp): plan.json; unless the plan is
+/// infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html; with a
+/// complete joint trajectory, joint_trajectory.csv and joint_trajectory.json; with a base arm's
+/// complete joint trajectory, base_joint_trajectory.csv and base_joint_trajectory.json (same
+/// forms). The others of plan_file_names() are stale: an earlier run's would not match plan.json.
+OutputSet plan_outputs(const PlanResult& plan,
+                       const PlanTask& task,
+                       const FigureFiles& figures = {});
+
+/// Writes plan_outputs() into `directory` (created with its parents if missing) as one set: every
+/// path is checked before any is written (a device, a FIFO or a symbolic link is refused), each
+/// file is written whole, and none is replaced unless all are written; then the stale files of
+/// an earlier run are removed when they are rodshape's (check_output_files() first, to refuse
+/// others before planning). Returns the names written, in order. Throws InputError when the
+/// directory cannot be made or a file cannot be written.
 std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
                                     const PlanTask& task,

@@ -32,9 +32,15 @@ std::string validation_csv(const ValidationResult& result);
 /// The files write_validation() may write: validation.json, validation.csv, validation.svg,
 /// validation.html.
 const std::vector<std::string>& validation_file_names();
-/// Writes validation.json, validation.csv, validation.svg and (figures.html, three.js found:
-/// html_unavailable()) validation.html into `directory` (created with its parents if missing),
-/// each whole or not at all. Returns the names written.
+/// validation.json, validation.csv, validation.svg and (figures.html, three.js found:
+/// html_unavailable()) validation.html, for write_output_set(); without the page it is stale.
+OutputSet validation_outputs(const ValidationResult& result,
+                             const PlanResult& plan,
+                             const PlanTask& task,
+                             const FigureFiles& figures = {});
+/// Writes validation_outputs() into `directory` (created with its parents if missing) as one set,
+/// as write_plan() does. `rodshape validate` writes the plan's and these as one set. Returns the
+/// names written.
 std::vector<std::string> write_validation(const std::string& directory,
                                           const ValidationResult& result,
                                           const PlanResult& plan,
