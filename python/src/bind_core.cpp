@@ -13,28 +13,29 @@ namespace rodshape::python {
 namespace {
 
 void bind_pose_and_wrench(py::module_& m) {
-  py::class_<Pose>(m, "Pose", "A pose: position (3,) m and rotation (3, 3), world frame.")
-      .def(py::init([](const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation) {
+  py::class_<Pose> pose(m, "Pose", "A pose: position (3,) m and rotation (3, 3), world frame.");
+  pose.def(py::init([](const Eigen::Vector3d& position, const Eigen::Matrix3d& rotation) {
              return Pose{position, rotation};
            }),
            py::arg("position") = Eigen::Vector3d::Zero(),
-           py::arg("rotation") = Eigen::Matrix3d::Identity())
-      .def_readwrite("position", &Pose::position)
-      .def_readwrite("rotation", &Pose::rotation)
-      .def("__repr__", [](const Pose& p) {
-        return "Pose(position=[" + std::to_string(p.position.x()) + ", " +
-               std::to_string(p.position.y()) + ", " + std::to_string(p.position.z()) + "])";
-      });
-  py::class_<Wrench>(m, "Wrench",
-                     "A wrench: force (3,) N and moment (3,) N·m, world frame. BaseWrench is the "
-                     "same type: n(0), m(0), the unknown of the shooting method.")
+           py::arg("rotation") = Eigen::Matrix3d::Identity());
+  def_part(pose, "position", &Pose::position);
+  def_part(pose, "rotation", &Pose::rotation);
+  pose.def("__repr__", [](const Pose& p) {
+    return "Pose(position=[" + std::to_string(p.position.x()) + ", " +
+           std::to_string(p.position.y()) + ", " + std::to_string(p.position.z()) + "])";
+  });
+  py::class_<Wrench> wrench(m, "Wrench",
+                            "A wrench: force (3,) N and moment (3,) N·m, world frame. BaseWrench "
+                            "is the same type: n(0), m(0), the unknown of the shooting method.");
+  wrench
       .def(py::init([](const Eigen::Vector3d& force, const Eigen::Vector3d& moment) {
              return Wrench{force, moment};
            }),
            py::arg("force") = Eigen::Vector3d::Zero(), py::arg("moment") = Eigen::Vector3d::Zero())
-      .def_readwrite("force", &Wrench::force)
-      .def_readwrite("moment", &Wrench::moment)
       .def("to_vector", &Wrench::to_vector, "(force, moment) as a (6,) array");
+  def_part(wrench, "force", &Wrench::force);
+  def_part(wrench, "moment", &Wrench::moment);
   m.attr("BaseWrench") = m.attr("Wrench");
 }
 
@@ -42,19 +43,20 @@ void bind_rod(py::module_& m) {
   py::enum_<ConstitutiveModel>(m, "ConstitutiveModel")
       .value("Cosserat", ConstitutiveModel::Cosserat)
       .value("Kirchhoff", ConstitutiveModel::Kirchhoff);
-  py::class_<RodProperties>(m, "RodProperties", "The constants of the constitutive law (SI).")
-      .def(py::init<>())
+  py::class_<RodProperties> properties(m, "RodProperties",
+                                       "The constants of the constitutive law (SI).");
+  properties.def(py::init<>())
       .def_readwrite("length", &RodProperties::length, "L, m")
       .def_readwrite("model", &RodProperties::model)
-      .def_readwrite("K_tra", &RodProperties::K_tra, "diag(GA, GA, EA), N")
-      .def_readwrite("K_rot", &RodProperties::K_rot, "diag(EIx, EIy, GJ), N·m²")
-      .def_readwrite("v_rest", &RodProperties::v_rest)
-      .def_readwrite("u_rest", &RodProperties::u_rest, "precurvature ũ, 1/m")
       .def_readwrite("mass_per_length", &RodProperties::mass_per_length, "ρA, kg/m");
-  py::class_<DistributedLoad>(m, "DistributedLoad")
-      .def(py::init<>())
-      .def_readwrite("force", &DistributedLoad::force, "f, N/m")
-      .def_readwrite("moment", &DistributedLoad::moment, "l, N·m/m");
+  def_part(properties, "K_tra", &RodProperties::K_tra, "diag(GA, GA, EA), N");
+  def_part(properties, "K_rot", &RodProperties::K_rot, "diag(EIx, EIy, GJ), N·m²");
+  def_part(properties, "v_rest", &RodProperties::v_rest);
+  def_part(properties, "u_rest", &RodProperties::u_rest, "precurvature ũ, 1/m");
+  py::class_<DistributedLoad> load(m, "DistributedLoad");
+  load.def(py::init<>());
+  def_part(load, "force", &DistributedLoad::force, "f, N/m");
+  def_part(load, "moment", &DistributedLoad::moment, "l, N·m/m");
   py::class_<ClampedRod>(m, "ClampedRod",
                          "A rod clamped at s = 0: properties, distributed load, clamp pose, "
                          "intervals N (N + 1 nodes).")

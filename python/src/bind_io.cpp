@@ -139,12 +139,16 @@ void bind_tasks(py::module_& m) {
       .def_readwrite("rod", &EquilibriumTask::rod)
       .def_readonly("source", &EquilibriumTask::source)
       .def_property_readonly("kind", [](const EquilibriumTask&) { return "equilibrium"; });
-  py::class_<PlanTask>(m, "PlanTask", py::dynamic_attr(), "A plan task file, read and checked.")
-      .def_property(
-          "rod", [](const PlanTask& t) { return t.problem.rod; },
-          [](PlanTask& t, const ClampedRod& rod) { t.problem.rod = rod; })
-      .def_property_readonly("target_points",
-                             [](const PlanTask& t) { return rows_of(t.problem.target.points); })
+  py::class_<PlanTask> plan_task_class(m, "PlanTask", py::dynamic_attr(),
+                                       "A plan task file, read and checked.");
+  def_part(
+      plan_task_class, "rod", [](PlanTask& t) -> ClampedRod& { return t.problem.rod; },
+      "problem.rod");
+  plan_task_class
+      .def_property_readonly(
+          "target_points",
+          [](const PlanTask& t) { return read_only(rows_of(t.problem.target.points)); },
+          "(k, 3) problem.target.points, read-only")
       .def_property_readonly(
           "arm",
           [](const PlanTask& t) -> std::optional<ArmModel> {

@@ -36,9 +36,9 @@ void bind_target(py::module_& m) {
            py::arg("points"), py::arg("energy_weight") = ShapeTarget{}.energy_weight,
            py::arg("distance_weight") = ShapeTarget{}.distance_weight)
       .def_property(
-          "points", [](const ShapeTarget& t) { return rows_of(t.points); },
+          "points", [](const ShapeTarget& t) { return read_only(rows_of(t.points)); },
           [](ShapeTarget& t, const PointRows& points) { t.points = points_of(points); },
-          "(k, 3) objective points p_obj,i, m, world frame")
+          "(k, 3) objective points p_obj,i, m, world frame (read-only: assign a whole array)")
       .def_readwrite("energy_weight", &ShapeTarget::energy_weight, "W1 ≥ 0")
       .def_readwrite("distance_weight", &ShapeTarget::distance_weight, "W2 ≥ 0")
       .def_readwrite("squared_distances", &ShapeTarget::squared_distances)

@@ -9,45 +9,52 @@
 namespace rodshape::python {
 
 void bind_scene(py::module_& m) {
-  py::class_<SphereObstacle>(m, "SphereObstacle", "A ball: d(p) = |p - c| - r.")
+  py::class_<SphereObstacle> sphere(m, "SphereObstacle", "A ball: d(p) = |p - c| - r.");
+  sphere
       .def(py::init([](const Eigen::Vector3d& center, double radius) {
              return SphereObstacle{center, radius};
            }),
            py::arg("center"), py::arg("radius"))
-      .def_readwrite("center", &SphereObstacle::center, "m")
       .def_readwrite("radius", &SphereObstacle::radius, "m");
-  py::class_<BoxObstacle>(m, "BoxObstacle", "A box of full edges `size`, turned by `rotation`.")
-      .def(py::init([](const Eigen::Vector3d& center, const Eigen::Vector3d& size,
-                       const Eigen::Matrix3d& rotation) {
-             return BoxObstacle{center, size, rotation};
-           }),
-           py::arg("center"), py::arg("size"), py::arg("rotation") = Eigen::Matrix3d::Identity())
-      .def_readwrite("center", &BoxObstacle::center, "m")
-      .def_readwrite("size", &BoxObstacle::size, "m, full edges")
-      .def_readwrite("rotation", &BoxObstacle::rotation, "world_R_box");
-  py::class_<CapsuleObstacle>(m, "CapsuleObstacle", "The points within `radius` of [from, to].")
+  def_part(sphere, "center", &SphereObstacle::center, "m");
+  py::class_<BoxObstacle> box(m, "BoxObstacle",
+                              "A box of full edges `size`, turned by `rotation`.");
+  box.def(py::init([](const Eigen::Vector3d& center, const Eigen::Vector3d& size,
+                      const Eigen::Matrix3d& rotation) {
+            return BoxObstacle{center, size, rotation};
+          }),
+          py::arg("center"), py::arg("size"), py::arg("rotation") = Eigen::Matrix3d::Identity());
+  def_part(box, "center", &BoxObstacle::center, "m");
+  def_part(box, "size", &BoxObstacle::size, "m, full edges");
+  def_part(box, "rotation", &BoxObstacle::rotation, "world_R_box");
+  py::class_<CapsuleObstacle> capsule(m, "CapsuleObstacle",
+                                      "The points within `radius` of [from, to].");
+  capsule
       .def(py::init([](const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius) {
              return CapsuleObstacle{from, to, radius};
            }),
            py::arg("from_"), py::arg("to"), py::arg("radius"))
-      .def_readwrite("from_", &CapsuleObstacle::from, "m")
-      .def_readwrite("to", &CapsuleObstacle::to, "m")
       .def_readwrite("radius", &CapsuleObstacle::radius, "m");
-  py::class_<HalfSpaceObstacle>(m, "HalfSpaceObstacle",
-                                "Solid where normal·p > offset (free where normal·p <= offset).")
+  def_part(capsule, "from_", &CapsuleObstacle::from, "m");
+  def_part(capsule, "to", &CapsuleObstacle::to, "m");
+  py::class_<HalfSpaceObstacle> half_space(
+      m, "HalfSpaceObstacle", "Solid where normal·p > offset (free where normal·p <= offset).");
+  half_space
       .def(py::init([](const Eigen::Vector3d& normal, double offset) {
              return HalfSpaceObstacle{normal, offset};
            }),
            py::arg("normal"), py::arg("offset"))
-      .def_readwrite("normal", &HalfSpaceObstacle::normal)
       .def_readwrite("offset", &HalfSpaceObstacle::offset, "m");
-  py::class_<Obstacle>(m, "Obstacle")
+  def_part(half_space, "normal", &HalfSpaceObstacle::normal);
+  py::class_<Obstacle> obstacle(m, "Obstacle");
+  def_part(obstacle, "shape", &Obstacle::shape,
+           "the obstacle's own SphereObstacle, BoxObstacle, CapsuleObstacle or HalfSpaceObstacle");
+  obstacle
       .def(py::init([](const ObstacleShape& shape, const std::string& name) {
              return Obstacle{name, shape};
            }),
            py::arg("shape"), py::arg("name") = "")
       .def_readwrite("name", &Obstacle::name)
-      .def_readwrite("shape", &Obstacle::shape)
       .def_property_readonly("kind", &Obstacle::kind)
       .def(
           "distance",
@@ -56,12 +63,19 @@ void bind_scene(py::module_& m) {
             return py::make_tuple(d.distance, d.gradient);
           },
           py::arg("p"), "(signed distance m, its gradient) at p");
-  py::class_<Scene>(m, "Scene")
-      .def(py::init<>())
-      .def_readwrite("obstacles", &Scene::obstacles, "at most 1000")
+  // The scene's own list: append, del, [i] = ..., extend change the scene; a Python list or tuple
+  // is taken where an ObstacleList is wanted.
+  py::bind_vector<std::vector<Obstacle>>(m, "ObstacleList",
+                                         "Scene.obstacles: the scene's own list of Obstacle");
+  py::implicitly_convertible<py::list, std::vector<Obstacle>>();
+  py::implicitly_convertible<py::tuple, std::vector<Obstacle>>();
+  py::class_<Scene> scene(m, "Scene");
+  scene.def(py::init<>())
       .def_readwrite("clearance", &Scene::clearance, "m, least gap of the rod's surface")
       .def_readwrite("rod_radius", &Scene::rod_radius, "m, the section's circumscribed radius")
       .def("validate", &Scene::validate);
+  def_part(scene, "obstacles", &Scene::obstacles,
+           "the ObstacleList, at most 1000 (assign a list, or change it in place)");
   py::class_<RobotGapResult>(m, "RobotGapResult",
                              "The least gap of an arm's links to the scene or the rod over the "
                              "joint trajectory's samples.")

@@ -1,4 +1,6 @@
 // bind_sim.cpp: the simulated experiment's results (validate() is bound with the task in io).
+#include <optional>
+
 #include "bindings.hpp"
 #include "rodshape/feedback/marker_measurement.hpp"
 #include "rodshape/feedback/shape_controller.hpp"
@@ -16,21 +18,19 @@ py::array_t<double> array_of(const std::vector<double>& values) {
 }  // namespace
 
 void bind_models(py::module_& m) {
-  py::class_<PlantModel>(m, "PlantModel",
-                         "The simulated experiment's real rod, where it differs from the "
-                         "planner's (a plan task's plant section).")
-      .def(py::init<>())
+  py::class_<PlantModel> plant(m, "PlantModel",
+                               "The simulated experiment's real rod, where it differs from the "
+                               "planner's (a plan task's plant section).");
+  def_part(plant, "gravity", &PlantModel::gravity,
+           "(3,) m/s², world frame: the one gravity on the real rod, or None: planner_gravity");
+  def_part(plant, "planner_gravity", &PlantModel::planner_gravity,
+           "(3,) m/s²: the planner's gravity (the task's), whose weight the plant's replaces");
+  def_part(plant, "rest_curvature", &PlantModel::rest_curvature, "ũ (3,) 1/m, or None");
+  plant.def(py::init<>())
       .def_readwrite("stiffness_scale", &PlantModel::stiffness_scale, "on every stiffness, > 0")
       .def_readwrite("length", &PlantModel::length, "m, or None: the planner's")
       .def_readwrite("mass_per_length", &PlantModel::mass_per_length,
                      "ρA, kg/m, or None: the planner's")
-      .def_readwrite("gravity", &PlantModel::gravity,
-                     "(3,) m/s², world frame: the one gravity on the real rod, or None: "
-                     "planner_gravity")
-      .def_readwrite("planner_gravity", &PlantModel::planner_gravity,
-                     "(3,) m/s²: the planner's gravity (the task's), whose weight the plant's "
-                     "replaces")
-      .def_readwrite("rest_curvature", &PlantModel::rest_curvature, "ũ (3,) 1/m, or None")
       .def_readwrite("grasp_offset", &PlantModel::grasp_offset,
                      "the tip's actual pose in the commanded tip frame")
       .def("validate", &PlantModel::validate)
@@ -76,9 +76,29 @@ void bind_models(py::module_& m) {
 }
 
 void bind_closed_loop(py::module_& m) {
-  py::class_<ClosedLoopOptions>(
-      m, "ClosedLoopOptions", "The closed loop's checkpoints (a plan task's closed_loop section).")
-      .def(py::init<>())
+  py::class_<ClosedLoopOptions> loop(
+      m, "ClosedLoopOptions", "The closed loop's checkpoints (a plan task's closed_loop section).");
+  // The estimator's options by the task file's names (ClosedLoopOptions::estimation).
+  def_part(
+      loop, "estimate_stiffness",
+      [](ClosedLoopOptions& o) -> bool& { return o.estimation.estimate_stiffness; },
+      "also estimate a factor on every stiffness");
+  def_part(
+      loop, "gravity",
+      [](ClosedLoopOptions& o) -> std::optional<Eigen::Vector3d>& { return o.estimation.gravity; },
+      "(3,) m/s², world frame: the gravity the model may lack, whose weight's factor λ is then "
+      "estimated too; or None");
+  def_part(
+      loop, "tip_position_sigma",
+      [](ClosedLoopOptions& o) -> double& { return o.estimation.tip_position_sigma; },
+      "m: how well the arm knows where it holds the tip");
+  def_part(
+      loop, "tip_rotation_sigma",
+      [](ClosedLoopOptions& o) -> double& { return o.estimation.tip_rotation_sigma; }, "rad");
+  def_part(
+      loop, "prior_sigma", [](ClosedLoopOptions& o) -> double& { return o.estimation.prior_sigma; },
+      "the base wrench prior's standard deviation, in bending units");
+  loop.def(py::init<>())
       .def_readwrite("replan", &ClosedLoopOptions::replan)
       .def_readwrite("significance", &ClosedLoopOptions::significance,
                      "act on an estimate when its χ² drop exceeds k + significance·√(2k); < 0: "

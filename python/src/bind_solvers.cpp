@@ -17,15 +17,16 @@ void bind_tips(py::module_& m) {
   py::class_<ClampedTip>(m, "ClampedTip", "Clamped–clamped: the tip held at a pose.")
       .def(py::init([](const Pose& p) { return ClampedTip{p}; }), py::arg("pose"))
       .def_readwrite("pose", &ClampedTip::pose);
-  py::class_<GraspedTip>(m, "GraspedTip",
-                         "The tip held at a pose except along released axes (fx, fy, fz, mx, my, "
-                         "mz of the grasp frame), which carry no wrench.")
+  py::class_<GraspedTip> grasped(m, "GraspedTip",
+                                 "The tip held at a pose except along released axes (fx, fy, fz, "
+                                 "mx, my, mz of the grasp frame), which carry no wrench.");
+  grasped
       .def(py::init([](const Pose& p, const std::array<bool, 6>& released) {
              return GraspedTip{p, released};
            }),
            py::arg("pose"), py::arg("released"))
-      .def_readwrite("pose", &GraspedTip::pose)
-      .def_readwrite("released", &GraspedTip::released);
+      .def_readwrite("pose", &GraspedTip::pose);
+  def_part(grasped, "released", &GraspedTip::released, "(6,) bool: the released axes");
 }
 
 void bind_results(py::module_& m) {

@@ -80,33 +80,38 @@ void set_arm_model(std::optional<PlanArm>& arm, std::optional<ArmModel> model) {
 }
 
 void bind_moving_base(py::module_& m) {
-  py::class_<MovingBase>(m, "MovingBase",
-                         "The base end (s = 0) held by a moving gripper (issue 21), not a fixed "
-                         "clamp: its grasp, wrench bounds and motion weight. Set "
-                         "PlanProblem.moving_base to one (a copy is stored: change a MovingBase, "
-                         "then assign it).")
-      .def(py::init<>())
-      .def_property(
-          "released", [](const MovingBase& b) { return b.grasp.released; },
-          [](MovingBase& b, const std::array<bool, 6>& r) { b.grasp.released = r; },
-          "base-frame base wrench components (fx, fy, fz, mx, my, mz) the base gripper cannot "
-          "transmit (base_grasp.zero_wrench)")
-      .def_property(
-          "base_to_end_effector", [](const MovingBase& b) { return b.grasp.tip_to_end_effector; },
-          [](MovingBase& b, const Pose& pose) { b.grasp.tip_to_end_effector = pose; },
-          "base_T_ee: the base gripper's pose is world_T_base · base_T_ee "
-          "(base_grasp.base_to_end_effector)")
-      .def_property(
-          "wrench_lower", [](const MovingBase& b) -> Vector6d { return b.wrench_bounds.lower; },
-          [](MovingBase& b, const Vector6d& v) { b.wrench_bounds.lower = v; },
-          "(6,) lower bounds on the base gripper's wrench, base frame (-inf: none)")
-      .def_property(
-          "wrench_upper", [](const MovingBase& b) -> Vector6d { return b.wrench_bounds.upper; },
-          [](MovingBase& b, const Vector6d& v) { b.wrench_bounds.upper = v; },
-          "(6,) upper bounds on the base gripper's wrench, base frame (inf: none)")
+  py::class_<MovingBase> base(m, "MovingBase",
+                              "The base end (s = 0) held by a moving gripper (issue 21), not a "
+                              "fixed clamp: its grasp, wrench bounds and motion weight. Set "
+                              "PlanProblem.moving_base to one (a copy is stored: change a "
+                              "MovingBase, then assign it, or change PlanProblem.moving_base).");
+  base.def(py::init<>())
       .def_readwrite("motion_weight", &MovingBase::motion_weight,
                      "W_b, the weight of the base's least motion from the step before (>= 0)")
       .def("validate", &MovingBase::validate);
+  def_part(
+      base, "released", [](MovingBase& b) -> std::array<bool, 6>& { return b.grasp.released; },
+      "(6,) bool: base-frame base wrench components (fx, fy, fz, mx, my, mz) the base gripper "
+      "cannot transmit (base_grasp.zero_wrench)");
+  def_part(
+      base, "base_to_end_effector",
+      [](MovingBase& b) -> Pose& { return b.grasp.tip_to_end_effector; },
+      "base_T_ee: the base gripper's pose is world_T_base · base_T_ee "
+      "(base_grasp.base_to_end_effector)");
+  def_part(
+      base, "wrench_lower", [](MovingBase& b) -> Vector6d& { return b.wrench_bounds.lower; },
+      "(6,) lower bounds on the base gripper's wrench, base frame (-inf: none)");
+  def_part(
+      base, "wrench_upper", [](MovingBase& b) -> Vector6d& { return b.wrench_bounds.upper; },
+      "(6,) upper bounds on the base gripper's wrench, base frame (inf: none)");
+}
+
+/// The placement of `arm`, to be changed in place; InputError saying how when there is no arm.
+Pose& world_T_base(std::optional<PlanArm>& arm, const char* name, const char* arm_name) {
+  if (!arm)
+    throw InputError(std::string("PlanProblem.") + name + ": set PlanProblem." + arm_name +
+                     " first (no arm, no placement)");
+  return arm->placement.world_T_base;
 }
 
 void bind_problem(py::module_& m) {
@@ -121,9 +126,27 @@ void bind_problem(py::module_& m) {
       .def_static("equilibrium",
                   py::overload_cast<const RodConfiguration&>(&InitialState::equilibrium),
                   py::arg("configuration"));
-  py::class_<PlanProblem>(m, "PlanProblem",
-                          "What a plan is asked for: the rod, the target, the grasp's released "
-                          "components, strain limits, the initial equilibrium, optionally an arm.")
+  py::class_<PlanProblem> problem_class(
+      m, "PlanProblem",
+      "What a plan is asked for: the rod, the target, the grasp's "
+      "released components, strain limits, the initial equilibrium, "
+      "optionally an arm.");
+  def_part(
+      problem_class, "released",
+      [](PlanProblem& p) -> std::array<bool, 6>& { return p.grasp.released; },
+      "(6,) bool: grasp-frame tip wrench components (fx, fy, fz, mx, my, mz) the grasp cannot "
+      "transmit");
+  def_part(
+      problem_class, "world_T_base",
+      [](PlanProblem& p) -> Pose& { return world_T_base(p.arm, "world_T_base", "arm"); },
+      "where the arm stands (InputError without an arm)");
+  def_part(
+      problem_class, "base_world_T_base",
+      [](PlanProblem& p) -> Pose& {
+        return world_T_base(p.base_arm, "base_world_T_base", "base_arm");
+      },
+      "where the base arm stands (InputError without a base arm)");
+  problem_class
       .def(py::init([](const ClampedRod& rod, const ShapeTarget& target,
                        const InitialState& initial, const std::array<bool, 6>& released) {
              PlanProblem problem;
@@ -140,23 +163,12 @@ void bind_problem(py::module_& m) {
       .def_readwrite("initial", &PlanProblem::initial)
       .def_readwrite("scene", &PlanProblem::scene, "the cell's obstacles (a Scene)")
       .def_property(
-          "released", [](const PlanProblem& p) { return p.grasp.released; },
-          [](PlanProblem& p, const std::array<bool, 6>& r) { p.grasp.released = r; },
-          "grasp-frame tip wrench components (fx, fy, fz, mx, my, mz) the grasp cannot transmit")
-      .def_property(
           "max_curvature", [](const PlanProblem& p) { return p.limits.max_curvature; },
           [](PlanProblem& p, std::optional<double> k) { p.limits.max_curvature = k; }, "1/m")
       .def_property(
           "arm", [](const PlanProblem& p) { return arm_model(p.arm); },
           [](PlanProblem& p, std::optional<ArmModel> arm) { set_arm_model(p.arm, arm); },
           "the ArmModel holding the tip (placed by world_T_base), or None")
-      .def_property(
-          "world_T_base",
-          [](const PlanProblem& p) { return p.arm ? p.arm->placement.world_T_base : Pose{}; },
-          [](PlanProblem& p, const Pose& pose) {
-            if (!p.arm) throw InputError("PlanProblem.world_T_base: set PlanProblem.arm first");
-            p.arm->placement.world_T_base = pose;
-          })
       .def_readwrite("moving_base", &PlanProblem::moving_base,
                      "a MovingBase when the base end is held by a moving gripper, None for a "
                      "fixed clamp at rod.clamp (the base's initial pose)")
@@ -165,17 +177,6 @@ void bind_problem(py::module_& m) {
           [](PlanProblem& p, std::optional<ArmModel> arm) { set_arm_model(p.base_arm, arm); },
           "the ArmModel holding the base end (placed by base_world_T_base; needs moving_base), "
           "or None")
-      .def_property(
-          "base_world_T_base",
-          [](const PlanProblem& p) {
-            return p.base_arm ? p.base_arm->placement.world_T_base : Pose{};
-          },
-          [](PlanProblem& p, const Pose& pose) {
-            if (!p.base_arm)
-              throw InputError("PlanProblem.base_world_T_base: set PlanProblem.base_arm first");
-            p.base_arm->placement.world_T_base = pose;
-          },
-          "where the base arm stands")
       .def("base_moves", &PlanProblem::base_moves)
       .def("validate", &PlanProblem::validate);
   py::class_<PlanOptions>(m, "PlanOptions")

@@ -25,6 +25,11 @@ py::array_t<double> stack_of(const std::vector<Eigen::Matrix3d>& matrices) {
   return out;
 }
 
+py::array read_only(py::array array) {
+  array.attr("setflags")(py::arg("write") = false);
+  return array;
+}
+
 }  // namespace rodshape::python
 
 PYBIND11_MODULE(_rodshape, m) {
