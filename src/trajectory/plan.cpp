@@ -674,6 +674,35 @@ PlanResult plan_by_search(const PlanProblem& problem,
   return result;
 }
 
+/// Appended to an incomplete plan's message when `optimum`'s last step, the target's set, passes
+/// within the reach tolerance of the points but has a conjugate point before the tip (the step's
+/// assess_stability): held at the clamp and the end effector the rod cannot rest in that shape, so
+/// no path to it completes. A helix held so has one after 1.0–1.45 turns whatever its radius and
+/// pitch (docs/task-file.md, plan.json `message`): why a 2.5-turn helix has no plan.
+void note_unstable_optimum(PlanResult& result,
+                           const PlanResult& optimum,
+                           const PlanProblem& problem,
+                           const PlanOptions& options) {
+  if (result.complete() || optimum.status == PlanStatus::Partial ||
+      optimum.status == PlanStatus::Infeasible || optimum.steps.empty())
+    return;
+  const PlanStep& goal = optimum.steps.back();
+  const std::optional<StabilityResult>& stability = goal.solution.stability;
+  const double length = problem.rod.properties.length;
+  if (!(goal.fraction >= 1.0) || !stability || stability->stable || !stability->conjugate_point_s ||
+      !(goal.solution.cost.max_distance <= options.reach_tolerance_for(length)))
+    return;
+  std::ostringstream out;
+  out.precision(3);
+  out << "; no complete plan ends on the target's optimum: it passes within "
+      << goal.solution.cost.max_distance * 1e3 << " mm of the points (" << goal.solution.cost.energy
+      << " J) but is unstable held at the clamp and the end effector (a conjugate point at s = "
+      << *stability->conjugate_point_s << " m of " << length
+      << " m: the rod between the clamp and there can buckle with both ends held, as a helix "
+         "does beyond about 1.3 turns)";
+  result.message += out.str();
+}
+
 InterpolationTrial trial(const PlanResult& plan, ObjectiveInterpolation scheme) {
   return {scheme, plan.status, plan_stages::peak_ratio(plan), plan.complete() ? "" : plan.message};
 }
@@ -692,7 +721,11 @@ PlanResult gentlest_plan(const PlanProblem& problem,
     // segment they block is another detour search (seconds), for plans that rarely win.
     const int schemes_tried = problem.scene.empty() ? 2 : 1;
     const PlanResult plan_for_optimum = best;  // the Shape plan: its last step is the optimum
-    PlanResult others[2] = {plan_by_pose(problem, options, initial, &plan_for_optimum), {}};
+    // the target's optimum: the Shape plan's last step, or the untracked sets' where it failed
+    PlanResult reference;
+    const PlanResult& optimum =
+        optimum_plan(problem, options, initial, &plan_for_optimum, reference);
+    PlanResult others[2] = {plan_by_pose(problem, options, initial, &optimum), {}};
     if (schemes_tried == 2)
       others[1] = plan_by_sets(
           problem, with_interpolation(options, ObjectiveInterpolation::Projection), initial);
@@ -713,7 +746,7 @@ PlanResult gentlest_plan(const PlanProblem& problem,
     if (!gentle_peak(best)) {  // none gentle: a path searched for within the ratio, to the
       // optimum of the best plan so far (the Shape plan's when none completed)
       PlanResult searched =
-          plan_by_search(problem, options, initial, best.complete() ? &best : &plan_for_optimum);
+          plan_by_search(problem, options, initial, best.complete() ? &best : &optimum);
       tried.push_back(trial(searched, ObjectiveInterpolation::Search));
       if (searched.complete() && !(searched.steps.back().solution.cost.max_distance <= reach))
         tried.back().note = farther_than(searched, reach);
@@ -724,6 +757,7 @@ PlanResult gentlest_plan(const PlanProblem& problem,
     for (InterpolationTrial& t : tried)
       if (t.scheme != best.interpolation.used && t.note.empty())
         t.note = "not the gentlest complete plan";
+    note_unstable_optimum(best, optimum, problem, options);
   }
   best.interpolation.tried = std::move(tried);
   return best;
@@ -743,6 +777,7 @@ PlanResult plan_by_scheme(const PlanProblem& problem,
     case ObjectiveInterpolation::Pose: {
       PlanResult result = plan_by_pose(problem, options, initial, nullptr);
       result.interpolation.tried = {trial(result, ObjectiveInterpolation::Pose)};
+      note_unstable_optimum(result, result, problem, options);  // a failed path keeps its steps
       return result;
     }
     case ObjectiveInterpolation::Search: {
@@ -753,6 +788,8 @@ PlanResult plan_by_scheme(const PlanProblem& problem,
     default: {
       PlanResult result = plan_by_sets(problem, options, initial);
       result.interpolation.tried = {trial(result, options.interpolation)};
+      if (options.planned_steps() == options.steps)
+        note_unstable_optimum(result, result, problem, options);
       return result;
     }
   }

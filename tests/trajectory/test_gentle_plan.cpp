@@ -12,6 +12,7 @@
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/samples/rubber_band.hpp"
+#include "rodshape/solvers/stability.hpp"
 #include "rodshape/trajectory/intermediate_targets.hpp"
 #include "rodshape/trajectory/plan.hpp"
 #include "support/scene_replay.hpp"
@@ -220,6 +221,68 @@ TEST(GentlePlan, SearchFindsAPathWithinTheGentleRatioToTheSameOptimum) {
     EXPECT_EQ(again.steps[k].end_effector.position, searched.steps[k].end_effector.position) << k;
   task.options.horizon = 2;
   EXPECT_THROW(plan(task.problem, task.options), InputError);
+}
+
+/// A nylon line (r = 2 mm, E = 2 GPa, its weight on) of `length` m clamped at the start of a helix
+/// of radius 5 cm and pitch 17.58 cm (axis +z), the tangent there its d3; one placeholder point.
+PlanTask nylon_helix_task(double length) {
+  const std::string yaml =
+      "rod: {length: " + std::to_string(length) +
+      ", nodes: 201, section: {shape: circle, radius: 0.002},\n"
+      "      material: {young_modulus: 2.0e9, poisson_ratio: 0.4, density: 1150}}\n"
+      "gravity: [0, 0, -9.81]\n"
+      "base: {position: [0, 0, 0],\n"
+      "       rotation: [[1, 0, 0], [0, 0.488320, 0.872665], [0, -0.872665, 0.488320]]}\n"
+      "target: {points: [[-0.05, 0.05, 0.044]]}\n"
+      "trajectory: {steps: 10, interpolation: shape}\n";
+  return parse_plan_task(yaml, "nylon_helix.yaml");
+}
+
+/// Issue 43 (8): a 1 m nylon line wound into 2.5 turns of that helix has no complete plan, and the
+/// plan says why. The points are reachable by construction: the rod integrated from the clamp with
+/// the base moment EI/h along the helix's axis (h = √(R² + c²), c = pitch/2π: the twisted helix of
+/// L/(2πh) = 2.8 turns, weight aside), sampled at s = 0.09 k − 1.3 mm, k = 1 … 10 (4 a turn). But
+/// held at the clamp and the end effector that shape is unstable, a conjugate point near 0.48 m
+/// (1.3 turns; so is every helix of any radius and pitch, twisted or not, about there), and so is
+/// the target's optimum the steps reach (0.2 mm from the points): no plan can end on it, and the
+/// message names the conjugate point rather than only the jump. plan_cable_helix's 0.4 m (1.1
+/// turns) of the same helix is short of it: stable.
+TEST(GentlePlan, AHelixOfTwoAndAHalfTurnsIsUnstableHeldAtBothEnds) {
+  PlanTask task = nylon_helix_task(1.0);
+  const ClampedRod& rod = task.problem.rod;
+  const double R = 0.05, c = 0.1758 / (2.0 * std::numbers::pi), h = std::hypot(R, c);
+  const BaseWrench helix{Eigen::Vector3d::Zero(),
+                         Eigen::Vector3d(0, 0, rod.properties.K_rot.x() / h)};
+  const RodConfiguration generating = integrate(rod, helix, Derivatives::AllNodes);
+  const StabilityResult held = assess_stability(rod, generating);
+  EXPECT_FALSE(held.stable);
+  ASSERT_TRUE(held.conjugate_point_s.has_value());
+  EXPECT_GT(*held.conjugate_point_s / (2.0 * std::numbers::pi * h), 1.2);  // turns
+  EXPECT_LT(*held.conjugate_point_s / (2.0 * std::numbers::pi * h), 1.45);
+
+  const PlanTask short_task = nylon_helix_task(0.4);
+  EXPECT_TRUE(assess_stability(short_task.problem.rod,
+                               integrate(short_task.problem.rod, helix, Derivatives::AllNodes))
+                  .stable);
+
+  std::vector<double> s;
+  for (int k = 1; k <= 10; ++k) s.push_back(0.09 * k - 0.0013);
+  task.problem.target.points = points_at_arc_lengths(rod, generating, s);
+  const PlanResult result = plan(task.problem, task.options);
+  ASSERT_FALSE(result.steps.empty()) << result.message;
+  EXPECT_NE(result.status, PlanStatus::Complete);
+  const PlanStep& last = result.steps.back();
+  EXPECT_EQ(last.fraction, 1.0);
+  EXPECT_LE(last.solution.cost.max_distance, 1e-3);  // the steps reach the points
+  ASSERT_TRUE(last.solution.stability.has_value());
+  EXPECT_FALSE(last.solution.stability->stable);
+  ASSERT_TRUE(last.solution.stability->conjugate_point_s.has_value());
+  EXPECT_LT(*last.solution.stability->conjugate_point_s, 0.6);
+  EXPECT_NE(result.message.find("no complete plan ends on the target's optimum"), std::string::npos)
+      << result.message;
+  EXPECT_NE(result.message.find("unstable held at the clamp and the end effector"),
+            std::string::npos)
+      << result.message;
 }
 
 TEST(GentlePlan, PoseIsUsedAloneWhenAskedAndNeedsTheWholeWay) {
