@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   options.steps = 7;
 
   const PlanResult result = plan(problem, options);
-  std::printf("%s\n", result.brief(options.steps).c_str());
+  std::printf("%s\n", result.brief().c_str());
   for (const PlanStep& step : result.steps)
     std::printf("  step at %.3f: max distance %.3f mm, energy %.4f J\n", step.fraction,
                 step.solution.cost.max_distance * 1e3, step.solution.cost.energy);

@@ -23,7 +23,7 @@ options = rodshape.PlanOptions()
 options.steps = 7
 
 result = rodshape.plan_problem(problem, options)
-print(result.brief(options.steps))
+print(result.brief())
 for step in result.steps:
     print(f"  step at {step.fraction:.3f}: max distance {step.max_distance * 1e3:.3f} mm, "
           f"energy {step.energy:.4f} J")

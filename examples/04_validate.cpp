@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     task.plant.grasp_offset.position = {0.002, 0.0, 0.0};
 
     const PlanResult planned = plan(task.problem, task.options);
-    std::printf("%s\n", planned.brief(task.options.steps).c_str());
+    std::printf("%s\n", planned.brief().c_str());
     if (!planned.complete()) return 3;
     for (bool closed_loop : {false, true}) {
       ValidationOptions options;

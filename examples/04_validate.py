@@ -18,7 +18,7 @@ task.plant.grasp_offset = offset
 for closed_loop in (False, True):
     v = rodshape.validate(task, runs=2, seed=7, closed_loop=closed_loop)
     if closed_loop is False:
-        print(v.plan.brief(task.options.steps))
+        print(v.plan.brief())
     print(f"{'closed' if closed_loop else 'open'} loop: {v.brief()}")
     for run in v.runs:
         print(f"  seed {run.seed}: final true error {run.final.true_error * 1e3:.3f} mm")

@@ -11,6 +11,7 @@
 #include "rodshape/io/atomic_file.hpp"
 #include "rodshape/io/estimate_task.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
@@ -227,8 +228,7 @@ void bind_outcomes(py::module_& m) {
       .def_property_readonly(
           "scene", [](const Plan& p) { return p.result.scene; },
           "with a scene, its SceneResult (least gap, where), else None")
-      .def("brief",
-           [](const Plan& p) { return fields_in_task_names(p.result.brief(p.task.options.steps)); })
+      .def("brief", [](const Plan& p) { return fields_in_task_names(p.result.brief()); })
       .def("to_json", &Plan::to_json, "The plan.json document `rodshape plan` writes.")
       .def(
           "write",
@@ -260,11 +260,10 @@ void bind_outcomes(py::module_& m) {
       .def(
           "write",
           [](const Validation& v, const std::string& directory, bool html) {
-            std::vector<std::string> names = write_plan(directory, v.plan, v.task, {.html = html});
-            for (std::string& name :
-                 write_validation(directory, v.result, v.plan, v.task, {.html = html}))
-              names.push_back(std::move(name));
-            return names;
+            // one set, as the CLI writes it: all checked and written, then renamed
+            OutputSet set = plan_outputs(v.plan, v.task, {.html = html});
+            set.append(validation_outputs(v.result, v.plan, v.task, {.html = html}));
+            return write_output_set(directory, std::move(set));
           },
           py::arg("directory"), py::arg("html") = true,
           "Writes the files `rodshape validate` writes (the HTML pages unless html=False).");
@@ -280,7 +279,8 @@ void bind_io(py::module_& m) {
       },
       py::arg("path"), py::arg("content"),
       "Writes the bytes `content` to `path` whole or not at all, as the CLI writes its files (a "
-      "device, a FIFO or a link is written through, never replaced); InputError on failure.");
+      "device, a FIFO or a symbolic link at `path` is refused, never written into); InputError "
+      "on failure.");
   m.def("html_unavailable", &html_unavailable,
         "Why the 3D pages (plan.html, validation.html) cannot be written: three.js not found "
         "(Debian: libjs-three); \"\" when they can.");

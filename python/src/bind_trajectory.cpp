@@ -197,19 +197,19 @@ void bind_problem(py::module_& m) {
       .def_property(
           "interpolation", [](const PlanOptions& o) { return to_string(o.interpolation); },
           [](PlanOptions& o, const std::string& name) {
-            for (ObjectiveInterpolation scheme :
-                 {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
-                  ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
-                  ObjectiveInterpolation::Pose, ObjectiveInterpolation::Search})
-              if (to_string(scheme) == name) {
-                o.interpolation = scheme;
-                return;
-              }
-            throw InputError("PlanOptions.interpolation", " = '" + name +
-                                                              "' must be auto, shape, arc_length, "
-                                                              "projection or pose");
+            if (const auto scheme = value_of(kObjectiveInterpolationNames, name)) {
+              o.interpolation = *scheme;
+              return;
+            }
+            throw InputError("PlanOptions.interpolation",
+                             " = '" + name +
+                                 "' must be auto, shape, arc_length, projection, pose "
+                                 "or search");
           },
-          "auto (default), shape, arc_length, projection or pose")
+          "auto (default), shape, arc_length, projection, pose or search")
+      .def_readwrite("reach_tolerance", &PlanOptions::reach_tolerance,
+                     "m: complete only when the final shape passes within it of every target "
+                     "point (None: 1 % of the rod's length)")
       .def_property(
           "max_linear_speed", [](const PlanOptions& o) { return o.end_effector.max_linear_speed; },
           [](PlanOptions& o, double v) { o.end_effector.max_linear_speed = v; }, "m/s")
@@ -274,6 +274,12 @@ void bind_trajectory(py::module_& m) {
           "complete, snap_through, partial, infeasible or collision")
       .def_readonly("message", &PlanResult::message)
       .def_readonly("horizon", &PlanResult::horizon, "the steps planned under a horizon, else 0")
+      .def_readonly("target_distance", &PlanResult::target_distance,
+                    "m: the largest distance from the final shape to a target point")
+      .def_readonly("target_point", &PlanResult::target_point, "that point's index")
+      .def_readonly("reach_tolerance", &PlanResult::reach_tolerance,
+                    "m: the reach tolerance the plan was judged with")
+      .def_readonly("options", &PlanResult::options, "the PlanOptions the plan was made with")
       .def_readonly("steps", &PlanResult::steps)
       .def_readonly("initial_configuration", &PlanResult::initial_configuration)
       .def_readonly("initial_wrench", &PlanResult::initial_wrench)
@@ -334,8 +340,9 @@ void bind_trajectory(py::module_& m) {
           },
           "with a base arm, \"reachable: ...\" or why not, else None")
       .def("complete", &PlanResult::complete)
-      .def("brief", &PlanResult::brief, py::arg("steps_requested"),
-           "One line: status, steps (of steps_requested), final distance and energy, tracking.");
+      .def(
+          "brief", &PlanResult::brief,
+          "One line: status, steps (of the steps requested), final distance and energy, tracking.");
   m.def(
       "plan_problem",
       [](const PlanProblem& problem, const PlanOptions& options) { return plan(problem, options); },

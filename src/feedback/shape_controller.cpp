@@ -183,7 +183,7 @@ void ShapeController::replan(Checkpoint& c, const BaseWrench& from) {
   options.track_between_waypoints = !rest.scene.empty();
   try {
     const PlanResult again = plan(rest, options);
-    c.message = again.brief(options.steps);
+    c.message = again.brief();
     if (again.status != PlanStatus::Complete) return;
     if (const std::string coiled = feedback_detail::not_gentle(
             again.steps, again.initial_configuration.energy, remaining_, options_.max_energy_ratio);

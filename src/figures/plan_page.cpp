@@ -165,7 +165,7 @@ json plan_data(const PlanResult& plan, const PlanProblem& problem, const FigureC
   data["kind"] = "plan";
   data["source"] = caption.source;
   data["status"] = to_string(plan.status);
-  data["summary"] = plan.brief(caption.steps_requested);
+  data["summary"] = plan.brief();
   data["message"] = plan.message;
   data["length"] = length;
   data["radius"] = problem.scene.rod_radius;

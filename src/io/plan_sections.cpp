@@ -185,14 +185,8 @@ WrenchBounds read_wrench_bounds_section(const YamlField& bounds) {
 namespace {
 
 ObjectiveInterpolation read_interpolation(const YamlField& field) {
-  const std::string name =
-      field.choice({"auto", "shape", "arc_length", "projection", "pose", "search"});
-  for (ObjectiveInterpolation scheme :
-       {ObjectiveInterpolation::Auto, ObjectiveInterpolation::Shape,
-        ObjectiveInterpolation::ArcLength, ObjectiveInterpolation::Projection,
-        ObjectiveInterpolation::Pose, ObjectiveInterpolation::Search})
-    if (to_string(scheme) == name) return scheme;
-  return ObjectiveInterpolation::Auto;  // choice() accepted only the names above
+  const std::string name = field.choice(names_of(kObjectiveInterpolationNames));
+  return *value_of(kObjectiveInterpolationNames, name);  // choice() accepted only these names
 }
 
 }  // namespace

@@ -24,17 +24,7 @@ void ArmPlanOptions::validate() const {
 }
 
 std::string to_string(ArmPlanStatus status) {
-  switch (status) {
-    case ArmPlanStatus::Reachable:
-      return "reachable";
-    case ArmPlanStatus::Unreachable:
-      return "unreachable";
-    case ArmPlanStatus::Collision:
-      return "collision";
-    case ArmPlanStatus::NotChecked:
-      return "not_checked";
-  }
-  return "unknown";
+  return std::string(name_of(kArmPlanStatusNames, status));
 }
 
 namespace detail {

@@ -51,15 +51,7 @@ double needed_time(const Eigen::VectorXd& limits,
 }  // namespace
 
 std::string to_string(JointTrajectoryStatus status) {
-  switch (status) {
-    case JointTrajectoryStatus::Complete:
-      return "complete";
-    case JointTrajectoryStatus::Unreachable:
-      return "unreachable";
-    case JointTrajectoryStatus::NotRun:
-      return "not_run";
-  }
-  return "unknown";
+  return std::string(name_of(kJointTrajectoryStatusNames, status));
 }
 
 Eigen::VectorXd JointTrajectoryOptions::first_seed(const ArmModel& arm) const {

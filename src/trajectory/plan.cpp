@@ -91,44 +91,16 @@ void MovingBase::validate() const {
 }
 
 std::string to_string(ObjectiveInterpolation interpolation) {
-  switch (interpolation) {
-    case ObjectiveInterpolation::Shape:
-      return "shape";
-    case ObjectiveInterpolation::ArcLength:
-      return "arc_length";
-    case ObjectiveInterpolation::Projection:
-      return "projection";
-    case ObjectiveInterpolation::Pose:
-      return "pose";
-    case ObjectiveInterpolation::Search:
-      return "search";
-    case ObjectiveInterpolation::Auto:
-      return "auto";
-  }
-  return "unknown";
+  return std::string(name_of(kObjectiveInterpolationNames, interpolation));
 }
 
-std::string to_string(PlanStatus status) {
-  switch (status) {
-    case PlanStatus::Complete:
-      return "complete";
-    case PlanStatus::SnapThrough:
-      return "snap_through";
-    case PlanStatus::Partial:
-      return "partial";
-    case PlanStatus::Infeasible:
-      return "infeasible";
-    case PlanStatus::Collision:
-      return "collision";
-  }
-  return "unknown";
-}
+std::string to_string(PlanStatus status) { return std::string(name_of(kPlanStatusNames, status)); }
 
-std::string PlanResult::brief(int steps_requested) const {
+std::string PlanResult::brief() const {
   std::ostringstream out;
   const int completed = static_cast<int>(steps.size());
   out << to_string(status) << " plan, " << completed << (completed == 1 ? " step (" : " steps (")
-      << steps_requested << " requested";
+      << options.steps << " requested";
   if (horizon > 0) out << ", a horizon of " << horizon;
   if (tracking.refinements > 0)
     out << ", " << tracking.refinements << " inserted where the rod would jump";
@@ -863,6 +835,7 @@ PlanResult plan(const PlanProblem& problem, const PlanOptions& options) {
           : detail::plan_rod(problem, options, plan_stages::initial_equilibrium(problem));
   if (!problem.base_moves())  // the clamp's pose: the base end effector of every step
     for (PlanStep& step : result.steps) step.base_end_effector = problem.rod.clamp;
+  result.options = options;
   return result;
 }
 

@@ -185,7 +185,7 @@ TEST(CloudEstimator, TheShapeControllerKeepsThePlanWhenTheCloudShowsThePlannedRo
   PlanOptions planning;
   planning.steps = 3;
   const PlanResult plan = rodshape::plan(problem, planning);
-  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief(3);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief();
   ShapeController controller(problem, plan, planning);
   const PlanStep& step = plan.steps.front();
   CloudMeasurement measurement;

@@ -40,7 +40,7 @@ MarkerMeasurement exact_markers(const RodConfiguration& shape,
 TEST(ShapeController, KeepsThePlanWhenTheRodIsWhereThePlanSaysAndStopsAtTheLastWaypoint) {
   const PlanProblem problem = band_problem();
   const PlanResult& plan = band_plan();
-  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief(3);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief();
   ASSERT_EQ(plan.steps.size(), 3u);
   PlanOptions planning;
   planning.steps = 3;

@@ -465,7 +465,7 @@ TEST(ClosedLoop, FusedEstimatesAddUpAcrossCheckpoints) {
   PlanOptions planning;
   planning.steps = 6;
   const PlanResult plan = rodshape::plan(band_problem(), planning);
-  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief(6);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief();
   auto mean_final = [&](bool fuse) {
     options.loop.fuse = fuse;
     const ValidationResult result =
@@ -494,7 +494,7 @@ TEST(ClosedLoop, APerfectSensorIsTheEasyCase) {
   // the perfect sensor's estimates are used and the run ends at least as near as the noisy ones.
   PlanTask task = read_plan_task(std::string(RODSHAPE_SOURCE_DIR) + "/examples/plan_c_arc.yaml");
   const PlanResult plan = rodshape::plan(task.problem, task.options);
-  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief(task.options.steps);
+  ASSERT_EQ(plan.status, PlanStatus::Complete) << plan.brief();
   PlantModel plant = paper_mismatch();
   plant.rest_curvature = Eigen::Vector3d(0.5, 0.3, 0.0);
   plant.factors.EIx = 1.2;

@@ -56,7 +56,7 @@ TEST(MovingBasePlan, EveryStepReintegratedFromItsBasePoseAndWrenchIsWhereThePlan
     options.steps = 5;
     const PlanResult result = plan(problem, options);
     ASSERT_EQ(result.status, PlanStatus::Complete) << result.message;
-    EXPECT_LT(result.steps.back().solution.cost.max_distance, 1e-3) << result.brief(5);
+    EXPECT_LT(result.steps.back().solution.cost.max_distance, 1e-3) << result.brief();
     const Pose& base_ee = problem.moving_base->grasp.tip_to_end_effector;
     for (const PlanStep& step : result.steps) {
       const RodConfiguration& c = step.solution.configuration;

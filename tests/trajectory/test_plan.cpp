@@ -146,7 +146,7 @@ TEST(PlanResult, AHorizonPlansTheFirstStepsOfTheWholePlan) {
   EXPECT_DOUBLE_EQ(part.steps.back().fraction, 2.0 / 5.0);
   EXPECT_TRUE(part.end_effector_path.back().pose.position.isApprox(
       part.steps.back().end_effector.position, 1e-15));
-  EXPECT_NE(part.brief(options.steps).find("a horizon of 2"), std::string::npos);
+  EXPECT_NE(part.brief().find("a horizon of 2"), std::string::npos);
   // horizon = steps is the whole plan; beyond it, or negative, is bad input.
   options.horizon = 5;
   EXPECT_EQ(rodshape::plan(bend_request(), options).horizon, 0);

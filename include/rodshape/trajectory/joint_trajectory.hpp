@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "rodshape/core/pose.hpp"
+#include "rodshape/enum_names.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/arm_placement.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
@@ -61,7 +62,13 @@ enum class JointTrajectoryStatus {
   Unreachable,  // a sample's pose has no IK solution (message: its time and pose)
   NotRun,       // nothing was asked (an empty path)
 };
-std::string to_string(JointTrajectoryStatus status);  // "complete", "unreachable", "not_run"
+/// The names of JointTrajectoryStatus, in its order (to_string).
+inline constexpr EnumNames<JointTrajectoryStatus, 3> kJointTrajectoryStatusNames = {{
+    {JointTrajectoryStatus::Complete, "complete"},
+    {JointTrajectoryStatus::Unreachable, "unreachable"},
+    {JointTrajectoryStatus::NotRun, "not_run"},
+}};
+std::string to_string(JointTrajectoryStatus status);
 
 struct JointTrajectoryResult {
   JointTrajectoryStatus status = JointTrajectoryStatus::NotRun;

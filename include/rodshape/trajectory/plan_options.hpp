@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "rodshape/enum_names.hpp"
 #include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/robot/arm_reach.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
@@ -71,7 +72,15 @@ enum class ObjectiveInterpolation {
   /// horizon); up to a few seconds where no such path exists (detour::kMaxEdges edges).
   Search,
 };
-/// "shape", "arc_length", "projection", "pose", "auto", "search"
+/// The names of ObjectiveInterpolation, in its order (to_string; trajectory.interpolation).
+inline constexpr EnumNames<ObjectiveInterpolation, 6> kObjectiveInterpolationNames = {{
+    {ObjectiveInterpolation::Shape, "shape"},
+    {ObjectiveInterpolation::ArcLength, "arc_length"},
+    {ObjectiveInterpolation::Projection, "projection"},
+    {ObjectiveInterpolation::Pose, "pose"},
+    {ObjectiveInterpolation::Auto, "auto"},
+    {ObjectiveInterpolation::Search, "search"},
+}};
 std::string to_string(ObjectiveInterpolation interpolation);
 
 struct PlanOptions {

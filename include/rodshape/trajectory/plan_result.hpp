@@ -12,6 +12,7 @@
 #include "rodshape/core/pose.hpp"
 #include "rodshape/core/rod_configuration.hpp"
 #include "rodshape/core/scene.hpp"
+#include "rodshape/enum_names.hpp"
 #include "rodshape/optimisation/shape_optimiser.hpp"
 #include "rodshape/optimisation/workspace.hpp"
 #include "rodshape/robot/arm_reach.hpp"
@@ -31,7 +32,14 @@ namespace rodshape {
 /// was tried. Collision: every step succeeded, but the tracked rod comes nearer to an obstacle of
 /// the scene than the clearance even after the refinements allowed (SceneResult says where).
 enum class PlanStatus { Complete, SnapThrough, Partial, Infeasible, Collision };
-/// "complete", "snap_through", "partial", "infeasible", "collision"
+/// The names of PlanStatus, in its order (to_string; plan.json's "status").
+inline constexpr EnumNames<PlanStatus, 5> kPlanStatusNames = {{
+    {PlanStatus::Complete, "complete"},
+    {PlanStatus::SnapThrough, "snap_through"},
+    {PlanStatus::Partial, "partial"},
+    {PlanStatus::Infeasible, "infeasible"},
+    {PlanStatus::Collision, "collision"},
+}};
 std::string to_string(PlanStatus status);
 
 struct PlanStep {
@@ -123,7 +131,13 @@ enum class ArmPlanStatus {
                 // clearance, after the re-plans allowed (message: the step, link, obstacle, gap)
   NotChecked,   // the plan has no end-effector path (infeasible target)
 };
-/// "reachable", "unreachable", "collision", "not_checked"
+/// The names of ArmPlanStatus, in its order (to_string; plan.json's robot "status").
+inline constexpr EnumNames<ArmPlanStatus, 4> kArmPlanStatusNames = {{
+    {ArmPlanStatus::Reachable, "reachable"},
+    {ArmPlanStatus::Unreachable, "unreachable"},
+    {ArmPlanStatus::Collision, "collision"},
+    {ArmPlanStatus::NotChecked, "not_checked"},
+}};
 std::string to_string(ArmPlanStatus status);
 
 /// One re-plan: which pose had no IK solution and the shell it led to.
@@ -196,11 +210,15 @@ struct PlanResult {
   int target_point = -1;
   /// The reach tolerance the plan was judged with (PlanOptions::reach_tolerance_for), m.
   double reach_tolerance = std::numeric_limits<double>::quiet_NaN();
+  /// What the plan was asked: the options plan() was called with (options.steps: the steps
+  /// requested; the scheme used is interpolation.used).
+  PlanOptions options;
 
   bool complete() const { return status == PlanStatus::Complete; }
   /// One line: "complete plan, 7 steps (7 requested), final max distance 0.37 mm, energy 0.25 J"
-  /// and, where they apply, the tracking's jump, the reach shell and the joint trajectory.
-  std::string brief(int steps_requested) const;
+  /// (the steps requested: options.steps) and, where they apply, the tracking's jump, the reach
+  /// shell and the joint trajectory.
+  std::string brief() const;
 };
 
 }  // namespace rodshape
