@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "figures/svg_drawing.hpp"
-#include "overloaded.hpp"
+#include "io/scene_json.hpp"
 #include "rodshape/figures/figures.hpp"
 #include "rodshape/optimisation/shape_target.hpp"
 #include "rodshape/robot/arm_placement.hpp"
@@ -85,33 +85,6 @@ std::vector<double> step_times(const PlanResult& plan, double length) {
     from = best;
   }
   return times;
-}
-
-json obstacle_json(const Obstacle& obstacle, int index) {
-  json out = {{"label", obstacle.label(index)}, {"kind", obstacle.kind()}};
-  std::visit(detail::Overloaded{[&](const SphereObstacle& s) {
-                                  out["center"] = point(s.center);
-                                  out["radius"] = s.radius;
-                                },
-                                [&](const BoxObstacle& b) {
-                                  out["center"] = point(b.center);
-                                  out["size"] = point(b.size);
-                                  json r = json::array();
-                                  for (int i = 0; i < 3; ++i)
-                                    for (int j = 0; j < 3; ++j) r.push_back(b.rotation(i, j));
-                                  out["rotation"] = r;  // row-major
-                                },
-                                [&](const CapsuleObstacle& c) {
-                                  out["from"] = point(c.from);
-                                  out["to"] = point(c.to);
-                                  out["radius"] = c.radius;
-                                },
-                                [&](const HalfSpaceObstacle& h) {
-                                  out["normal"] = point(h.normal);
-                                  out["offset"] = h.offset;
-                                }},
-             obstacle.shape);
-  return out;
 }
 
 /// The arm's joint frames along its joint trajectory, in the world: the base, every moving
@@ -216,8 +189,8 @@ json plan_data(const PlanResult& plan, const PlanProblem& problem, const FigureC
   data["arm"] = arm_json(plan, problem.arm, plan.arm);
   data["base_arm"] = arm_json(plan, problem.base_arm, plan.base_arm);
   json obstacles = json::array();
-  for (std::size_t i = 0; i < problem.scene.obstacles.size(); ++i)
-    obstacles.push_back(obstacle_json(problem.scene.obstacles[i], static_cast<int>(i)));
+  for (const Obstacle& obstacle : problem.scene.obstacles)
+    obstacles.push_back(json(io_detail::obstacle_json(obstacle)));  // as plan.json writes them
   data["obstacles"] = obstacles;
   data["clearance"] = problem.scene.clearance;
   if (problem.workspace.box)

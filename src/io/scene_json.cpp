@@ -7,28 +7,17 @@
 namespace rodshape::io_detail {
 
 Json obstacle_json(const Obstacle& obstacle) {
+  const ObstacleDescription description = obstacle.describe();
   Json json;
-  json["shape"] = obstacle.kind();
-  json["name"] = obstacle.name.empty() ? Json(nullptr) : Json(obstacle.name);
-  std::visit(detail::Overloaded{[&](const SphereObstacle& s) {
-                                  json["center"] = json_vector(s.center);
-                                  json["radius"] = json_number(s.radius);
-                                },
-                                [&](const BoxObstacle& b) {
-                                  json["center"] = json_vector(b.center);
-                                  json["size"] = json_vector(b.size);
-                                  json["rotation"] = json_quaternion(b.rotation);
-                                },
-                                [&](const CapsuleObstacle& c) {
-                                  json["from"] = json_vector(c.from);
-                                  json["to"] = json_vector(c.to);
-                                  json["radius"] = json_number(c.radius);
-                                },
-                                [&](const HalfSpaceObstacle& h) {
-                                  json["normal"] = json_vector(h.normal);
-                                  json["offset"] = json_number(h.offset);
-                                }},
-             obstacle.shape);
+  json["shape"] = description.kind;
+  json["name"] = description.name.empty() ? Json(nullptr) : Json(description.name);
+  for (const ObstacleField& field : description.fields) {
+    json[field.key] =
+        std::visit(detail::Overloaded{[](double x) { return json_number(x); },
+                                      [](const Eigen::Vector3d& v) { return json_vector(v); },
+                                      [](const Eigen::Matrix3d& R) { return json_quaternion(R); }},
+                   field.value);
+  }
   return json;
 }
 

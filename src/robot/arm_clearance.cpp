@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "rodshape/core/segment.hpp"
 #include "rodshape/error.hpp"
 
 namespace rodshape {
@@ -26,16 +27,6 @@ constexpr int kMountJoints = 1;
 constexpr std::size_t kRun = 8;
 /// m: what a run's bound must exceed the best gap by to skip it (far above rounding).
 constexpr double kRunSlack = 1e-9;
-
-/// The distance from p to the segment [a, b].
-double distance_to_segment(const Eigen::Vector3d& p,
-                           const Eigen::Vector3d& a,
-                           const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
 
 /// The ball around segments [i, i + kRun) of a rod (their nodes i … i + kRun), thickened by the
 /// rod's radius: no point of those segments' capsules lies outside it.
@@ -189,11 +180,7 @@ void ArmClearance::for_each_pair(const Eigen::VectorXd& q,
         const Eigen::Vector3d& p1 = (*rod)[i + 1];
         const Eigen::Vector3d mid = 0.5 * (p0 + p1);
         const double ball = 0.5 * (p1 - p0).norm() + scene_.rod_radius;
-        // distance from the ball's centre to [a, b]
-        const Eigen::Vector3d ab = b - a;
-        const double length2 = ab.squaredNorm();
-        const double t = length2 > 0.0 ? std::clamp((mid - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-        if ((a + t * ab - mid).norm() - ball > best) continue;
+        if (distance_to_segment(mid, a, b) - ball > best) continue;
         shape.from = p0;
         shape.to = p1;
         const SegmentDistance d = segment_obstacle.distance(a, b);

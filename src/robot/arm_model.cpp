@@ -33,6 +33,7 @@
 
 #include "capped_file.hpp"
 #include "robot/urdf_extent.hpp"
+#include "rodshape/core/segment.hpp"
 #include "rodshape/error.hpp"
 #include "validation.hpp"
 
@@ -366,8 +367,7 @@ std::optional<LinkCapsule> capsule_of(const urdf::Collision& collision,
 /// Whether the ball (c, r) lies within the capsule.
 bool ball_within(const Eigen::Vector3d& c, double r, const LinkCapsule& capsule) {
   const Eigen::Vector3d ab = capsule.to - capsule.from;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((c - capsule.from).dot(ab) / length2, 0.0, 1.0) : 0.0;
+  const double t = nearest_on_segment(c, capsule.from, capsule.to);
   return (c - capsule.from - t * ab).norm() + r <= capsule.radius + 1e-9;
 }
 

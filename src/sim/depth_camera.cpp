@@ -7,11 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <variant>
 
-#include "ray_cast.hpp"
+#include "rodshape/core/segment.hpp"
 #include "rodshape/error.hpp"
 #include "wrist_wrench.hpp"
 
@@ -99,10 +98,11 @@ void DepthCamera::render_rod(const std::vector<Eigen::Vector3d>& nodes, double r
     const int i1 = std::min(model_.width - 1, static_cast<int>(std::floor(u1)));
     const int j0 = std::max(0, static_cast<int>(std::floor(v0)));
     const int j1 = std::min(model_.height - 1, static_cast<int>(std::floor(v1)));
+    const CapsuleObstacle piece{a, b, radius};
     for (int j = j0; j <= j1; ++j)
       for (int k = i0; k <= i1; ++k) {
         const int pixel = j * model_.width + k;
-        const double t = sim_detail::ray_capsule(origin, ray(pixel), a, b, radius);
+        const double t = shape_ray_hit(piece, origin, ray(pixel));
         double& nearest = z_->depth[static_cast<std::size_t>(pixel)];
         if (!(t < nearest)) continue;
         if (nearest == kNone) z_->touched.push_back(pixel);
@@ -117,31 +117,10 @@ void DepthCamera::render_rod(const std::vector<Eigen::Vector3d>& nodes, double r
 void DepthCamera::hide_occluded(const DepthOccluders& occluders, const Pose& camera_T_world) {
   // The occluders in the camera's frame, where every ray starts at the origin.
   std::vector<Obstacle> solids;
-  for (const Obstacle& obstacle : occluders.obstacles) {
-    Obstacle solid = obstacle;
-    std::visit(
-        [&](auto& shape) {
-          using Shape = std::decay_t<decltype(shape)>;
-          const Eigen::Matrix3d& R = camera_T_world.rotation;
-          if constexpr (std::is_same_v<Shape, SphereObstacle>) {
-            shape.center = transformed(camera_T_world, shape.center);
-          } else if constexpr (std::is_same_v<Shape, BoxObstacle>) {
-            shape.center = transformed(camera_T_world, shape.center);
-            shape.rotation = R * shape.rotation;
-          } else if constexpr (std::is_same_v<Shape, CapsuleObstacle>) {
-            shape.from = transformed(camera_T_world, shape.from);
-            shape.to = transformed(camera_T_world, shape.to);
-          } else {  // a half-space nᵀp > offset: n' = R n, offset' = offset + n'ᵀ t
-            shape.normal = R * shape.normal;
-            shape.offset += shape.normal.dot(camera_T_world.position);
-          }
-        },
-        solid.shape);
-    solids.push_back(std::move(solid));
-  }
+  for (const Obstacle& obstacle : occluders.obstacles)
+    solids.push_back(transformed(camera_T_world, obstacle));
   for (const CapsuleObstacle& link : occluders.links)
-    solids.push_back({"", CapsuleObstacle{transformed(camera_T_world, link.from),
-                                          transformed(camera_T_world, link.to), link.radius}});
+    solids.push_back({"", transformed(camera_T_world, link)});
   visible_.clear();
   const Eigen::Vector3d origin = Eigen::Vector3d::Zero();
   for (const int pixel : z_->touched) {
@@ -150,7 +129,7 @@ void DepthCamera::hide_occluded(const DepthOccluders& occluders, const Pose& cam
     const double z = t * d.z();
     if (z < model_.min_range || z > model_.max_range) continue;
     const bool hidden = std::any_of(solids.begin(), solids.end(), [&](const Obstacle& solid) {
-      return sim_detail::ray_obstacle(origin, d, solid) < t;
+      return solid.ray_hit(origin, d) < t;
     });
     if (!hidden) visible_.push_back({pixel, t, z_->segment[static_cast<std::size_t>(pixel)]});
   }
@@ -176,9 +155,9 @@ Eigen::Vector3d DepthCamera::measure(const Hit& hit,
   const Eigen::Vector3d p = hit.t * d;
   // The surface's normal: from the nearest point of the segment's axis to the hit.
   const Eigen::Vector3d& a = nodes[static_cast<std::size_t>(hit.segment)];
-  const Eigen::Vector3d ba = nodes[static_cast<std::size_t>(hit.segment) + 1] - a;
-  const double along =
-      ba.squaredNorm() > 0.0 ? std::clamp((p - a).dot(ba) / ba.squaredNorm(), 0.0, 1.0) : 0.0;
+  const Eigen::Vector3d& b = nodes[static_cast<std::size_t>(hit.segment) + 1];
+  const Eigen::Vector3d ba = b - a;
+  const double along = nearest_on_segment(p, a, b);
   const Eigen::Vector3d normal = (p - a - along * ba) / radius;
   const double theta = std::acos(std::clamp(-normal.dot(d), -1.0, 1.0));
   const double z = p.z() + model_.noise.axial_sigma(p.z(), theta) * normal_(random_);

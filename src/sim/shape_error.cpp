@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "rodshape/core/segment.hpp"
 #include "rodshape/optimisation/curve_distance.hpp"
 
 namespace rodshape {
@@ -14,12 +15,8 @@ template <int D>
 double polyline_distance(const std::vector<Eigen::Matrix<double, D, 1>>& polyline,
                          const Eigen::Matrix<double, D, 1>& point) {
   double best = (polyline.front() - point).norm();
-  for (std::size_t k = 0; k + 1 < polyline.size(); ++k) {
-    const Eigen::Matrix<double, D, 1> a = polyline[k], d = polyline[k + 1] - a;
-    const double length2 = d.squaredNorm();
-    const double t = length2 > 0.0 ? std::clamp((point - a).dot(d) / length2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (a + t * d - point).norm());
-  }
+  for (std::size_t k = 0; k + 1 < polyline.size(); ++k)
+    best = std::min(best, distance_to_segment(point, polyline[k], polyline[k + 1]));
   return best;
 }
 

@@ -1,7 +1,8 @@
 // obstacle.hpp: one solid of a cell (a post, a fixture, a rail, a table top), world frame, metres,
 // as a convex shape with its signed distance d(p) (> 0 outside, < 0 inside) and its gradient ∇d
 // (the outward unit normal of the nearest surface point). Optimisation (clearance rows), robot
-// (links) and sim (contacts) all measure gaps with these functions.
+// (links) and sim (contacts, the depth camera's rays) all measure gaps with these functions; the
+// shapes and each operation per shape are in obstacle_shapes.hpp, Obstacle dispatches them.
 //
 // The rod between two nodes is the chord [a, b]; its distance to a convex obstacle is
 //   d([a, b]) = min_{t ∈ [0, 1]} d(a + t (b - a)),
@@ -10,54 +11,21 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <variant>
+#include <vector>
+
+#include "rodshape/core/obstacle_shapes.hpp"
 
 namespace rodshape {
 
-/// A ball: d(p) = |p - c| - r.
-struct SphereObstacle {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double radius = 0.0;
-};
-
-/// A box of full edges `size` along its own axes, centred at `center`, turned by `rotation`
-/// (world_R_box).
-struct BoxObstacle {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  Eigen::Vector3d size = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-};
-
-/// The points within `radius` of the segment [from, to] (a pole, a cable, a rail).
-struct CapsuleObstacle {
-  Eigen::Vector3d from = Eigen::Vector3d::Zero();
-  Eigen::Vector3d to = Eigen::Vector3d::Zero();
-  double radius = 0.0;
-};
-
-/// The half-space normalᵀp > offset (free space is normalᵀp ≤ offset, as workspace.half_spaces):
-/// d(p) = (offset - normalᵀp) / |normal|.
-struct HalfSpaceObstacle {
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  double offset = 0.0;
-};
-
-using ObstacleShape = std::variant<SphereObstacle, BoxObstacle, CapsuleObstacle, HalfSpaceObstacle>;
-
-/// The signed distance at a point and its gradient there.
-struct PointDistance {
-  double distance = 0.0;
-  Eigen::Vector3d gradient = Eigen::Vector3d::UnitZ();  // ∇d, a unit vector
-};
-
-/// The least signed distance over a segment [a, b], where it is reached and its derivatives.
-struct SegmentDistance {
-  double distance = 0.0;
-  double t = 0.0;                                       // p* = a + t (b - a)
-  Eigen::Vector3d gradient = Eigen::Vector3d::UnitZ();  // ∇d(p*)
-  Eigen::Vector3d dd_da() const { return (1.0 - t) * gradient; }
-  Eigen::Vector3d dd_db() const { return t * gradient; }
+/// An obstacle as the task file and plan.json give it: its name ("" when unnamed), the shape's
+/// kind and fields (shape_fields).
+struct ObstacleDescription {
+  std::string name;
+  std::string kind;
+  std::vector<ObstacleField> fields;
 };
 
 struct Obstacle {
@@ -70,6 +38,13 @@ struct Obstacle {
   std::string label(int index) const;
   PointDistance distance(const Eigen::Vector3d& p) const;
   SegmentDistance distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
+  /// Where the ray o + t d (|d| = 1, t ≥ 0) first meets the solid: +inf when it misses, 0 when o
+  /// is inside.
+  double ray_hit(const Eigen::Vector3d& o, const Eigen::Vector3d& d) const;
+  /// An axis-aligned box holding the solid; none for a half-space.
+  std::optional<AxisAlignedBox> bounds() const;
+  /// The name, the kind and the shape's fields, as io's JSON and the figures write them.
+  ObstacleDescription describe() const;
   /// Throws InputError naming `field` (e.g. "Scene.obstacles[2]") and the member: sizes and radii
   /// finite and > 0 (at most kMaxSize), positions finite, a rotation, a non-zero normal.
   void validate(const std::string& field) const;
@@ -77,5 +52,8 @@ struct Obstacle {
   /// The largest size or distance an obstacle may have (docs/limits.md): a cell is metres across.
   static constexpr double kMaxSize = 1e3;
 };
+
+/// The obstacle given in frame b, in frame a (same name): every point x_b maps to p + R x_b.
+Obstacle transformed(const Pose& a_T_b, const Obstacle& in_b);
 
 }  // namespace rodshape

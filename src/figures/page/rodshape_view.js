@@ -104,9 +104,9 @@
     if (d.base_arm) d.base_arm.frames.forEach(function (f) { f.forEach(function (p) { add(p); }); });
     if (d.base_path) d.base_path.p.forEach(function (p) { add(p); });
     d.obstacles.forEach(function (o) {
-      if (o.kind === 'sphere') add(o.center, o.radius);
-      if (o.kind === 'capsule') { add(o.from, o.radius); add(o.to, o.radius); }
-      if (o.kind === 'box') add(o.center, 0.5 * Math.max(o.size[0], o.size[1], o.size[2]));
+      if (o.shape === 'sphere') add(o.center, o.radius);
+      if (o.shape === 'capsule') { add(o.from, o.radius); add(o.to, o.radius); }
+      if (o.shape === 'box') add(o.center, 0.5 * Math.max(o.size[0], o.size[1], o.size[2]));
     });
     if (!isFinite(lo[0])) { lo = [-0.5, -0.5, -0.5]; hi = [0.5, 0.5, 0.5]; }
     var span = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-3);
@@ -250,21 +250,21 @@
   // The scene's obstacles, grey and see-through.
   var obstacleColour = 0x8a8f98, obstacleOpacity = 0.4;
   data.obstacles.forEach(function (o) {
-    if (o.kind === 'sphere') ball(o.center, o.radius, obstacleColour, obstacleOpacity);
-    if (o.kind === 'capsule') {
+    if (o.shape === 'sphere') ball(o.center, o.radius, obstacleColour, obstacleOpacity);
+    if (o.shape === 'capsule') {
       placeCylinder(cylinder(o.radius, obstacleColour, obstacleOpacity), o.from, o.to);
       ball(o.from, o.radius, obstacleColour, obstacleOpacity);
       ball(o.to, o.radius, obstacleColour, obstacleOpacity);
     }
-    if (o.kind === 'box') {
+    if (o.shape === 'box') {
       var m = new THREE.MeshLambertMaterial({ color: obstacleColour, transparent: true, opacity: obstacleOpacity });
       var mesh = new THREE.Mesh(new THREE.BoxBufferGeometry(o.size[0], o.size[1], o.size[2]), m);
-      var r = o.rotation, basis = new THREE.Matrix4();
-      basis.set(r[0], r[1], r[2], o.center[0], r[3], r[4], r[5], o.center[1], r[6], r[7], r[8], o.center[2], 0, 0, 0, 1);
+      var q = o.rotation, basis = new THREE.Matrix4();  // q = [w, x, y, z], as in plan.json
+      basis.compose(v3(o.center), new THREE.Quaternion(q[1], q[2], q[3], q[0]), new THREE.Vector3(1, 1, 1));
       mesh.applyMatrix(basis);
       scene.add(mesh);
     }
-    if (o.kind === 'half_space') {
+    if (o.shape === 'half_space') {
       // The plane n·p = offset as a square around the scene, on the solid side's face.
       var n = v3(o.normal).normalize(), c = centre.clone();
       var along = (o.offset / Math.hypot(o.normal[0], o.normal[1], o.normal[2])) - n.dot(c);
