@@ -15,7 +15,7 @@ run() {
     local name
     name=$(basename "$task" .yaml)
     case "$name" in
-      estimate_*) "$tool" estimate -q "$task" --cloud "examples/clouds/$name.ply" -o "$out/$name.json" ;;
+      estimate_*) "$tool" estimate "$task" --cloud "examples/clouds/$name.ply" -o "$out/$name.json" > /dev/null ;;
       plan_* | validate_*) "$tool" plan -q "$task" -o "$out/$name" ;;
       *) "$tool" equilibrium -q "$task" -o "$out/$name.json" ;;
     esac
