@@ -96,8 +96,7 @@ class PlanCommand final : public Command {
     const std::vector<std::string> written =
         write_plan(output_directory_, result, task, {.html = !no_html_});
     if (!quiet_) {
-      std::cout << task_path_ << ": " << fields_in_task_names(result.brief())
-                << "; wrote";
+      std::cout << task_path_ << ": " << fields_in_task_names(result.brief()) << "; wrote";
       for (const std::string& name : written)
         std::cout << " " << (std::filesystem::path(output_directory_) / name).string();
       std::cout << "\n" << std::flush;

@@ -228,8 +228,7 @@ class ValidateCommand final : public Command {
     if (plan.status == PlanStatus::Infeasible) throw task.infeasible_target(plan);
     if (plan.end_effector_path.empty()) {
       std::cerr << "error: " << task_path_
-                << ": nothing to validate: " << fields_in_task_names(plan.brief())
-                << "\n";
+                << ": nothing to validate: " << fields_in_task_names(plan.brief()) << "\n";
       OutputSet set = plan_outputs(plan, task, {.html = !no_html_});
       for (const std::string& name : validation_file_names()) set.stale.push_back(name);
       write_output_set(output_directory_, std::move(set));

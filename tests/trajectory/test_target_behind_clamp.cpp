@@ -44,7 +44,8 @@ TEST(TargetBehindClamp, APlanStraightBelowTheClampSaysWhyItStops) {
   EXPECT_NE(result.status, PlanStatus::Complete);
   ASSERT_EQ(result.interpolation.tried.size(), 4u);
   EXPECT_EQ(result.interpolation.tried[2].status, PlanStatus::Partial);
-  EXPECT_NE(result.interpolation.tried[2].note.find("beyond the reach tolerance"), std::string::npos)
+  EXPECT_NE(result.interpolation.tried[2].note.find("beyond the reach tolerance"),
+            std::string::npos)
       << result.interpolation.tried[2].note;
   EXPECT_EQ(result.interpolation.tried[3].scheme, ObjectiveInterpolation::Search);
   EXPECT_NE(result.interpolation.tried[3].status, PlanStatus::Complete);
