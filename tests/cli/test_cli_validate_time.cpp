@@ -62,6 +62,12 @@ TEST_F(CliValidateTime, TheEstimateOfASmallValidationIsWithinAFactorOfThreeOfIts
   ASSERT_EQ(refused.exit_code, 2) << refused.err;
   const double estimate = estimate_in(refused.err);
   ASSERT_GT(estimate, least) << refused.err;
+#if !defined(NDEBUG) || defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  // The estimate is fitted to the Release build's CPU time; a Debug or sanitizer build runs the
+  // same validation 10-20 times slower (CI: 94.5 s against 5.6 s estimated), so its time says
+  // nothing.
+  GTEST_SKIP() << "the estimate is of the Release build";
+#endif
   const auto start = std::chrono::steady_clock::now();
   const Outcome done = validate(arguments + " --no-html");
   const double seconds =
