@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "rodshape/sim/commanded_path.hpp"
+#include "rodshape/sim/quasi_static_plant.hpp"
 
 namespace rodshape {
 
@@ -31,13 +32,13 @@ std::vector<double> frames_within(double t0, double t1, double rate, bool includ
 class Driver {
  public:
   Driver(ShapeController controller,
-         const ClosedLoopPlant& plant,
+         Plant& plant,
          const std::function<sim_detail::SensorView(const PlanProblem&)>& view)
       : controller_(std::move(controller)),
         problem_(controller_.problem()),
         plant_(plant),
         sensor_(view(problem_)),
-        contact_(problem_.scene, plant.rod.clamp.position) {}
+        contact_(problem_.scene, plant.setup().rod.clamp.position) {}
 
   ClosedLoopRun run(const PlanResult& plan) {
     if (drives_joints(problem_, plan)) joints_ = plan.arm->joints.q.front();
@@ -50,18 +51,17 @@ class Driver {
       base_joints_ = plan.base_arm->joints.q.front();
     run_.base_moved = base_from_.has_value();
     Pose from = plan.end_effector_path.front().pose;
-    BaseWrench w = plan.initial_wrench;
+    plant_.reset({plan.initial_wrench});  // each segment from where the last left the plant
     double t = plan.end_effector_path.front().t;
     for (bool first = true;; first = false) {
       const PlannedWaypoint& next = controller_.remaining().front();
       const Pose to = next.end_effector;
       const std::optional<Pose> base_to =
           base_from_ ? std::optional<Pose>(next.base_end_effector) : std::nullopt;
-      const PlantRun part = drive_segment(from, to, base_to, w, t, first);
+      const PlantRun part = drive_segment(from, to, base_to, t, first);
       if (part.lost) break;
       from = to;
       if (base_to) base_from_ = base_to;
-      w = part.last.base_wrench;
       t = part.last.t;
       if (controller_.remaining().size() == 1) break;  // the last waypoint
       dwell(t);
@@ -80,14 +80,11 @@ class Driver {
  private:
   /// The plant from `from` to `to` (and the base from base_from_ to `base_to`, when it moves), its
   /// frames seen and their errors recorded.
-  PlantRun drive_segment(const Pose& from,
-                         const Pose& to,
-                         const std::optional<Pose>& base_to,
-                         const BaseWrench& w,
-                         double t,
-                         bool first) {
-    std::vector<TimedPose> path;
-    BaseGripperPath base;
+  PlantRun drive_segment(
+      const Pose& from, const Pose& to, const std::optional<Pose>& base_to, double t, bool first) {
+    PlantDrive request;
+    std::vector<TimedPose>& path = request.path;
+    BaseGripperPath& base = request.base;
     if (base_to) {  // both ends on one clock
       sim_detail::TwoEndPath both = sim_detail::time_two_ends(
           {from, to}, {*base_from_, *base_to}, controller_.planning().end_effector,
@@ -104,11 +101,8 @@ class Driver {
     if (base_joints_)
       base.path = hand_path(base.path, *problem_.base_arm, base_joints_, "base arm");
     const double t_end = base.moves() ? std::max(path.back().t, base.path.back().t) : path.back().t;
-    const double rate = sensor_.frame_rate();
-    PlantRun part = drive_plant(
-        plant_.rod, problem_.grasp, plant_.grasp_offset, path, base, w,
-        frames_within(t, t_end, rate, first), [&](const PlantFrame& frame) { see(frame); },
-        plant_.options);
+    request.frame_times = frames_within(t, t_end, sensor_.frame_rate(), first);
+    PlantRun part = plant_.drive(request, [&](const PlantFrame& frame) { see(frame); });
     append(part);
     return part;
   }
@@ -183,25 +177,22 @@ class Driver {
     all.last = part.last;
   }
 
-  /// The arm rests at the waypoint for checkpoint_frames frames (recorded with their errors), the
-  /// sensor putting them together; `t` moves to the end of the rest.
+  /// The arm rests at the waypoint for checkpoint_frames frames (the plant held, its frames
+  /// recorded with their errors), the sensor putting them together; `t` moves to the end of the
+  /// rest.
   void dwell(double& t) {
     const int n = controller_.options().checkpoint_frames;
     const double rate = sensor_.frame_rate();
-    PlantFrame still = run_.plant.last;
+    std::vector<double> times;
+    for (int k = 1; k < n; ++k) times.push_back(t + k / rate);
     sensor_.start_rest();
-    for (int k = 1; k < n; ++k) {
-      still.t = t + k / rate;
-      see(still);
-      ++run_.plant.frames;
-    }
     t += (n - 1) / rate;
-    run_.plant.last.t = t;
+    append(plant_.hold(t, times, [&](const PlantFrame& frame) { see(frame); }));
   }
 
   ShapeController controller_;
-  const PlanProblem& problem_;    // the controller's
-  const ClosedLoopPlant& plant_;  // the real rod and grasp, which the controller does not know
+  const PlanProblem& problem_;  // the controller's
+  Plant& plant_;                // the real rod and grasp, which the controller does not know
   sim_detail::SensorView sensor_;
   std::optional<Eigen::VectorXd> joints_;       // the arm's joints at the last waypoint
   std::optional<Pose> base_from_;               // the base gripper's pose there (a moving base)
@@ -214,9 +205,9 @@ class Driver {
 
 ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
-                              const ClosedLoopPlant& plant,
+                              Plant& plant,
                               MarkerSensor& sensor) {
-  const double length = plant.rod.properties.length;
+  const double length = plant.setup().rod.properties.length;
   Driver driver(std::move(controller), plant,
                 [&](const PlanProblem&) { return sim_detail::SensorView(sensor, length); });
   return driver.run(plan);
@@ -224,12 +215,37 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
 
 ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
-                              const ClosedLoopPlant& plant,
+                              Plant& plant,
                               DepthCamera& camera) {
   Driver driver(std::move(controller), plant, [&](const PlanProblem& problem) {
     return sim_detail::SensorView(camera, problem);
   });
   return driver.run(plan);
+}
+
+namespace {
+
+QuasiStaticPlant quasi_static_of(const ClosedLoopPlant& plant, const ShapeController& controller) {
+  return QuasiStaticPlant(
+      {plant.rod, controller.problem().grasp, plant.grasp_offset, plant.options});
+}
+
+}  // namespace
+
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              const ClosedLoopPlant& plant,
+                              MarkerSensor& sensor) {
+  QuasiStaticPlant real = quasi_static_of(plant, controller);
+  return run_closed_loop(plan, std::move(controller), real, sensor);
+}
+
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              const ClosedLoopPlant& plant,
+                              DepthCamera& camera) {
+  QuasiStaticPlant real = quasi_static_of(plant, controller);
+  return run_closed_loop(plan, std::move(controller), real, camera);
 }
 
 }  // namespace rodshape

@@ -14,6 +14,7 @@
 #include "plant_reach.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/sim/commanded_path.hpp"
+#include "rodshape/sim/plant_factory.hpp"
 #include "scene_contact.hpp"
 #include "sensor_view.hpp"
 #include "validation.hpp"
@@ -40,9 +41,7 @@ class RunSensor {
   RunSensor& operator=(const RunSensor&) = delete;
   sim_detail::SensorView& view() { return *view_; }
   /// The closed loop carried out with this sensor.
-  ClosedLoopRun run_closed_loop(const PlanResult& plan,
-                                ShapeController controller,
-                                const ClosedLoopPlant& plant) {
+  ClosedLoopRun run_closed_loop(const PlanResult& plan, ShapeController controller, Plant& plant) {
     if (markers_) return rodshape::run_closed_loop(plan, std::move(controller), plant, *markers_);
     return rodshape::run_closed_loop(plan, std::move(controller), plant, *depth_);
   }
@@ -86,13 +85,12 @@ void record(ValidationRun& run, double t, const ShapeError& error) {
 void drive_and_observe(ValidationResult& result,
                        const PlanProblem& problem,
                        const PlanResult& plan,
-                       const PlantModel& plant,
+                       Plant& plant,
                        const SensorModel& sensor,
                        const ValidationOptions& options,
-                       const std::vector<TimedPose>& path,
-                       const BaseGripperPath& base,
-                       const std::vector<double>& times) {
-  const double length = result.real_rod.properties.length;
+                       const PlantDrive& request) {
+  const std::vector<double>& times = request.frame_times;
+  const double length = plant.setup().rod.properties.length;
   std::vector<std::unique_ptr<RunSensor>> cameras;
   for (int k = 0; k < options.runs; ++k) {
     ValidationRun& run = result.runs.emplace_back();
@@ -105,7 +103,7 @@ void drive_and_observe(ValidationResult& result,
   const bool clouds_see_arm = kind_of(sensor) == SensorKind::Depth && drives_joints(problem, plan);
   const bool clouds_see_base_arm =
       kind_of(sensor) == SensorKind::Depth && drives_base_joints(problem, plan);
-  sim_detail::SceneContact contact(problem.scene, result.real_rod.clamp.position);
+  sim_detail::SceneContact contact(problem.scene, plant.setup().rod.clamp.position);
   const int total = static_cast<int>(times.size());
   int driven = 0, reported_percent = -1;
   const auto see = [&](const PlantFrame& frame) {
@@ -128,8 +126,8 @@ void drive_and_observe(ValidationResult& result,
       record(result.runs[k], frame.t,
              cameras[k]->view().see(frame, problem, frame.clamp.position, links));
   };
-  result.plant = drive_plant(result.real_rod, problem.grasp, plant.grasp_offset, path, base,
-                             plan.initial_wrench, times, see, options.plant);
+  plant.reset({plan.initial_wrench});
+  result.plant = plant.drive(request, see);
   if (options.progress && driven < total) options.progress(total, total);  // lost on the way
   for (std::size_t k = 0; k < cameras.size(); ++k) {
     ValidationRun& run = result.runs[k];
@@ -146,16 +144,14 @@ void drive_and_observe(ValidationResult& result,
 /// waypoint.
 ValidationRun closed_loop_run(const PlanProblem& problem,
                               const PlanResult& plan,
-                              const PlantModel& plant,
+                              Plant& plant,
                               const SensorModel& sensor,
                               const ValidationOptions& options,
-                              const ClampedRod& real,
                               std::uint64_t seed,
                               PlantRun& plant_run) {
-  RunSensor camera(sensor, seed, real.properties.length, problem);
-  ClosedLoopRun loop =
-      camera.run_closed_loop(plan, ShapeController(problem, plan, options.planning, options.loop),
-                             {real, plant.grasp_offset, options.plant});
+  RunSensor camera(sensor, seed, plant.setup().rod.properties.length, problem);
+  ClosedLoopRun loop = camera.run_closed_loop(
+      plan, ShapeController(problem, plan, options.planning, options.loop), plant);
   ValidationRun run;
   run.seed = seed;
   run.closed_loop = true;
@@ -199,6 +195,13 @@ void check_frames(const PlanResult& plan,
                        ", would have " + detail::format_value(all) + " frames; at most " +
                        detail::format_value(ValidationOptions::kMaxFrames) +
                        " in all: lower the frame rate or the runs");
+}
+
+/// A plant of `setup` made by `make`, which must make one.
+std::unique_ptr<Plant> made_plant(const PlantMaker& make, const PlantSetup& setup) {
+  std::unique_ptr<Plant> plant = make ? make(setup) : nullptr;
+  if (!plant) throw InputError("PlantMaker", ": made no plant");
+  return plant;
 }
 
 /// Stage 4: the status from the plant's events in every run (a loss outweighs a contact, a contact
@@ -342,6 +345,15 @@ ValidationResult validate_plan(const PlanProblem& problem,
                                const PlantModel& plant,
                                const SensorModel& sensor,
                                const ValidationOptions& options) {
+  return validate_plan(problem, plan, plant, sensor, options, plant_maker(plant.model));
+}
+
+ValidationResult validate_plan(const PlanProblem& problem,
+                               const PlanResult& plan,
+                               const PlantModel& plant,
+                               const SensorModel& sensor,
+                               const ValidationOptions& options,
+                               const PlantMaker& make) {
   options.validate();
   std::visit([](const auto& model) { model.validate(); }, sensor);
   if (kind_of(sensor) == SensorKind::Depth && !(problem.scene.rod_radius > 0.0))
@@ -366,12 +378,14 @@ ValidationResult validate_plan(const PlanProblem& problem,
   result.real_rod = plant.real_rod(problem.rod);
   check_plant_reach(result.real_rod, plan, plant, problem.validity);
   check_frames(plan, sensor, options);
+  const PlantSetup setup{result.real_rod, problem.grasp, plant.grasp_offset, options.plant};
   if (!options.closed_loop) {
-    const std::vector<TimedPose> path = commanded_path(problem, plan);
-    const BaseGripperPath base = commanded_base(problem, plan);  // empty: a fixed clamp
+    PlantDrive request{commanded_path(problem, plan), commanded_base(problem, plan), {}};
+    const std::vector<TimedPose>& path = request.path;
+    const BaseGripperPath& base = request.base;  // empty: a fixed clamp
     const double t_end = base.moves() ? std::max(path.back().t, base.path.back().t) : path.back().t;
-    drive_and_observe(result, problem, plan, plant, sensor, options, path, base,
-                      frame_times(path.front().t, t_end, frame_rate_of(sensor)));
+    request.frame_times = frame_times(path.front().t, t_end, frame_rate_of(sensor));
+    drive_and_observe(result, problem, plan, *made_plant(make, setup), sensor, options, request);
     for (ValidationRun& run : result.runs) {
       run.driven_by_joints = drives_joints(problem, plan);
       run.base_moved = base.moves();
@@ -386,8 +400,8 @@ ValidationResult validate_plan(const PlanProblem& problem,
     sim_detail::parallel_runs(options.runs, options.jobs, [&](int k) {
       const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(k);
       PlantRun plant_run;
-      result.runs[static_cast<std::size_t>(k)] =
-          closed_loop_run(problem, plan, plant, sensor, options, result.real_rod, seed, plant_run);
+      result.runs[static_cast<std::size_t>(k)] = closed_loop_run(
+          problem, plan, *made_plant(make, setup), sensor, options, seed, plant_run);
       if (k == 0) result.plant = std::move(plant_run);
       if (options.progress) {
         const std::lock_guard<std::mutex> lock(progress_mutex);

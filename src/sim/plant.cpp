@@ -130,6 +130,7 @@ class Driver {
     move_base(sample);
     state_ = solve(sample.end_effector, guess, true);
     held_by_ = sample.end_effector;
+    held_t_ = sample.t;
     if (state_.summary.converged()) return true;
     lose(sample.t,
          "the real rod has no equilibrium at the path's start (" + state_.summary.brief() + ")");
@@ -160,8 +161,12 @@ class Driver {
       return false;
     }
     check_snap(sample.t, next.configuration);
+    before_p_ = std::move(state_.configuration.p);  // the sample before, for the velocities
+    before_tip_rotation_ = state_.configuration.R.back();
+    before_t_ = held_t_;
     state_ = std::move(next);
     held_by_ = sample.end_effector;
+    held_t_ = sample.t;
     return true;
   }
 
@@ -180,7 +185,28 @@ class Driver {
   }
 
   PlantFrame frame_at(double t) const {
-    return {t, held_by_, state_.base_wrench, state_.configuration, rod_now_.clamp, base_held_by_};
+    PlantFrame frame;
+    frame.t = t;
+    frame.end_effector = held_by_;
+    frame.base_wrench = state_.base_wrench;
+    frame.configuration = state_.configuration;
+    frame.clamp = rod_now_.clamp;
+    frame.base_end_effector = base_held_by_;
+    set_velocities(frame);
+    return frame;
+  }
+
+  /// The frame's velocities: the held state's backward difference over its sample step (zero
+  /// while the first sample is held).
+  void set_velocities(PlantFrame& frame) const {
+    const std::vector<Eigen::Vector3d>& p = frame.configuration.p;
+    frame.node_velocities.assign(p.size(), Eigen::Vector3d::Zero());
+    if (p.empty() || before_p_.size() != p.size() || !(held_t_ > before_t_)) return;
+    const double dt = held_t_ - before_t_;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      frame.node_velocities[i] = (p[i] - before_p_[i]) / dt;
+    frame.tip_twist << frame.node_velocities.back(),
+        log_so3(frame.configuration.R.back() * before_tip_rotation_.transpose()) / dt;
   }
 
   ShootingResult solve(const Pose& end_effector, const BaseWrench& from, bool continuation) {
@@ -257,6 +283,11 @@ class Driver {
   ShootingOptions direct_;
   ShootingResult state_;
   Pose held_by_;
+  double held_t_ = 0.0;  // the held state's sample time
+  // The nodes and the tip's rotation at the sample before the held one (none at the first).
+  std::vector<Eigen::Vector3d> before_p_;
+  Eigen::Matrix3d before_tip_rotation_ = Eigen::Matrix3d::Identity();
+  double before_t_ = 0.0;
   Pose base_held_by_;  // the base gripper's commanded pose (the clamp's with a fixed clamp)
   std::size_t next_frame_ = 0;
   PlantRun run_;

@@ -9,6 +9,7 @@
 
 #include "rodshape/core/physical_bounds.hpp"
 #include "rodshape/error.hpp"
+#include "rodshape/sim/plant_factory.hpp"
 #include "validation.hpp"
 
 namespace rodshape {
@@ -134,6 +135,7 @@ void PlantModel::validate() const {
                             "m/s^2");
   if (rest_curvature) detail::require_finite("PlantModel.rest_curvature", *rest_curvature);
   detail::require_pose("PlantModel.grasp_offset", grasp_offset);
+  (void)plant_maker(model);  // a plant make_plant() knows
 }
 
 ClampedRod PlantModel::real_rod(const ClampedRod& planned) const {

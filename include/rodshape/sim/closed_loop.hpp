@@ -15,13 +15,14 @@
 #include "rodshape/sim/depth_camera.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
+#include "rodshape/sim/plant_interface.hpp"
 #include "rodshape/sim/shape_error.hpp"
 
 namespace rodshape {
 
-/// The plant a closed loop drives: the real rod, where the gripper really holds it (the tip's
-/// actual pose in the commanded tip frame, which the controller does not know) and how it is
-/// followed.
+/// The quasi-static plant a closed loop drives (run_closed_loop's convenience form): the real rod,
+/// where the gripper really holds it (the tip's actual pose in the commanded tip frame, which the
+/// controller does not know) and how it is followed.
 struct ClosedLoopPlant {
   ClampedRod rod;
   Pose grasp_offset;
@@ -51,7 +52,14 @@ struct ClosedLoopRun {
 };
 
 /// Carries out `plan` with `controller` (built from it, not yet updated) on `plant` seen by
-/// `sensor`, with a checkpoint at every waypoint but the last.
+/// `sensor`, with a checkpoint at every waypoint but the last: the plant reset to the plan's start
+/// (its initial wrench), driven segment by segment and held at each rest. Its setup is the real
+/// rod, its grasp the plan's.
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              Plant& plant,
+                              MarkerSensor& sensor);
+/// The same on a QuasiStaticPlant of `plant` and the plan's grasp.
 ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
                               const ClosedLoopPlant& plant,
@@ -59,6 +67,10 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
 /// The same seen by a depth camera (in the plan's scene, with the arm's links when it has an arm:
 /// where the arm stands at the end of the segment it is on, exact at the rests where the
 /// controller is updated). The clouds of a rest are pooled into one measurement.
+ClosedLoopRun run_closed_loop(const PlanResult& plan,
+                              ShapeController controller,
+                              Plant& plant,
+                              DepthCamera& camera);
 ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
                               const ClosedLoopPlant& plant,

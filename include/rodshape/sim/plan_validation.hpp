@@ -17,6 +17,7 @@
 #include "rodshape/sim/closed_loop.hpp"
 #include "rodshape/sim/marker_sensor.hpp"
 #include "rodshape/sim/plant.hpp"
+#include "rodshape/sim/plant_interface.hpp"
 #include "rodshape/sim/plant_model.hpp"
 #include "rodshape/sim/shape_error.hpp"
 #include "rodshape/trajectory/plan_problem.hpp"
@@ -122,5 +123,14 @@ ValidationResult validate_plan(const PlanProblem& problem,
                                const PlantModel& plant,
                                const SensorModel& sensor,
                                const ValidationOptions& options = {});
+/// The same on the plants `make` makes (for plant.model, validate_plan above uses plant_maker()) of
+/// PlantSetup{plant.real_rod(problem.rod), problem.grasp, plant.grasp_offset, options.plant}: open
+/// loop one, driven once along the commanded path; closed loop one per run.
+ValidationResult validate_plan(const PlanProblem& problem,
+                               const PlanResult& plan,
+                               const PlantModel& plant,
+                               const SensorModel& sensor,
+                               const ValidationOptions& options,
+                               const PlantMaker& make);
 
 }  // namespace rodshape

@@ -62,6 +62,13 @@ struct PlantFrame {
   Pose clamp{};
   /// The commanded base gripper pose (clamp · base_T_ee); with a fixed clamp, the clamp's pose.
   Pose base_end_effector{};
+  /// The tip's twist [v; ω] (world frame, v the velocity of the tip's origin, m/s and rad/s) and
+  /// each node's velocity (m/s). The quasi-static plant has no velocities of its own: drive_plant's
+  /// are the backward differences of the held state over its sample step, (p − p_before) /
+  /// (t − t_before), p_before the nodes at the sample before the held one (ω: log(R R_beforeᵀ) of
+  /// the tip over the same step); zero while the path's first sample is held.
+  Vector6d tip_twist = Vector6d::Zero();
+  std::vector<Eigen::Vector3d> node_velocities;
 };
 
 struct PlantOptions {

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <string>
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/core/pose.hpp"
@@ -33,6 +34,9 @@ struct PlantModel {
   /// The tip's actual pose in the commanded tip frame (commanded_T_actual): a grasp that slipped
   /// or was placed a little off.
   Pose grasp_offset;
+  /// The plant that drives the rod, by its name in plant_factory.hpp: "quasi_static" (the only one
+  /// today: the held equilibrium solved sample by sample, plant.hpp).
+  std::string model = "quasi_static";
 
   /// Throws InputError naming the field ("PlantModel.stiffness_scale = 0 must be > 0", …).
   void validate() const;
