@@ -11,6 +11,7 @@
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
+#include "rodshape/solvers/contact_equilibrium.hpp"
 #include "rodshape/solvers/equilibrium_analysis.hpp"
 
 namespace rodshape::cli {
@@ -49,19 +50,29 @@ class EquilibriumCommand final : public Command {
     }
 
     EquilibriumAnalysis analysis;
+    ContactEquilibriumResult contact;
+    const bool resting = !task.scene.empty();
     try {
-      analysis = analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options);
-    } catch (const InputError& error) {  // a held pose beyond the model's validity
+      if (resting)
+        contact = solve_contact_equilibrium(task.rod, task.tip, task.scene, task.initial_wrench,
+                                            task.options);
+      else
+        analysis = analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options);
+    } catch (const InputError& error) {  // a held pose beyond the model's validity or in a solid
       throw InputError(task_path_ + ": " + in_task_names(error));
     }
-    const ShootingSummary& summary = analysis.solution.summary;
-    const std::string json = equilibrium_result_json(analysis);
+    const ShootingSummary& summary = resting ? contact.shooting.summary : analysis.solution.summary;
+    const std::string json = resting
+                                 ? contact_equilibrium_result_json(contact, task.rod, task.scene)
+                                 : equilibrium_result_json(analysis);
+    const std::string brief =
+        resting ? contact.shooting.brief() + "; " + contact.brief() : analysis.brief();
     if (!to_file) {
       if (!quiet_) write_to_standard_output(json);
     } else {
       write_file_atomically(output_path_, json);
       if (!quiet_) {
-        std::cout << task_path_ << ": " << analysis.brief() << "; wrote " << output_path_ << "\n";
+        std::cout << task_path_ << ": " << brief << "; wrote " << output_path_ << "\n";
       }
     }
 

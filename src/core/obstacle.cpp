@@ -364,11 +364,23 @@ ObstacleDescription Obstacle::describe() const {
 
 void Obstacle::validate(const std::string& field) const {
   std::visit([&](const auto& s) { validate_shape(s, field); }, shape);
+  const std::string mu = field + ".friction";
+  if (!std::isfinite(friction) || friction < 0.0 || friction > kMaxFriction)
+    throw InputError(mu, " = " + detail::format_value(friction) +
+                             " must be a Coulomb coefficient in [0, " +
+                             detail::format_value(kMaxFriction) + "]");
+  if (friction > 0.0 && !touchable())
+    throw InputError(mu, " is for an obstacle the rod may touch (contact: touch)");
+  if (friction > 0.0)
+    throw InputError(mu, " = " + detail::format_value(friction) +
+                             ": Coulomb friction is not solved yet; contact is frictionless (0)");
 }
 
 Obstacle transformed(const Pose& a_T_b, const Obstacle& in_b) {
-  return {in_b.name, std::visit([&](const auto& s) { return ObstacleShape(transformed(a_T_b, s)); },
-                                in_b.shape)};
+  Obstacle out = in_b;
+  out.shape =
+      std::visit([&](const auto& s) { return ObstacleShape(transformed(a_T_b, s)); }, in_b.shape);
+  return out;
 }
 
 }  // namespace rodshape

@@ -78,6 +78,10 @@ Scene read_scene_section(const YamlField& scene,
                          const std::optional<CrossSection>& section,
                          PlanOptions& options);
 
+/// An equilibrium task's `scene`: obstacles only, each `contact: touch` (the rod rests on them;
+/// frictionless). Needs the rod's section.
+Scene read_equilibrium_scene(const YamlField& scene, const std::optional<CrossSection>& section);
+
 /// `robot`: urdf (relative to `task_directory` unless absolute), base_link, tip_link, base (a
 /// pose), flange_to_end_effector (a pose), seed (joint positions). Reads the URDF; its errors are
 /// reported at the field they concern (robot.tip_link for an unknown tip link, else robot.urdf).

@@ -114,6 +114,29 @@ std::string equilibrium_result_json(const ShootingResult& solution,
   return io_detail::format_json(result_document(solution, stability, rod));
 }
 
+std::string contact_equilibrium_result_json(const ContactEquilibriumResult& result,
+                                            const ClampedRod& rod,
+                                            const Scene& scene) {
+  Json document = result_document(result.shooting, std::nullopt, rod);
+  document["least_gap"] = io_detail::json_number(result.least_gap);
+  Json contacts = Json::array();
+  for (const RodContact& c : result.contacts) {
+    const Obstacle& o = scene.obstacles[static_cast<std::size_t>(c.obstacle)];
+    Json entry;
+    entry["obstacle"] = o.name.empty() ? Json(c.obstacle) : Json(o.name);
+    entry["s"] = {io_detail::json_number(c.s_start), io_detail::json_number(c.s_end)};
+    entry["force"] = {io_detail::json_number(c.force.x()), io_detail::json_number(c.force.y()),
+                      io_detail::json_number(c.force.z())};
+    entry["max_line_force"] = io_detail::json_number(c.max_line_force);
+    entry["end_forces"] = {io_detail::json_number(c.start_force),
+                           io_detail::json_number(c.end_force)};
+    entry["sticking"] = nullptr;
+    contacts.push_back(entry);
+  }
+  document["contacts"] = contacts;
+  return io_detail::format_json(document);
+}
+
 std::string equilibrium_result_json(const EquilibriumAnalysis& analysis) {
   Json result = result_document(analysis.solution, analysis.stability, analysis.rod);
   result["stable_search"] = stable_search_json(analysis.stable_search, analysis.solved_energy);

@@ -9,14 +9,21 @@ namespace rodshape::io_detail {
 
 namespace {
 
+/// An obstacle's keys: its shape's, and those every obstacle has.
+std::vector<std::string_view> keys(std::initializer_list<std::string_view> shape_keys) {
+  std::vector<std::string_view> all = {"shape", "name", "contact", "friction"};
+  all.insert(all.end(), shape_keys.begin(), shape_keys.end());
+  return all;
+}
+
 ObstacleShape read_obstacle_shape(const YamlField& obstacle, const std::string& shape) {
   if (shape == "sphere") {
-    obstacle.expect_mapping({"shape", "name", "center", "radius"});
+    obstacle.expect_mapping(keys({"center", "radius"}));
     return SphereObstacle{obstacle.require("center").vector3(),
                           obstacle.require("radius").number()};
   }
   if (shape == "box") {
-    obstacle.expect_mapping({"shape", "name", "center", "size", "rotation"});
+    obstacle.expect_mapping(keys({"center", "size", "rotation"}));
     BoxObstacle box{obstacle.require("center").vector3(), obstacle.require("size").vector3(),
                     Eigen::Matrix3d::Identity()};
     if (const YamlField rotation = obstacle.get("rotation"); rotation.present())
@@ -24,11 +31,11 @@ ObstacleShape read_obstacle_shape(const YamlField& obstacle, const std::string& 
     return box;
   }
   if (shape == "capsule") {
-    obstacle.expect_mapping({"shape", "name", "from", "to", "radius"});
+    obstacle.expect_mapping(keys({"from", "to", "radius"}));
     return CapsuleObstacle{obstacle.require("from").vector3(), obstacle.require("to").vector3(),
                            obstacle.require("radius").number()};
   }
-  obstacle.expect_mapping({"shape", "name", "normal", "offset"});
+  obstacle.expect_mapping(keys({"normal", "offset"}));
   return HalfSpaceObstacle{obstacle.require("normal").vector3(),
                            obstacle.require("offset").number()};
 }
@@ -44,6 +51,11 @@ Obstacle read_obstacle(const YamlField& obstacle, int index) {
       name.fail_value("must have 1 to 100 characters");
   }
   result.shape = read_obstacle_shape(obstacle, shape);
+  if (const YamlField contact = obstacle.get("contact"); contact.present())
+    result.contact =
+        contact.choice({"avoid", "touch"}) == "touch" ? ContactMode::Touch : ContactMode::Avoid;
+  if (const YamlField friction = obstacle.get("friction"); friction.present())
+    result.friction = friction.number();
   const std::string field = "Scene.obstacles[" + std::to_string(index) + "]";
   obstacle.located([&] { result.validate(field); });
   return result;
@@ -78,6 +90,35 @@ Scene read_scene_section(const YamlField& scene,
   }
   for (std::size_t j = 0; j < elements.size(); ++j)
     result.obstacles.push_back(read_obstacle(elements[j], static_cast<int>(j)));
+  scene.located([&] { result.validate(); });
+  for (std::size_t j = 0; j < elements.size(); ++j)
+    if (result.obstacles[j].touchable())
+      elements[j].require("contact").fail_value(
+          "is solved by equilibrium tasks so far (rodshape equilibrium): a plan keeps the scene's "
+          "clearance from every obstacle; give contact: avoid");
+  return result;
+}
+
+Scene read_equilibrium_scene(const YamlField& scene, const std::optional<CrossSection>& section) {
+  scene.expect_mapping({"obstacles"});
+  Scene result;
+  result.clearance = 0.0;
+  result.rod_radius = section ? section->circumscribed_radius() : 0.0;
+  const YamlField obstacles = scene.require("obstacles");
+  const std::vector<YamlField> elements = obstacles.elements();
+  if (elements.size() > Scene::kMaxObstacles) {
+    obstacles.fail(obstacles.path() + " has " + std::to_string(elements.size()) +
+                   " entries; at most " + std::to_string(Scene::kMaxObstacles));
+  }
+  for (std::size_t j = 0; j < elements.size(); ++j) {
+    result.obstacles.push_back(read_obstacle(elements[j], static_cast<int>(j)));
+    if (!result.obstacles.back().touchable())
+      elements[j].fail(elements[j].path() +
+                       ".contact: an equilibrium rests on its obstacles: give contact: touch "
+                       "(avoid, the default, is for plans, which keep a clearance)");
+  }
+  if (!section)
+    scene.fail(scene.path() + " needs rod.section: the rod's surface is what rests on an obstacle");
   scene.located([&] { result.validate(); });
   return result;
 }

@@ -26,8 +26,8 @@ using io_detail::YamlField;
 /// The top-level sections of an equilibrium task. The plan task lists its own and reuses the
 /// section readers.
 const std::vector<std::string_view>& equilibrium_sections() {
-  static const std::vector<std::string_view> sections = {"rod",  "gravity", "distributed_load",
-                                                         "base", "tip",     "solver"};
+  static const std::vector<std::string_view> sections = {
+      "rod", "gravity", "distributed_load", "base", "tip", "solver", "scene"};
   return sections;
 }
 
@@ -46,7 +46,6 @@ const std::vector<io_detail::KeyHint>& equilibrium_hints() {
       {"trajectory", "trajectory is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"optimizer", "optimizer is a section of plan tasks (rodshape plan); equilibrium has solver"},
       {"robot", "robot is a section of plan tasks (rodshape plan), not of equilibrium"},
-      {"scene", "scene is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"base_grasp", "base_grasp is a section of plan tasks (rodshape plan), not of equilibrium"},
       {"base_workspace",
        "base_workspace is a section of plan tasks (rodshape plan), not of equilibrium"},
@@ -140,8 +139,11 @@ namespace {
 EquilibriumTask read_equilibrium_sections(const YamlField& root, const std::string& source_name) {
   EquilibriumTask task;
   task.source = source_name;
-  task.rod = read_clamped_rod(root);
+  std::optional<CrossSection> section;
+  task.rod = read_clamped_rod(root, &section);
   task.tip = io_detail::read_tip_condition(root.require("tip"));
+  if (const YamlField scene = root.get("scene"); scene.present())
+    task.scene = io_detail::read_equilibrium_scene(scene, section);
   if (const YamlField solver = root.get("solver"); solver.present()) {
     io_detail::read_solver_section(solver, task.options, task.initial_wrench);
   }
@@ -216,6 +218,8 @@ EquilibriumTask parse_equilibrium_task(const std::string& yaml_text,
 EstimateTask parse_estimate_task(const std::string& yaml_text, const std::string& source_name) {
   const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
   root.expect_mapping(estimate_sections(), equilibrium_hints());
+  if (const YamlField scene = root.get("scene"); scene.present())
+    scene.fail("scene: rodshape estimate fits a free rod to its cloud; contact is not estimated");
   EstimateTask task;
   task.equilibrium = read_equilibrium_sections(root, source_name);
   const YamlField sensor = root.require("sensor");

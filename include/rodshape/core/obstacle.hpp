@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "rodshape/core/obstacle_shapes.hpp"
+#include "rodshape/enum_names.hpp"
 
 namespace rodshape {
 
@@ -28,9 +29,23 @@ struct ObstacleDescription {
   std::vector<ObstacleField> fields;
 };
 
+/// What the rod may do with an obstacle: keep the scene's clearance from it, or rest on it
+/// (unilateral contact: the gap ≥ 0, a reaction along the obstacle's normal where it is 0).
+enum class ContactMode { Avoid, Touch };
+inline constexpr EnumNames<ContactMode, 2> kContactModeNames = {{
+    {ContactMode::Avoid, "avoid"},
+    {ContactMode::Touch, "touch"},
+}};
+
 struct Obstacle {
   std::string name;  // optional; messages say "obstacle 'post'" or "obstacle 3"
   ObstacleShape shape;
+  ContactMode contact = ContactMode::Avoid;
+  /// Coulomb's μ of a touchable obstacle (0: frictionless, the only kind solved today).
+  double friction = 0.0;
+  static constexpr double kMaxFriction = 10.0;
+
+  bool touchable() const { return contact == ContactMode::Touch; }
 
   /// "sphere", "box", "capsule", "half_space".
   std::string kind() const;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "rodshape/core/clamped_rod.hpp"
+#include "rodshape/core/scene.hpp"
 #include "rodshape/core/wrench.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/tip_condition.hpp"
@@ -16,6 +17,7 @@ struct EquilibriumTask {
   TipCondition tip;           // free (tip wrench), clamped (tip pose) or grasped (pose + released)
   BaseWrench initial_wrench;  // the shooting solver's guess for n(0), m(0); zero by default
   ShootingOptions options;    // solver.max_iterations, solver.tolerance, solver.continuation, ...
+  Scene scene;                // obstacles the rod rests on (contact: touch); empty by default
   std::string source;         // the file name that messages name
 };
 

@@ -7,6 +7,7 @@
 
 #include "rodshape/core/clamped_rod.hpp"
 #include "rodshape/io/estimate_task.hpp"
+#include "rodshape/solvers/contact_equilibrium.hpp"
 #include "rodshape/solvers/equilibrium_analysis.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/stability.hpp"
@@ -23,6 +24,14 @@ std::string equilibrium_result_json(const ShootingResult& solution,
 /// (the energy of the solve's own, unstable equilibrium, J).
 std::string equilibrium_result_json(const EquilibriumAnalysis& analysis);
 
+/// The document of an equilibrium resting on a scene's obstacles: as above with stability null
+/// (not assessed with contacts), plus `least_gap` (m) and `contacts`, a list of {obstacle (its
+/// name, or its index), s: [s_start, s_end] (equal for a point contact), force (the whole reaction
+/// on the rod, N, world frame), max_line_force (N/m), end_forces: [at s_start, at s_end] (the
+/// concentrated reactions, N), sticking (null: frictionless)}.
+std::string contact_equilibrium_result_json(const ContactEquilibriumResult& result,
+                                            const ClampedRod& rod,
+                                            const Scene& scene);
 /// The document `rodshape estimate` writes (docs/estimate.md): the estimated equilibrium in the
 /// equilibrium document's keys (status and message the fit's; residual, integration_error and
 /// stability null: no shooting solve and no stability test), plus `fit`: explained, why not,

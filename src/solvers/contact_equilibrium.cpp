@@ -1,0 +1,640 @@
+// contact_equilibrium.cpp: the rod's equilibrium resting on touchable obstacles
+// (contact_equilibrium.hpp). Stages: the free solve; the contact set from its penetrations; per
+// contact set a Newton solve of the patches' conditions; the set's update; the accuracy check.
+#include "rodshape/solvers/contact_equilibrium.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <variant>
+
+#include "rodshape/error.hpp"
+#include "rodshape/solvers/shooting_residual.hpp"
+
+namespace rodshape {
+
+namespace {
+
+/// One patch of the contact set on one obstacle: a point contact at s = a (reaction Pa), or a
+/// segment [a, b] lying on a plane of the obstacle (normal ν), with point reactions Pa, Pb at
+/// its ends inside the rod.
+struct Patch {
+  int obstacle = -1;
+  bool point = false;
+  bool from_clamp = false;  // a = 0: the clamp lies on the plane (it takes the end's reaction)
+  bool to_tip = false;      // b = L: the tip lies on it (a held tip takes the end's reaction)
+  double a = 0.0, b = 0.0, Pa = 0.0, Pb = 0.0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // ν of the plane (segments)
+  bool free_a() const { return !point && !from_clamp; }
+  bool free_b() const { return !point && !to_tip; }
+};
+
+/// What stays fixed over one Newton solve.
+struct Setup {
+  const ClampedRod& rod;
+  const TipCondition& tip;
+  const Scene& scene;
+  double radius;  // the section's radius when it is not known
+  bool free_tip;
+};
+
+RodPoint node_point(const RodConfiguration& c, int i) {
+  const std::size_t k = static_cast<std::size_t>(i);
+  RodPoint point;
+  point.s = c.s[k];
+  point.p = c.p[k];
+  point.R = c.R[k];
+  point.n = c.n[k];
+  point.m = c.m[k];
+  point.p_prime = point.R * c.v[k];
+  point.u = c.u[k];
+  return point;
+}
+
+/// The section's support distance along ν (radius when unknown).
+double support(const RodProperties& properties,
+               const Eigen::Matrix3d& R,
+               const Eigen::Vector3d& nu,
+               double radius) {
+  if (!properties.section) return radius;
+  const CrossSection& section = *properties.section;
+  if (section.shape == CrossSection::Shape::Circle) return section.radius;
+  return 0.5 * section.width * std::abs(R.col(0).dot(nu)) +
+         0.5 * section.height * std::abs(R.col(1).dot(nu));
+}
+
+/// g' at a point: ∇d·p' less the support's rate (by central differences along the rod's own
+/// rotation rate, for a rectangle).
+double gap_rate(const Obstacle& o, const RodPoint& x, const RodProperties& properties, double r) {
+  const PointDistance d = o.distance(x.p);
+  double rate = d.gradient.dot(x.p_prime);
+  if (properties.section && properties.section->shape == CrossSection::Shape::Rectangle &&
+      x.u.norm() > 0.0) {
+    const double e = 1e-6 * properties.length;
+    const auto h_at = [&](double t) {
+      const Eigen::Matrix3d R = x.R * Eigen::AngleAxisd(t * x.u.norm(), x.u.normalized()).matrix();
+      return support(properties, R, o.distance(x.p + t * x.p_prime).gradient, r);
+    };
+    rate -= (h_at(e) - h_at(-e)) / (2.0 * e);
+  }
+  return rate;
+}
+
+/// The line reaction that carries a segment lying on a plane: λ = -f·ν (the load pressing on it;
+/// with it, a rod on the plane with n·ν = 0 and no moment about ν × t stays on it: exact for a
+/// Kirchhoff rod, and for a Cosserat rod, whose shear along ν is then 0).
+double lying_reaction(const ClampedRod& rod, const Patch& p) {
+  return -rod.load.force.dot(p.normal);
+}
+
+/// The unknowns' layout: z = (w, then each patch's own: a point (s, P); a segment (a, Pa) unless
+/// from the clamp, (b, Pb) unless to the tip).
+int unknowns_of(const std::vector<Patch>& patches) {
+  int n = 6;
+  for (const Patch& p : patches) n += p.point ? 2 : 2 * p.free_a() + 2 * p.free_b();
+  return n;
+}
+
+/// The conditions' count: the tip's six, a point's two (g, g'), a segment's four at a free a
+/// (g, g', n·ν and m·(ν × t) after a) or two at the clamp (n·ν, m·(ν × t)). A segment to a held
+/// tip repeats two of the tip's: the system is then solved in least squares.
+int conditions_of(const std::vector<Patch>& patches) {
+  int n = 6;
+  for (const Patch& p : patches) n += p.point ? 2 : (p.from_clamp ? 2 : 4);
+  return n;
+}
+
+Eigen::VectorXd pack(const BaseWrench& w, const std::vector<Patch>& patches) {
+  Eigen::VectorXd z(unknowns_of(patches));
+  z << w.force, w.moment, Eigen::VectorXd::Zero(z.size() - 6);
+  int k = 6;
+  for (const Patch& p : patches) {
+    if (p.point || p.free_a()) z[k++] = p.a, z[k++] = p.Pa;
+    if (p.free_b()) z[k++] = p.b, z[k++] = p.Pb;
+  }
+  return z;
+}
+
+BaseWrench unpack(const Eigen::VectorXd& z, std::vector<Patch>& patches) {
+  int k = 6;
+  for (Patch& p : patches) {
+    if (p.point || p.free_a()) p.a = z[k++], p.Pa = z[k++];
+    if (p.free_b()) p.b = z[k++], p.Pb = z[k++];
+    if (p.point) p.b = p.a;
+  }
+  return {z.segment<3>(0), z.segment<3>(3)};
+}
+
+/// The unknowns' scales: bending units for w, EI/L² for P, L for s; and which are places.
+Eigen::VectorXd scales_of(const ClampedRod& rod,
+                          const std::vector<Patch>& patches,
+                          std::vector<bool>& place) {
+  const RodProperties& rp = rod.properties;
+  const double L = rp.length, EI = 0.5 * (rp.K_rot.x() + rp.K_rot.y());
+  Eigen::VectorXd scale(unknowns_of(patches));
+  place.assign(static_cast<std::size_t>(scale.size()), false);
+  scale.head<6>() = rp.bending_wrench_units();
+  for (int k = 6; k < scale.size(); k += 2) {
+    place[static_cast<std::size_t>(k)] = true;
+    scale[k] = L, scale[k + 1] = EI / (L * L);
+  }
+  return scale;
+}
+
+/// The patches' reactions as loads on the rod.
+ContactLoads loads_of(const Setup& setup, const std::vector<Patch>& patches) {
+  ContactLoads loads;
+  for (const Patch& p : patches) {
+    const Obstacle* o = &setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+    const auto point = [&](double s, double P) {
+      PointForce f;
+      f.s = s, f.normal_of = o, f.magnitude = P;
+      if (!p.point) f.normal_of = nullptr, f.force = P * p.normal;
+      loads.point_forces.push_back(f);
+    };
+    if (p.point || p.free_a()) point(p.a, p.Pa);
+    if (p.free_b()) point(p.b, p.Pb);
+    if (p.point) continue;
+    LineForce f;
+    f.s0 = p.a, f.s1 = p.b;
+    f.f0 = f.f1 = lying_reaction(setup.rod, p) * p.normal;
+    loads.line_forces.push_back(f);
+  }
+  return loads;
+}
+
+/// The places whose states the conditions read: each point's s and each segment's free a.
+std::vector<double> probes_of(const std::vector<Patch>& patches) {
+  std::vector<double> s;
+  for (const Patch& p : patches) {
+    if (p.point || p.free_a()) s.push_back(p.a);
+    if (p.free_b()) s.push_back(p.b);
+  }
+  return s;
+}
+
+/// One evaluation of the conditions at z.
+struct Evaluation {
+  Eigen::VectorXd r;
+  RodConfiguration configuration;
+  std::vector<RodPointPair> ends;  // probes_of(patches)'s states
+  std::vector<Patch> patches;      // unpacked
+  BaseWrench w;
+};
+
+/// The two conditions that keep a rod on a plane from a point on: n·ν = 0 and m·(ν × t) = 0.
+void on_plane(const RodPoint& x, const Eigen::Vector3d& nu, Eigen::VectorXd& r, int& k) {
+  const Eigen::Vector3d t = x.p_prime.normalized();
+  r[k++] = x.n.dot(nu);           // N
+  r[k++] = x.m.dot(nu.cross(t));  // N·m
+}
+
+Evaluation evaluate(const Setup& setup,
+                    const std::vector<Patch>& layout,
+                    const Eigen::VectorXd& z) {
+  Evaluation e;
+  e.patches = layout;
+  e.w = unpack(z, e.patches);
+  integrate_with_contact_loads(setup.rod, e.w, loads_of(setup, e.patches), e.configuration,
+                               probes_of(e.patches), &e.ends);
+  e.r.resize(conditions_of(e.patches));
+  e.r.head<6>() = shooting_residual(setup.tip, e.configuration);
+  const RodProperties& rp = setup.rod.properties;
+  const double r = setup.radius;
+  int k = 6;
+  std::size_t probe = 0;
+  for (const Patch& p : e.patches) {
+    const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+    if (p.point) {
+      const RodPointPair& x = e.ends[probe++];
+      e.r[k++] = contact_gap(o, x.before, rp, r);
+      e.r[k++] = 0.5 * (gap_rate(o, x.before, rp, r) + gap_rate(o, x.after, rp, r));
+      continue;
+    }
+    if (p.from_clamp) {
+      on_plane(node_point(e.configuration, 0), p.normal, e.r, k);
+    } else {  // touch-down: tangent on the free side, then on the plane's manifold
+      const RodPointPair& x = e.ends[probe++];
+      e.r[k++] = contact_gap(o, x.before, rp, r);
+      e.r[k++] = gap_rate(o, x.before, rp, r);
+      on_plane(x.after, p.normal, e.r, k);
+    }
+    if (p.free_b()) ++probe;
+  }
+  return e;
+}
+
+/// A layout Newton may evaluate: every segment's ends in order inside the rod.
+bool ordered(const std::vector<Patch>& patches, double L) {
+  for (const Patch& p : patches)
+    if (!(p.a >= 0.0 && p.b <= L && (p.point || p.b - p.a > 1e-9 * L))) return false;
+  return true;
+}
+
+/// Gauss–Newton on the central-difference Jacobian in the scaled unknowns (square, or with more
+/// conditions than unknowns where a segment reaches a held tip), rows equilibrated by the first
+/// Jacobian, with backtracking on the scaled residual; each end moved at most one interval a step.
+bool newton(const Setup& setup,
+            const std::vector<Patch>& layout,
+            Eigen::VectorXd& z,
+            Evaluation& at,
+            double tolerance,
+            int max_iterations,
+            int& iterations) {
+  std::vector<bool> place;
+  const Eigen::VectorXd scale = scales_of(setup.rod, layout, place);
+  const double L = setup.rod.properties.length, h = setup.rod.step();
+  const int n = static_cast<int>(z.size());
+  at = evaluate(setup, layout, z);
+  const int m = static_cast<int>(at.r.size());
+  Eigen::VectorXd row_scale = Eigen::VectorXd::Ones(m);
+  for (int it = 0; it < max_iterations; ++it) {
+    if (!at.r.allFinite()) return false;
+    if (at.r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
+    Eigen::MatrixXd J(m, n);
+    for (int j = 0; j < n; ++j) {
+      Eigen::VectorXd plus = z, minus = z;
+      const double dz = 1e-6 * scale[j];
+      plus[j] += dz, minus[j] -= dz;
+      J.col(j) = (evaluate(setup, layout, plus).r - evaluate(setup, layout, minus).r) / (2.0 * dz) *
+                 scale[j];
+    }
+    if (it == 0)
+      for (int i = 0; i < m; ++i)
+        row_scale[i] = 1.0 / std::max(J.row(i).cwiseAbs().maxCoeff(), 1e-300);
+    const Eigen::VectorXd step =
+        (row_scale.asDiagonal() * J).colPivHouseholderQr().solve(-(row_scale.asDiagonal() * at.r));
+    Eigen::VectorXd dz = step.cwiseProduct(scale);
+    if (!dz.allFinite()) return false;
+    for (int j = 6; j < n; ++j)
+      if (place[static_cast<std::size_t>(j)] && std::abs(dz[j]) > h) dz *= h / std::abs(dz[j]);
+    const double merit = (row_scale.asDiagonal() * at.r).squaredNorm();
+    bool accepted = false;
+    for (double t = 1.0; t > 1e-4; t *= 0.5) {
+      Eigen::VectorXd trial = z + t * dz;
+      for (int j = 6; j < n; ++j)
+        if (place[static_cast<std::size_t>(j)]) trial[j] = std::clamp(trial[j], 0.0, L);
+      std::vector<Patch> check = layout;
+      unpack(trial, check);
+      if (!ordered(check, L)) continue;
+      Evaluation e = evaluate(setup, layout, trial);
+      if (e.r.allFinite() && (row_scale.asDiagonal() * e.r).squaredNorm() < merit) {
+        z = trial, at = std::move(e), accepted = true;
+        break;
+      }
+    }
+    ++iterations;
+    if (!accepted) return at.r.lpNorm<Eigen::Infinity>() <= tolerance;
+  }
+  return at.r.lpNorm<Eigen::Infinity>() <= tolerance;
+}
+
+/// Whether a patch of obstacle j covers s (a point contact: within half an interval).
+bool covered(const std::vector<Patch>& patches, int j, double s, double h) {
+  for (const Patch& p : patches)
+    if (p.obstacle == j && s >= p.a - 0.5 * h * p.point && s <= p.b + 0.5 * h * p.point)
+      return true;
+  return false;
+}
+
+/// The gap of node i to obstacle j.
+double node_gap(const Setup& setup, const RodConfiguration& c, int j, int i) {
+  return contact_gap(setup.scene.obstacles[static_cast<std::size_t>(j)], node_point(c, i),
+                     setup.rod.properties, setup.radius);
+}
+
+/// Whether the run of nodes i0..i1 is on one plane of obstacle j that the load presses the rod
+/// onto (a half-space, or one face of a box): its normal there.
+std::optional<Eigen::Vector3d> plane_under(
+    const Setup& setup, int j, int i0, int i1, const RodConfiguration& c) {
+  const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(j)];
+  const bool flat = std::holds_alternative<HalfSpaceObstacle>(o.shape) ||
+                    std::holds_alternative<BoxObstacle>(o.shape);
+  if (!flat || i1 <= i0) return std::nullopt;
+  const Eigen::Vector3d nu = o.distance(c.p[static_cast<std::size_t>(i0)]).gradient;
+  if ((o.distance(c.p[static_cast<std::size_t>(i1)]).gradient - nu).norm() > 1e-9)
+    return std::nullopt;
+  if (!(-setup.rod.load.force.dot(nu) > 0.0)) return std::nullopt;
+  return nu;
+}
+
+/// A new patch on obstacle j over the penetrating run of nodes i0..i1: a segment on the plane
+/// under it, half an interval beyond the run (from the clamp when the run starts there), or else
+/// a point contact at its deepest node.
+Patch new_patch(const Setup& setup, int j, int i0, int i1, const RodConfiguration& c) {
+  const double h = setup.rod.step(), L = setup.rod.properties.length;
+  const int N = setup.rod.intervals;
+  Patch p;
+  p.obstacle = j;
+  // end reactions start pushing: at P = 0 moving an end and changing its force act alike (the
+  // Jacobian is singular there); a quarter of the rod's weight, or 0.1 EI/L² weightless
+  const double EI = 0.5 * (setup.rod.properties.K_rot.x() + setup.rod.properties.K_rot.y());
+  p.Pa = p.Pb = std::max(0.25 * setup.rod.load.force.norm() * L, 0.1 * EI / (L * L));
+  const std::optional<Eigen::Vector3d> plane = plane_under(setup, j, std::max(i0, 1), i1, c);
+  if (!plane) {
+    int deepest = i0;
+    for (int i = i0; i <= i1; ++i)
+      if (node_gap(setup, c, j, i) < node_gap(setup, c, j, deepest)) deepest = i;
+    p.point = true;
+    p.a = p.b = std::clamp(deepest, 1, N - 1) * h;
+    return p;
+  }
+  p.normal = *plane;
+  p.from_clamp = i0 <= 1 && std::abs(node_gap(setup, c, j, 0)) <= 1e-6 * L;
+  p.to_tip = i1 >= N - 1;
+  p.a = p.from_clamp ? 0.0 : (i0 - 0.5) * h;
+  p.b = p.to_tip ? L : (i1 + 0.5) * h;
+  return p;
+}
+
+/// Adds patches for the free spans' penetrating runs of nodes (a run next to a segment's free
+/// end extends it); true when any was added or extended.
+bool add_penetrations(const Setup& setup,
+                      const Evaluation& e,
+                      std::vector<Patch>& patches,
+                      double tolerance) {
+  const RodConfiguration& c = e.configuration;
+  const double h = setup.rod.step();
+  bool added = false;
+  for (int j = 0; j < static_cast<int>(setup.scene.obstacles.size()); ++j) {
+    if (!setup.scene.obstacles[static_cast<std::size_t>(j)].touchable()) continue;
+    const auto penetrates = [&](int i) {
+      return i < c.nodes() && !covered(patches, j, i * h, h) &&
+             node_gap(setup, c, j, i) < -tolerance;
+    };
+    for (int i = 0; i < c.nodes(); ++i) {
+      if (!penetrates(i)) continue;
+      int i1 = i;
+      while (penetrates(i1 + 1)) ++i1;
+      patches.push_back(new_patch(setup, j, i, i1, c));
+      added = true;
+      i = i1;
+    }
+  }
+  return added;
+}
+
+/// One update of the contact set; true when it changed: a reaction that pulls drops its patch (a
+/// segment becomes a point contact at its middle), an end that reaches the clamp or the tip
+/// stays there, and penetrations of the free spans add patches.
+bool update_contact_set(const Setup& setup,
+                        const Evaluation& e,
+                        std::vector<Patch>& patches,
+                        double gap_tolerance) {
+  const double force_tolerance = 1e-9 * setup.rod.properties.bending_wrench_units()[0];
+  const double L = setup.rod.properties.length;
+  std::vector<Patch> next;
+  bool changed = false;
+  for (Patch p : e.patches) {
+    if (p.point && p.Pa < -force_tolerance) {
+      changed = true;
+      continue;
+    }
+    if (!p.point) {
+      if (p.free_b() && p.b >= L * (1.0 - 1e-9)) p.to_tip = true, p.b = L, changed = true;
+      if ((p.free_a() && p.Pa < -force_tolerance) || (p.free_b() && p.Pb < -force_tolerance)) {
+        p.point = true, p.from_clamp = p.to_tip = false;
+        p.a = p.b = 0.5 * (p.a + p.b), p.Pa = 0.0;
+        changed = true;
+      }
+    }
+    next.push_back(p);
+  }
+  patches = std::move(next);
+  if (changed) return true;
+  return add_penetrations(setup, e, patches, gap_tolerance);
+}
+
+RodContact contact_of(const Setup& setup, const Patch& p) {
+  RodContact c;
+  c.obstacle = p.obstacle;
+  c.s_start = p.a;
+  c.s_end = p.b;
+  c.start_force = p.point || p.free_a() ? p.Pa : 0.0;
+  c.end_force = p.free_b() ? p.Pb : 0.0;
+  if (!p.point) c.max_line_force = lying_reaction(setup.rod, p);
+  return c;
+}
+
+/// Each contact's whole reaction: its point forces and its line force (constant along ν).
+void add_forces(const Setup& setup, const Evaluation& e, std::vector<RodContact>& contacts) {
+  std::size_t k = 0, probe = 0;
+  for (const Patch& p : e.patches) {
+    const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+    Eigen::Vector3d F = Eigen::Vector3d::Zero();
+    if (p.point) {
+      F = p.Pa * o.distance(e.ends[probe++].before.p).gradient;
+    } else {
+      if (p.free_a()) F += p.Pa * p.normal, ++probe;
+      if (p.free_b()) F += p.Pb * p.normal, ++probe;
+      F += lying_reaction(setup.rod, p) * (p.b - p.a) * p.normal;
+    }
+    contacts[k++].force = F;
+  }
+}
+
+/// The least gap to the touchable obstacles at the nodes and the contact ends.
+double least_touch_gap(const Setup& setup, const Evaluation& e) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const Obstacle& o : setup.scene.obstacles) {
+    if (!o.touchable()) continue;
+    for (int i = 0; i < e.configuration.nodes(); ++i)
+      least = std::min(least, contact_gap(o, node_point(e.configuration, i), setup.rod.properties,
+                                          setup.radius));
+    for (const RodPointPair& x : e.ends)
+      least = std::min(least, contact_gap(o, x.after, setup.rod.properties, setup.radius));
+  }
+  return least;
+}
+
+/// |Δp|/L over the nodes between the rod and one with twice the sub-steps, at the same unknowns.
+double integration_error(const Setup& setup, const Evaluation& e) {
+  ClampedRod fine = setup.rod;
+  fine.substeps *= 2;
+  RodConfiguration c;
+  integrate_with_contact_loads(fine, e.w, loads_of(setup, e.patches), c);
+  double error = 0.0;
+  for (int i = 0; i < c.nodes(); ++i)
+    error = std::max(
+        error,
+        (c.p[static_cast<std::size_t>(i)] - e.configuration.p[static_cast<std::size_t>(i)]).norm() /
+            setup.rod.properties.length);
+  return error;
+}
+
+/// The clamp and a held tip with the rod's surface outside every touchable obstacle (to 1e-9 m):
+/// a pose inside one is bad input, naming the pose and the obstacle.
+void check_held_poses(const Setup& setup) {
+  const auto check = [&](const Pose& pose, const std::string& field) {
+    RodPoint x;
+    x.p = pose.position, x.R = pose.rotation;
+    for (std::size_t j = 0; j < setup.scene.obstacles.size(); ++j) {
+      const Obstacle& o = setup.scene.obstacles[j];
+      const double gap = contact_gap(o, x, setup.rod.properties, setup.radius);
+      if (o.touchable() && gap < -1e-9)
+        throw InputError(field, " puts the rod " + std::to_string(-gap * 1e3) +
+                                    " mm inside obstacle " + o.label(static_cast<int>(j)) +
+                                    " (Scene.obstacles[" + std::to_string(j) + "])");
+    }
+  };
+  check(setup.rod.clamp, "ClampedRod.clamp");
+  if (const auto* clamped = std::get_if<ClampedTip>(&setup.tip))
+    check(clamped->pose, "ClampedTip.pose");
+  if (const auto* grasped = std::get_if<GraspedTip>(&setup.tip))
+    check(grasped->pose, "GraspedTip.pose");
+}
+
+bool touches_nothing(const Scene& scene) {
+  return std::none_of(scene.obstacles.begin(), scene.obstacles.end(),
+                      [](const Obstacle& o) { return o.touchable(); });
+}
+
+/// The active-set loop at one load: Newton on the contact set, then its update, until it is
+/// consistent (true) or Newton fails or the passes run out (false; `patches` and `at` as they
+/// were then).
+bool settle(const Setup& setup,
+            std::vector<Patch>& patches,
+            Evaluation& at,
+            const ShootingOptions& options,
+            const ContactOptions& contact,
+            ContactEquilibriumResult& result) {
+  for (int pass = 0; pass < contact.max_active_set_iterations; ++pass) {
+    ++result.active_set_iterations;
+    Eigen::VectorXd z = pack(at.w, patches);
+    if (!newton(setup, patches, z, at, options.residual_tolerance, contact.max_newton_iterations,
+                result.newton_iterations))
+      return false;
+    if (!update_contact_set(setup, at, patches, contact.gap_tolerance)) return true;
+  }
+  return false;
+}
+
+/// The load scaled from 0 (the free equilibrium of the weightless rod) to the rod's own, the
+/// contact set settled at each step from the last; steps halved on failure down to 1/1024.
+bool follow_load(const Setup& full,
+                 std::vector<Patch>& patches,
+                 Evaluation& at,
+                 const ShootingOptions& options,
+                 const ContactOptions& contact,
+                 ContactEquilibriumResult& result) {
+  ClampedRod scaled = full.rod;
+  double alpha = 0.0, step = 1.0 / 16.0;
+  while (alpha < 1.0) {
+    const double next = std::min(1.0, alpha + step);
+    scaled.load.force = next * full.rod.load.force;
+    scaled.load.moment = next * full.rod.load.moment;
+    const Setup setup{scaled, full.tip, full.scene, full.radius, full.free_tip};
+    std::vector<Patch> trial_patches = patches;
+    Evaluation trial = at;
+    if (settle(setup, trial_patches, trial, options, contact, result)) {
+      alpha = next, patches = std::move(trial_patches), at = std::move(trial);
+      step = std::min(2.0 * step, 0.5);
+    } else if ((step *= 0.5) < 1.0 / 1024.0) {
+      at = std::move(trial);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void ContactOptions::validate() const {
+  if (max_active_set_iterations < 1 || max_active_set_iterations > kMaxActiveSetIterations)
+    throw InputError("ContactOptions.max_active_set_iterations",
+                     " = " + std::to_string(max_active_set_iterations) + " must be in [1, " +
+                         std::to_string(kMaxActiveSetIterations) + "]");
+  if (max_newton_iterations < 1 || max_newton_iterations > kMaxNewtonIterations)
+    throw InputError("ContactOptions.max_newton_iterations",
+                     " = " + std::to_string(max_newton_iterations) + " must be in [1, " +
+                         std::to_string(kMaxNewtonIterations) + "]");
+  if (!(gap_tolerance > 0.0 && gap_tolerance <= 1e-3))
+    throw InputError("ContactOptions.gap_tolerance", " must be in (0, 1e-3] m");
+}
+
+double contact_gap(const Obstacle& obstacle,
+                   const RodPoint& point,
+                   const RodProperties& properties,
+                   double radius) {
+  const PointDistance d = obstacle.distance(point.p);
+  return d.distance - support(properties, point.R, d.gradient, radius);
+}
+
+std::string ContactEquilibriumResult::brief() const {
+  double largest = 0.0;
+  for (const RodContact& c : contacts) largest = std::max(largest, c.force.norm());
+  std::ostringstream out;
+  out << contacts.size() << (contacts.size() == 1 ? " contact" : " contacts");
+  if (!contacts.empty()) out << ", largest reaction " << largest << " N";
+  return out.str();
+}
+
+ContactEquilibriumResult solve_contact_equilibrium(const ClampedRod& rod,
+                                                   const TipCondition& tip,
+                                                   const Scene& scene,
+                                                   const BaseWrench& guess,
+                                                   const ShootingOptions& options,
+                                                   const ContactOptions& contact) {
+  contact.validate();
+  scene.validate();
+  ContactEquilibriumResult result;
+  if (touches_nothing(scene)) {
+    result.shooting = solve_equilibrium(rod, tip, guess, options);
+    return result;
+  }
+  const Setup setup{rod, tip, scene, scene.rod_radius, std::holds_alternative<FreeTip>(tip)};
+  check_held_poses(setup);
+  std::vector<Patch> patches;
+  Evaluation at;
+  ShootingSummary& summary = result.shooting.summary;
+  // From the weightless rod's free equilibrium.
+  ClampedRod weightless = rod;
+  weightless.load = {};
+  const ShootingResult start = solve_equilibrium(weightless, tip, guess, options);
+  if (!start.summary.converged()) {
+    summary = start.summary;
+    summary.message = "the weightless rod, where contact is followed from: " + summary.message;
+    return result;
+  }
+  at.configuration = start.configuration;
+  at.w = start.base_wrench;
+  const bool followed = follow_load(setup, patches, at, options, contact, result);
+  if (followed && at.patches.empty()) {  // clear of every obstacle: the free solve, refined
+    const int passes = result.active_set_iterations, iterations = result.newton_iterations;
+    result.shooting = solve_equilibrium(rod, tip, at.w, options);
+    result.least_gap = least_touch_gap(setup, at);
+    result.active_set_iterations = passes, result.newton_iterations = iterations;
+    return result;
+  }
+  result.shooting.base_wrench = at.w;
+  result.shooting.configuration = at.configuration;
+  summary.iterations += result.newton_iterations;
+  summary.residual_norm = at.r.size() ? at.r.lpNorm<Eigen::Infinity>() : summary.residual_norm;
+  result.least_gap = least_touch_gap(setup, at);
+  result.loads = loads_of(setup, at.patches);
+  for (const Patch& p : at.patches) result.contacts.push_back(contact_of(setup, p));
+  add_forces(setup, at, result.contacts);
+  if (!followed) {
+    summary.status = SolveStatus::Diverged;
+    summary.message = "the contact conditions were not solved as the load was applied (|r| = " +
+                      std::to_string(summary.residual_norm) + ")";
+    return result;
+  }
+  summary.integration_error = integration_error(setup, at);
+  summary.substeps = rod.substeps;
+  if (!(summary.integration_error <= options.integration_tolerance)) {
+    summary.status = SolveStatus::DiscretisationTooCoarse;
+    summary.message = "the contact equilibrium's integration error " +
+                      std::to_string(summary.integration_error) + " exceeds the tolerance";
+    return result;
+  }
+  summary.status = SolveStatus::Converged;
+  summary.message = "converged with " + result.brief();
+  return result;
+}
+
+}  // namespace rodshape
