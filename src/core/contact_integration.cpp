@@ -97,18 +97,19 @@ class LoadedIntegrator {
     }
   }
 
+  /// Node i's values from one evaluation of the ODE at s.
   void store_node(const OdeState& y, double s, int i, RodConfiguration& out) {
-    const RodPoint point = point_at(y, s);
-    out.s[i] = s;
-    out.p[i] = point.p;
-    out.R[i] = point.R;
-    out.n[i] = point.n;
-    out.m[i] = point.m;
     OdeState dy;
-    OdePoint full;
-    stage_rate(y, s, s, dy, &full);
-    out.v[i] = full.v;
-    out.u[i] = full.u;
+    OdePoint point;
+    stage_rate(y, s, s, dy, &point);
+    const std::size_t k = static_cast<std::size_t>(i);
+    out.s[k] = s;
+    out.p[k] = y.segment<3>(Slot::p);
+    out.R[k] = point.R;
+    out.n[k] = y.segment<3>(Slot::n);
+    out.m[k] = y.segment<3>(Slot::m);
+    out.v[k] = point.v;
+    out.u[k] = point.u;
   }
 
  private:

@@ -61,6 +61,20 @@ Obstacle read_obstacle(const YamlField& obstacle, int index) {
   return result;
 }
 
+/// `scene.obstacles`: at most Scene::kMaxObstacles, each read and validated.
+std::vector<Obstacle> read_obstacles(const YamlField& scene) {
+  const YamlField obstacles = scene.require("obstacles");
+  const std::vector<YamlField> elements = obstacles.elements();
+  if (elements.size() > Scene::kMaxObstacles) {
+    obstacles.fail(obstacles.path() + " has " + std::to_string(elements.size()) +
+                   " entries; at most " + std::to_string(Scene::kMaxObstacles));
+  }
+  std::vector<Obstacle> result;
+  for (std::size_t j = 0; j < elements.size(); ++j)
+    result.push_back(read_obstacle(elements[j], static_cast<int>(j)));
+  return result;
+}
+
 }  // namespace
 
 Scene read_scene_section(const YamlField& scene,
@@ -82,15 +96,9 @@ Scene read_scene_section(const YamlField& scene,
     options.scene_reach = reach.number();
   if (const YamlField detour = scene.get("detour"); detour.present())
     options.scene_detour = detour.boolean();
-  const YamlField obstacles = scene.require("obstacles");
-  const std::vector<YamlField> elements = obstacles.elements();
-  if (elements.size() > Scene::kMaxObstacles) {
-    obstacles.fail(obstacles.path() + " has " + std::to_string(elements.size()) +
-                   " entries; at most " + std::to_string(Scene::kMaxObstacles));
-  }
-  for (std::size_t j = 0; j < elements.size(); ++j)
-    result.obstacles.push_back(read_obstacle(elements[j], static_cast<int>(j)));
+  result.obstacles = read_obstacles(scene);
   scene.located([&] { result.validate(); });
+  const std::vector<YamlField> elements = scene.require("obstacles").elements();
   for (std::size_t j = 0; j < elements.size(); ++j)
     if (result.obstacles[j].touchable())
       elements[j].require("contact").fail_value(
@@ -104,15 +112,10 @@ Scene read_equilibrium_scene(const YamlField& scene, const std::optional<CrossSe
   Scene result;
   result.clearance = 0.0;
   result.rod_radius = section ? section->circumscribed_radius() : 0.0;
-  const YamlField obstacles = scene.require("obstacles");
-  const std::vector<YamlField> elements = obstacles.elements();
-  if (elements.size() > Scene::kMaxObstacles) {
-    obstacles.fail(obstacles.path() + " has " + std::to_string(elements.size()) +
-                   " entries; at most " + std::to_string(Scene::kMaxObstacles));
-  }
+  result.obstacles = read_obstacles(scene);
+  const std::vector<YamlField> elements = scene.require("obstacles").elements();
   for (std::size_t j = 0; j < elements.size(); ++j) {
-    result.obstacles.push_back(read_obstacle(elements[j], static_cast<int>(j)));
-    if (!result.obstacles.back().touchable())
+    if (!result.obstacles[j].touchable())
       elements[j].fail(elements[j].path() +
                        ".contact: an equilibrium rests on its obstacles: give contact: touch "
                        "(avoid, the default, is for plans, which keep a clearance)");

@@ -245,21 +245,11 @@ EstimateTask read_estimate_task(const std::string& path) {
   return parse_estimate_task(read_text_file(path), path);
 }
 
-PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name) {
-  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
-  root.expect_mapping(plan_sections(), plan_hints());
+namespace {
 
-  PlanTask task;
-  task.source = source_name;
-  task.lines = root.key_lines(2);
-  PlanProblem& problem = task.problem;
-  std::optional<CrossSection> section;
-  BaseKeys base_keys;
-  problem.rod = read_clamped_rod(root, &section, &base_keys);
-  if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
-    root.get("rod").get("nodes").fail_value(
-        "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
-  }
+/// A plan's problem sections: target (with the default weights), weights, workspace, grasp,
+/// initial, limits (and the model's validity), wrench_bounds.
+void read_problem_sections(const YamlField& root, PlanProblem& problem) {
   problem.target.energy_weight = io_detail::kDefaultEnergyWeight;
   problem.target.distance_weight = io_detail::kDefaultDistanceWeight;
   io_detail::read_target_section(root.require("target"), problem.target);
@@ -279,10 +269,18 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
     problem.wrench_bounds = io_detail::read_wrench_bounds_section(bounds);
     io_detail::check_wrench_bounds(problem.wrench_bounds, bounds);
   }
+}
+
+/// The planner's options: trajectory, optimizer.
+void read_planner_sections(const YamlField& root, PlanTask& task) {
   if (const YamlField trajectory = root.get("trajectory"); trajectory.present())
     io_detail::read_trajectory_section(trajectory, task.options);
   if (const YamlField optimizer = root.get("optimizer"); optimizer.present())
     io_detail::read_optimiser_section(optimizer, task.options.optimiser);
+}
+
+/// What a validation simulates: plant (and the planner's gravity), sensor, closed_loop.
+void read_simulation_sections(const YamlField& root, PlanTask& task) {
   if (const YamlField plant = root.get("plant"); plant.present())
     task.plant = io_detail::read_plant_section(plant);
   task.plant.planner_gravity = io_detail::read_planner_gravity(root);
@@ -295,6 +293,28 @@ PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source
   }
   if (const YamlField loop = root.get("closed_loop"); loop.present())
     task.closed_loop = io_detail::read_closed_loop_section(loop);
+}
+
+}  // namespace
+
+PlanTask parse_plan_task(const std::string& yaml_text, const std::string& source_name) {
+  const YamlField root = io_detail::parse_yaml(yaml_text, source_name);
+  root.expect_mapping(plan_sections(), plan_hints());
+
+  PlanTask task;
+  task.source = source_name;
+  task.lines = root.key_lines(2);
+  PlanProblem& problem = task.problem;
+  std::optional<CrossSection> section;
+  BaseKeys base_keys;
+  problem.rod = read_clamped_rod(root, &section, &base_keys);
+  if (problem.rod.nodes() > io_detail::kMaxPlanNodes) {
+    root.get("rod").get("nodes").fail_value(
+        "must be <= " + std::to_string(io_detail::kMaxPlanNodes) + " for a plan");
+  }
+  read_problem_sections(root, problem);
+  read_planner_sections(root, task);
+  read_simulation_sections(root, task);
   if (const YamlField scene = root.get("scene"); scene.present())
     problem.scene = io_detail::read_scene_section(scene, section, task.options);
   if (task.depth_sensor) {  // the depth camera sees the rod's surface: the scene's radius

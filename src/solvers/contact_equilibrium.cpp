@@ -409,32 +409,30 @@ bool update_contact_set(const Setup& setup,
   return add_penetrations(setup, e, patches, gap_tolerance);
 }
 
-RodContact contact_of(const Setup& setup, const Patch& p) {
-  RodContact c;
-  c.obstacle = p.obstacle;
-  c.s_start = p.a;
-  c.s_end = p.b;
-  c.start_force = p.point || p.free_a() ? p.Pa : 0.0;
-  c.end_force = p.free_b() ? p.Pb : 0.0;
-  if (!p.point) c.max_line_force = lying_reaction(setup.rod, p);
-  return c;
-}
-
-/// Each contact's whole reaction: its point forces and its line force (constant along ν).
-void add_forces(const Setup& setup, const Evaluation& e, std::vector<RodContact>& contacts) {
-  std::size_t k = 0, probe = 0;
+/// The contacts of the solved patches: each one's span, its end reactions, its line reaction
+/// (constant along ν on a segment) and its whole reaction.
+std::vector<RodContact> contacts_of(const Setup& setup, const Evaluation& e) {
+  std::vector<RodContact> contacts;
+  std::size_t probe = 0;
   for (const Patch& p : e.patches) {
     const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
-    Eigen::Vector3d F = Eigen::Vector3d::Zero();
+    RodContact c;
+    c.obstacle = p.obstacle;
+    c.s_start = p.a;
+    c.s_end = p.b;
     if (p.point) {
-      F = p.Pa * o.distance(e.ends[probe++].before.p).gradient;
+      c.start_force = p.Pa;
+      c.force = p.Pa * o.distance(e.ends[probe++].before.p).gradient;
     } else {
-      if (p.free_a()) F += p.Pa * p.normal, ++probe;
-      if (p.free_b()) F += p.Pb * p.normal, ++probe;
-      F += lying_reaction(setup.rod, p) * (p.b - p.a) * p.normal;
+      c.start_force = p.free_a() ? p.Pa : 0.0;
+      c.end_force = p.free_b() ? p.Pb : 0.0;
+      c.max_line_force = lying_reaction(setup.rod, p);
+      c.force = (c.start_force + c.end_force + c.max_line_force * (p.b - p.a)) * p.normal;
+      probe += static_cast<std::size_t>(p.free_a()) + static_cast<std::size_t>(p.free_b());
     }
-    contacts[k++].force = F;
+    contacts.push_back(c);
   }
+  return contacts;
 }
 
 /// The least gap to the touchable obstacles at the nodes and the contact ends.
@@ -541,6 +539,38 @@ bool follow_load(const Setup& full,
   return true;
 }
 
+/// The last stage: the followed state as the result, its contacts, and its status (Converged only
+/// when the load was followed to the end and the integration error is within tolerance).
+void report(const Setup& setup,
+            const Evaluation& at,
+            bool followed,
+            const ShootingOptions& options,
+            ContactEquilibriumResult& result) {
+  ShootingSummary& summary = result.shooting.summary;
+  result.shooting.base_wrench = at.w;
+  result.shooting.configuration = at.configuration;
+  summary.iterations += result.newton_iterations;
+  if (at.r.size()) summary.residual_norm = at.r.lpNorm<Eigen::Infinity>();
+  result.least_gap = least_touch_gap(setup, at);
+  result.contacts = contacts_of(setup, at);
+  if (!followed) {
+    summary.status = SolveStatus::Diverged;
+    summary.message = "the contact conditions were not solved as the load was applied (|r| = " +
+                      std::to_string(summary.residual_norm) + ")";
+    return;
+  }
+  summary.integration_error = integration_error(setup, at);
+  summary.substeps = setup.rod.substeps;
+  if (!(summary.integration_error <= options.integration_tolerance)) {
+    summary.status = SolveStatus::DiscretisationTooCoarse;
+    summary.message = "the contact equilibrium's integration error " +
+                      std::to_string(summary.integration_error) + " exceeds the tolerance";
+    return;
+  }
+  summary.status = SolveStatus::Converged;
+  summary.message = "converged with " + result.brief();
+}
+
 }  // namespace
 
 void ContactOptions::validate() const {
@@ -610,30 +640,7 @@ ContactEquilibriumResult solve_contact_equilibrium(const ClampedRod& rod,
     result.active_set_iterations = passes, result.newton_iterations = iterations;
     return result;
   }
-  result.shooting.base_wrench = at.w;
-  result.shooting.configuration = at.configuration;
-  summary.iterations += result.newton_iterations;
-  summary.residual_norm = at.r.size() ? at.r.lpNorm<Eigen::Infinity>() : summary.residual_norm;
-  result.least_gap = least_touch_gap(setup, at);
-  result.loads = loads_of(setup, at.patches);
-  for (const Patch& p : at.patches) result.contacts.push_back(contact_of(setup, p));
-  add_forces(setup, at, result.contacts);
-  if (!followed) {
-    summary.status = SolveStatus::Diverged;
-    summary.message = "the contact conditions were not solved as the load was applied (|r| = " +
-                      std::to_string(summary.residual_norm) + ")";
-    return result;
-  }
-  summary.integration_error = integration_error(setup, at);
-  summary.substeps = rod.substeps;
-  if (!(summary.integration_error <= options.integration_tolerance)) {
-    summary.status = SolveStatus::DiscretisationTooCoarse;
-    summary.message = "the contact equilibrium's integration error " +
-                      std::to_string(summary.integration_error) + " exceeds the tolerance";
-    return result;
-  }
-  summary.status = SolveStatus::Converged;
-  summary.message = "converged with " + result.brief();
+  report(setup, at, followed, options, result);
   return result;
 }
 

@@ -73,8 +73,6 @@ struct ContactEquilibriumResult {
   /// contact is active).
   ShootingResult shooting;
   std::vector<RodContact> contacts;
-  /// The reactions as loads (their obstacles point into the scene given).
-  ContactLoads loads;
   /// The least gap over the touchable obstacles at the nodes and contact ends, m.
   double least_gap = 0.0;
   int active_set_iterations = 0;
