@@ -94,7 +94,7 @@ _name_setter_errors(_rodshape)
 
 _TASK_PARTS = {_rodshape.PlanTask: ("rod", "problem", "options", "plant", "sensor", "depth_sensor",
                                          "closed_loop"),
-               _rodshape.EquilibriumTask: ("rod",)}
+               _rodshape.EquilibriumTask: ("rod", "scene")}
 
 
 def _marking_access(prop):
