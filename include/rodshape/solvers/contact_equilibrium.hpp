@@ -23,10 +23,10 @@
 // run becomes a point contact, and further penetrations further ones (docs/limits.md).
 //
 // The unknowns (the base wrench, each end's s and P) solve those conditions and the tip condition
-// by Gauss–Newton on a central-difference Jacobian kept up to date by Broyden's updates; the contact set is then updated (a pulling
-// reaction drops its patch or turns a segment into a point, a penetration of the free span adds
-// one) until it is consistent. The load is applied in steps from the weightless rod's free
-// equilibrium, the contact set followed from step to step.
+// by Gauss–Newton on a central-difference Jacobian kept up to date by Broyden's updates; the
+// contact set is then updated (a pulling reaction drops its patch or turns a segment into a point,
+// a penetration of the free span adds one) until it is consistent. The load is applied in steps
+// from the weightless rod's free equilibrium, the contact set followed from step to step.
 #pragma once
 
 #include <string>
