@@ -4,6 +4,7 @@
 #include "io/task_sections.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -267,7 +268,12 @@ TipCondition read_tip_condition(const YamlField& tip) {
   }
   const Pose pose = read_pose_fields(tip);
   if (const YamlField released = tip.get("released"); released.present()) {
-    return GraspedTip{pose, read_wrench_axes(released)};
+    const std::array<bool, 6> axes = read_wrench_axes(released);
+    if (std::all_of(axes.begin(), axes.end(), [](bool axis) { return axis; }))
+      released.fail(released.path() +
+                    " releases all six axes: the grasp would hold nothing; a tip held by nothing "
+                    "is a free tip (tip: {wrench: {}})");
+    return GraspedTip{pose, axes};
   }
   return ClampedTip{pose};
 }

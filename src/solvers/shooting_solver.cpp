@@ -64,7 +64,13 @@ void validate_tip(const TipCondition& tip) {
                                              bounds::kMaxForce, "N*m");
                  },
                  [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
-                 [](const GraspedTip& t) { detail::require_pose("GraspedTip.pose", t.pose); },
+                 [](const GraspedTip& t) {
+                   detail::require_pose("GraspedTip.pose", t.pose);
+                   if (std::all_of(t.released.begin(), t.released.end(), [](bool r) { return r; }))
+                     throw InputError("GraspedTip.released",
+                                      " releases all six axes: the grasp would hold nothing; a "
+                                      "tip held by nothing is a free tip (FreeTip)");
+                 },
              },
              tip);
 }

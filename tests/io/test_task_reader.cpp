@@ -272,6 +272,14 @@ TEST(TaskReader, BadSolverOptionsAreNamed) {
             "task.yaml:9: solver.continuation = maybe must be true or false");
 }
 
+// Issue 43: a grasp that releases all six axes holds nothing (it was solved as a free tip).
+TEST(TaskReader, ATipThatReleasesAllSixAxesIsRefusedNamingTheField) {
+  EXPECT_EQ(error_of(kBandTask + "  released: [fx, fy, fz, mx, my, mz]\n"),
+            "task.yaml:9: tip.released releases all six axes: the grasp would hold nothing; a tip "
+            "held by nothing is a free tip (tip: {wrench: {}})");
+  EXPECT_EQ(error_of(kBandTask + "  released: [fx, fy, fz, mx, my]\n"), "");
+}
+
 TEST(TaskReader, MalformedYamlGivesTheLine) {
   const std::string message = error_of(band_with("height: 0.02}", "height: 0.02"));
   EXPECT_TRUE(StartsWith(message, "task.yaml:"));

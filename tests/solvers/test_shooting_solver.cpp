@@ -558,6 +558,16 @@ TEST(ShootingSolverInput, NanInTipPoseIsAnInputErrorNamingTheField) {
   EXPECT_NE(moment.find("FreeTip.wrench.moment"), std::string::npos) << moment;
 }
 
+// Issue 43: a grasp releasing all six axes holds nothing (it was solved as a free tip).
+TEST(ShootingSolverInput, AGraspReleasingAllSixAxesHoldsNothingAndIsRefused) {
+  GraspedTip grasp;
+  grasp.pose.position = Eigen::Vector3d(0.0, 0.0, 0.29);
+  grasp.released.fill(true);
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(testing::rubber_band(), grasp); }),
+            "GraspedTip.released releases all six axes: the grasp would hold nothing; a tip held "
+            "by nothing is a free tip (FreeTip)");
+}
+
 TEST(ShootingSolverInput, NanInTheGuessIsAnInputErrorNamingTheField) {
   const ClampedRod rod = testing::rubber_band();
   BaseWrench guess;
