@@ -280,6 +280,11 @@ TipCondition read_tip_condition(const YamlField& tip) {
 
 // ---- solver -------------------------------------------------------------------------------------
 
+/// solver.tolerance (m, rad, N, N·m) and integration_tolerance (relative) at most: beyond, a
+/// tip a metre or a radian off would be "converged" (.inf, which turns the library's accuracy
+/// check off, is out of range in a task file).
+constexpr double kMaxTolerance = 1.0;
+
 void read_solver_section(const YamlField& solver,
                          ShootingOptions& options,
                          BaseWrench& initial_wrench) {
@@ -290,7 +295,7 @@ void read_solver_section(const YamlField& solver,
     options.max_iterations = field.integer_in(1, ShootingOptions::kMaxIterations);
   }
   if (const YamlField field = solver.get("tolerance"); field.present()) {
-    options.residual_tolerance = field.positive_number();
+    options.residual_tolerance = field.positive_number_at_most(kMaxTolerance);
   }
   if (const YamlField field = solver.get("continuation"); field.present()) {
     options.continuation = field.boolean();
@@ -302,7 +307,7 @@ void read_solver_section(const YamlField& solver,
     initial_wrench = read_wrench(field);
   }
   if (const YamlField field = solver.get("integration_tolerance"); field.present()) {
-    options.integration_tolerance = field.positive_number();
+    options.integration_tolerance = field.positive_number_at_most(kMaxTolerance);
   }
   if (const YamlField field = solver.get("max_substeps"); field.present()) {
     options.max_substeps = field.integer();

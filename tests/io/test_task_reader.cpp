@@ -280,6 +280,24 @@ TEST(TaskReader, ATipThatReleasesAllSixAxesIsRefusedNamingTheField) {
   EXPECT_EQ(error_of(kBandTask + "  released: [fx, fy, fz, mx, my]\n"), "");
 }
 
+// Issue 43: solver.integration_tolerance: .inf was documented to turn the accuracy check off; a
+// tolerance beyond 1 (a tip a metre off, an error of the rod's length) would pass anything.
+TEST(TaskReader, ToleranceOfInfinityOrBeyondOneIsOutOfRange) {
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: .inf}\n"),
+            "task.yaml:9: solver.integration_tolerance = .inf must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: 2}\n"),
+            "task.yaml:9: solver.integration_tolerance = 2 must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: .nan}\n"),
+            "task.yaml:9: solver.integration_tolerance = .nan is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: -.inf}\n"),
+            "task.yaml:9: solver.integration_tolerance = -.inf is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: 1e300}\n"),
+            "task.yaml:9: solver.tolerance = 1e300 must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: .inf}\n"),
+            "task.yaml:9: solver.tolerance = .inf must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: 1, integration_tolerance: 1}\n"), "");
+}
+
 TEST(TaskReader, MalformedYamlGivesTheLine) {
   const std::string message = error_of(band_with("height: 0.02}", "height: 0.02"));
   EXPECT_TRUE(StartsWith(message, "task.yaml:"));
