@@ -210,9 +210,22 @@ Eigen::Matrix3d read_rotation(const YamlField& rotation) {
   return Eigen::Quaterniond(R).normalized().toRotationMatrix();
 }
 
+/// `value` (read from `field`) when |value| ≤ `max`; else fails naming the field, "has magnitude
+/// 1e+300 m; at most 10000 m (docs/limits.md)" (as require_magnitude_at_most()).
+Eigen::Vector3d at_most(const YamlField& field,
+                        const Eigen::Vector3d& value,
+                        double max,
+                        const char* unit) {
+  if (value.stableNorm() > max)  // stableNorm: |[1e300, 0, 0]| is 1e300, not inf
+    field.fail_value("has magnitude " + detail::format_value(value.stableNorm()) + " " + unit +
+                     "; at most " + detail::format_value(max) + " " + unit + " (docs/limits.md)");
+  return value;
+}
+
 Pose read_pose_fields(const YamlField& pose) {
   Pose result;
-  result.position = pose.require("position").vector3();
+  const YamlField position = pose.require("position");
+  result.position = at_most(position, position.vector3(), bounds::kMaxPosition, "m");
   if (const YamlField rotation = pose.get("rotation"); rotation.present()) {
     result.rotation = read_rotation(rotation);
   }

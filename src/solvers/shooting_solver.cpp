@@ -63,9 +63,15 @@ void validate_tip(const TipCondition& tip) {
                    require_magnitude_at_most("FreeTip.wrench.moment", t.wrench.moment,
                                              bounds::kMaxForce, "N*m");
                  },
-                 [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
+                 [](const ClampedTip& t) {
+                   detail::require_pose("ClampedTip.pose", t.pose);
+                   require_magnitude_at_most("ClampedTip.pose.position", t.pose.position,
+                                             bounds::kMaxPosition, "m");
+                 },
                  [](const GraspedTip& t) {
                    detail::require_pose("GraspedTip.pose", t.pose);
+                   require_magnitude_at_most("GraspedTip.pose.position", t.pose.position,
+                                             bounds::kMaxPosition, "m");
                    if (std::all_of(t.released.begin(), t.released.end(), [](bool r) { return r; }))
                      throw InputError("GraspedTip.released",
                                       " releases all six axes: the grasp would hold nothing; a "

@@ -298,6 +298,14 @@ TEST(TaskReader, ToleranceOfInfinityOrBeyondOneIsOutOfRange) {
   EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: 1, integration_tolerance: 1}\n"), "");
 }
 
+// Issue 43: a position's bound, |p| <= 1e4 m (docs/limits.md), for every pose of a task file.
+TEST(TaskReader, APositionBeyondTenKilometresIsRefusedNamingTheField) {
+  EXPECT_EQ(error_of(band_with("[0.12, 0.0, 0.22]", "[1e300, 0.0, 0.22]")),
+            "task.yaml:7: tip.position has magnitude 1e+300 m; at most 10000 m (docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "base: {position: [0, -2e4, 0]}\n"),
+            "task.yaml:9: base.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+}
+
 TEST(TaskReader, MalformedYamlGivesTheLine) {
   const std::string message = error_of(band_with("height: 0.02}", "height: 0.02"));
   EXPECT_TRUE(StartsWith(message, "task.yaml:"));

@@ -568,6 +568,19 @@ TEST(ShootingSolverInput, AGraspReleasingAllSixAxesHoldsNothingAndIsRefused) {
             "by nothing is a free tip (FreeTip)");
 }
 
+// Issue 43: a held tip's position has the bound of every position, |p| <= 1e4 m.
+TEST(ShootingSolverInput, AHeldTipBeyondThePositionBoundIsRefused) {
+  const ClampedRod rod = testing::rubber_band();
+  GraspedTip grasp;
+  grasp.pose.position = Eigen::Vector3d(2e4, 0.0, 0.29);
+  grasp.released[3] = true;
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(rod, grasp); }),
+            "GraspedTip.pose.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+  const ClampedTip clamped{grasp.pose};
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(rod, clamped); }),
+            "ClampedTip.pose.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+}
+
 TEST(ShootingSolverInput, NanInTheGuessIsAnInputErrorNamingTheField) {
   const ClampedRod rod = testing::rubber_band();
   BaseWrench guess;
