@@ -317,7 +317,9 @@ void read_solver_section(const YamlField& solver,
     options.max_continuation_steps = field.integer_in(1, ShootingOptions::kMaxContinuationSteps);
   }
   if (const YamlField field = solver.get("initial_wrench"); field.present()) {
-    initial_wrench = read_wrench(field);
+    initial_wrench = read_wrench(field);  // the guess: as a wrench, at most kMaxForce
+    at_most(field.get("force"), initial_wrench.force, bounds::kMaxForce, "N");
+    at_most(field.get("moment"), initial_wrench.moment, bounds::kMaxForce, "N*m");
   }
   if (const YamlField field = solver.get("integration_tolerance"); field.present()) {
     options.integration_tolerance = field.positive_number_at_most(kMaxTolerance);

@@ -719,8 +719,8 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
   validate_tip(tip);
   options.validate();
   check_solve_cost(rod, options);
-  detail::require_finite("guess.force", guess.force);
-  detail::require_finite("guess.moment", guess.moment);
+  require_magnitude_at_most("guess.force", guess.force, bounds::kMaxForce, "N");
+  require_magnitude_at_most("guess.moment", guess.moment, bounds::kMaxForce, "N*m");
 
   ShootingResult solution;
   ShootingSummary& summary = solution.summary;

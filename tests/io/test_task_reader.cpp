@@ -306,6 +306,19 @@ TEST(TaskReader, APositionBeyondTenKilometresIsRefusedNamingTheField) {
             "task.yaml:9: base.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
 }
 
+// Issue 43: the guess of an equilibrium's base wrench, bounded as a wrench and named as written.
+TEST(TaskReader, AnInitialWrenchBeyondItsBoundNamesTheField) {
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {force: [0, 1e300, 0]}}\n"),
+            "task.yaml:9: solver.initial_wrench.force has magnitude 1e+300 N; at most 1e+20 N "
+            "(docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "solver:\n  initial_wrench:\n    moment: [0, 0, -3e20]\n"),
+            "task.yaml:11: solver.initial_wrench.moment has magnitude 3e+20 N*m; at most 1e+20 "
+            "N*m (docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {moment: [0, .nan, 0]}}\n"),
+            "task.yaml:9: solver.initial_wrench.moment[1] = .nan is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {force: [0, 0, 1e20]}}\n"), "");
+}
+
 TEST(TaskReader, MalformedYamlGivesTheLine) {
   const std::string message = error_of(band_with("height: 0.02}", "height: 0.02"));
   EXPECT_TRUE(StartsWith(message, "task.yaml:"));

@@ -581,6 +581,15 @@ TEST(ShootingSolverInput, AHeldTipBeyondThePositionBoundIsRefused) {
             "ClampedTip.pose.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
 }
 
+// Issue 43: the guess has the bound of a wrench (1e20 N, N·m), not only finiteness.
+TEST(ShootingSolverInput, AGuessBeyondTheForceBoundIsRefused) {
+  BaseWrench guess;
+  guess.moment.z() = 1e300;
+  EXPECT_EQ(
+      input_error_message([&] { solve_equilibrium(testing::rubber_band(), FreeTip{}, guess); }),
+      "guess.moment has magnitude 1e+300 N*m; at most 1e+20 N*m (docs/limits.md)");
+}
+
 TEST(ShootingSolverInput, NanInTheGuessIsAnInputErrorNamingTheField) {
   const ClampedRod rod = testing::rubber_band();
   BaseWrench guess;
