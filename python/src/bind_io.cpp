@@ -236,7 +236,9 @@ void bind_outcomes(py::module_& m) {
       .def("to_json", &Equilibrium::to_json, "The JSON document `rodshape equilibrium` writes.");
   py::class_<Plan>(m, "Plan", "What `rodshape plan` computes for a task.")
       .def_readonly("result", &Plan::result)
-      .def_readonly("task", &Plan::task)
+      .def_property_readonly(
+          "task", [](const Plan& p) { return p.task; },
+          "a read-only copy of the task the plan answers (python/rodshape/__init__.py)")
       .def_property_readonly("status", [](const Plan& p) { return to_string(p.result.status); })
       .def_property_readonly("steps", [](const Plan& p) { return p.result.steps; })
       .def_property_readonly(
