@@ -16,6 +16,14 @@ namespace {
 
 using namespace rodshape;
 
+/// The plant's frame of a planned step at t = 0 (no velocities: a sensor reads the shape).
+PlantFrame frame_of(const PlanStep& step) {
+  PlantFrame frame;
+  frame.end_effector = step.end_effector;
+  frame.configuration = step.solution.configuration;
+  return frame;
+}
+
 struct Scene {
   PlanProblem problem;
   PlanResult plan;
@@ -44,7 +52,7 @@ void BM_CheckpointEstimate(benchmark::State& state) {
   const PlanStep& step = s.plan.steps.front();
   MarkerSensor sensor(MarkerSensorModel{}, 1);
   const RodConfiguration& c = step.solution.configuration;
-  const SensorFrame seen = sensor.observe(PlantFrame{0.0, step.end_effector, {}, c}, 0.29);
+  const SensorFrame seen = sensor.observe(frame_of(step), 0.29);
   EstimationOptions options;
   options.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   options.tip_position_sigma = 5e-3;
@@ -85,9 +93,7 @@ void BM_ShapeControllerUpdate(benchmark::State& state) {
   const Scene& s = scene();
   const PlanStep& step = s.plan.steps.front();
   MarkerSensor sensor(MarkerSensorModel{}, 1);
-  const RodConfiguration& c = step.solution.configuration;
-  MarkerMeasurement measurement{sensor.observe(PlantFrame{0.0, step.end_effector, {}, c}, 0.29),
-                                MarkerSensorModel{}};
+  MarkerMeasurement measurement{sensor.observe(frame_of(step), 0.29), MarkerSensorModel{}};
   ClosedLoopOptions options;
   options.estimation.gravity = Eigen::Vector3d(0.0, 0.0, -9.81);
   options.significance = -1.0;
@@ -112,7 +118,7 @@ void BM_ShapeControllerUpdate(benchmark::State& state) {
 void BM_DepthCameraFrame(benchmark::State& state) {
   const Scene& s = scene();
   const PlanStep& step = s.plan.steps.front();
-  const PlantFrame frame{0.0, step.end_effector, {}, step.solution.configuration};
+  const PlantFrame frame = frame_of(step);
   DepthSensorModel model;
   model.outliers = 0.02;
   DepthCamera camera(model, 1);

@@ -25,7 +25,11 @@ MarkerSensorModel noiseless() {
 /// What the sensor sees of `rod` in the equilibrium of `w`, the gripper at the tip.
 SensorFrame look(const ClampedRod& rod, const BaseWrench& w, MarkerSensor& sensor) {
   const RodConfiguration c = integrate(rod, w);
-  return sensor.observe(PlantFrame{0.0, c.tip(), w, c}, rod.properties.length);
+  PlantFrame frame;
+  frame.end_effector = c.tip();
+  frame.base_wrench = w;
+  frame.configuration = c;
+  return sensor.observe(frame, rod.properties.length);
 }
 
 /// A prior 0.3 bending units off in every component.
