@@ -657,6 +657,25 @@ bool follow_load(const Setup& full,
   return true;
 }
 
+/// Whether a rectangular section touches an obstacle tilted about its tangent (neither of its
+/// axes along the normal), at a node within 1e-6 L of it: it rests on a corner of its section,
+/// where the reaction acts off the centreline, which is not solved.
+bool on_a_corner(const Setup& setup, const RodConfiguration& c) {
+  const auto& section = setup.rod.properties.section;
+  if (!section || section->shape != CrossSection::Shape::Rectangle) return false;
+  for (int j = 0; j < static_cast<int>(setup.scene.obstacles.size()); ++j) {
+    const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(j)];
+    if (!o.touchable()) continue;
+    for (int i = 0; i < c.nodes(); ++i) {
+      if (std::abs(node_gap(setup, c, j, i)) > 1e-6 * setup.rod.properties.length) continue;
+      const Eigen::Vector3d nu = o.distance(c.p[static_cast<std::size_t>(i)]).gradient;
+      const Eigen::Matrix3d& R = c.R[static_cast<std::size_t>(i)];
+      if (std::min(std::abs(R.col(0).dot(nu)), std::abs(R.col(1).dot(nu))) > 1e-6) return true;
+    }
+  }
+  return false;
+}
+
 /// The last stage: the followed state as the result, its contacts, and its status (Converged only
 /// when the load was followed to the end and the integration error is within tolerance).
 void report(const Setup& setup,
@@ -675,6 +694,10 @@ void report(const Setup& setup,
     summary.status = SolveStatus::Diverged;
     summary.message = "the contact conditions were not solved as the load was applied (|r| = " +
                       std::to_string(summary.residual_norm) + ")";
+    if (on_a_corner(setup, at.configuration))
+      summary.message +=
+          ": the rectangular section rests on a corner of its section (tilted about its tangent), "
+          "where the reaction acts off the centreline; that is not solved (docs/limits.md)";
     return;
   }
   summary.integration_error = integration_error(setup, at);
