@@ -80,7 +80,7 @@ OutputSet plan_outputs(const PlanResult& plan, const PlanTask& task, const Figur
     stale("base_joint_trajectory.csv");
     stale("base_joint_trajectory.json");
   }
-  if (figures.mcap)
+  if (figures.mcap && !plan.end_effector_path.empty())  // a plan without a path has nothing to play
     add("plan.mcap", plan_mcap(plan, task.problem, *figures.mcap));
   else
     stale("plan.mcap");

@@ -96,7 +96,7 @@ void remove_plan_files(const std::string& directory);
 /// infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html; with a
 /// complete joint trajectory, joint_trajectory.csv and joint_trajectory.json; with a base arm's
 /// complete joint trajectory, base_joint_trajectory.csv and base_joint_trajectory.json (same
-/// forms); with figures.mcap, plan.mcap. The others of plan_file_names() are stale: an earlier
+/// forms); with figures.mcap and an end-effector path, plan.mcap. The others of plan_file_names() are stale: an earlier
 /// run's would not match plan.json.
 OutputSet plan_outputs(const PlanResult& plan,
                        const PlanTask& task,
