@@ -272,7 +272,11 @@ std::string ros_schema(std::string_view type) {
   std::set<std::string_view> seen{type};
   dependencies(type, order, seen);
   for (std::string_view used : order) {
-    text += std::string(80, '=') + "\nMSG: " + std::string(used) + "\n";
+    // "MSG: std_msgs/Header": the name as the .msg texts' fields spell it (rosbag2's form), so
+    // that a parser resolves each field's type to its heading.
+    std::string name(used);
+    name.erase(name.find("/msg/"), 4);
+    text += std::string(80, '=') + "\nMSG: " + name + "\n";
     text += definition(used).text;
   }
   return text;

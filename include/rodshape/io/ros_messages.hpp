@@ -1,9 +1,10 @@
 // ros_messages.hpp: the ROS 2 messages rodshape writes (docs/ros.md), their CDR serialisation
 // (cdr_writer.hpp, the fields in their .msg order) and their schemas as MCAP's "ros2msg" encoding
 // wants them: the type's .msg text, then for each type it uses, once, a line of 80 '=', a line
-// "MSG: <package>/msg/<Type>" and that type's .msg text (github.com/foxglove/mcap,
-// docs/specification/appendix.md, "ros2msg"). The .msg texts are those of ROS 2 Humble and Jazzy
-// (ros2/common_interfaces, ros2/rcl_interfaces, ros2/geometry2), without their comments.
+// "MSG: <package>/<Type>" (as the fields name it) and that type's .msg text
+// (github.com/foxglove/mcap, docs/specification/appendix.md, "ros2msg"). The .msg texts are those
+// of ROS 2 Humble and Jazzy (ros2/common_interfaces, ros2/rcl_interfaces, ros2/geometry2), without
+// their comments.
 #pragma once
 
 #include <Eigen/Core>
