@@ -251,7 +251,7 @@ INSTANTIATE_TEST_SUITE_P(Compressions,
                          McapLayout,
                          testing::Values(McapCompression::None, McapCompression::Zstd));
 
-TEST(McapLayout, AFileWithoutMessagesHasNoChunkButAWholeSummary) {
+TEST(McapWithoutMessages, HasNoChunkButAWholeSummary) {
   McapWriter writer("ros2", "rodshape test");
   writer.add_channel(writer.add_schema("pkg/msg/A", "ros2msg", "int32 a\n"), "/a", "cdr");
   const std::string file = writer.finish();
