@@ -20,7 +20,7 @@ static_assert(
 namespace {
 
 /// The table of the reflected polynomial 0xEDB88320, one entry per byte value.
-constexpr std::array<std::uint32_t, 256> crc_table() {
+constexpr std::array<std::uint32_t, 256> mcap_crc_table() {
   std::array<std::uint32_t, 256> table{};
   for (std::uint32_t i = 0; i < 256; ++i) {
     std::uint32_t c = i;
@@ -29,30 +29,30 @@ constexpr std::array<std::uint32_t, 256> crc_table() {
   }
   return table;
 }
-constexpr std::array<std::uint32_t, 256> kCrcTable = crc_table();
+constexpr std::array<std::uint32_t, 256> kMcapCrcTable = mcap_crc_table();
 
 template <typename Integer>
-void put(std::string& out, Integer value) {
+void mcap_put(std::string& out, Integer value) {
   out.append(reinterpret_cast<const char*>(&value), sizeof(value));
 }
 
-void put_string(std::string& out, std::string_view value) {
-  put(out, static_cast<std::uint32_t>(value.size()));
+void put_mcap_string(std::string& out, std::string_view value) {
+  mcap_put(out, static_cast<std::uint32_t>(value.size()));
   out.append(value);
 }
 
 /// A record: opcode, content length, content.
-void put_record(std::string& out, McapOpcode opcode, std::string_view content) {
-  put(out, static_cast<std::uint8_t>(opcode));
-  put(out, static_cast<std::uint64_t>(content.size()));
+void put_mcap_record(std::string& out, McapOpcode opcode, std::string_view content) {
+  mcap_put(out, static_cast<std::uint8_t>(opcode));
+  mcap_put(out, static_cast<std::uint64_t>(content.size()));
   out.append(content);
 }
 
-std::string_view compression_field(McapCompression compression) {
+std::string_view mcap_compression_field(McapCompression compression) {
   return compression == McapCompression::Zstd ? "zstd" : "";
 }
 
-std::string zstd_compress(std::string_view data) {
+std::string zstd_compressed(std::string_view data) {
   std::string out(ZSTD_compressBound(data.size()), '\0');
   const std::size_t size =
       ZSTD_compress(out.data(), out.size(), data.data(), data.size(), ZSTD_CLEVEL_DEFAULT);
@@ -68,7 +68,7 @@ std::string zstd_compress(std::string_view data) {
 std::uint32_t mcap_crc32(std::string_view bytes, std::uint32_t crc) {
   crc = ~crc;
   for (const char byte : bytes)
-    crc = kCrcTable[(crc ^ static_cast<unsigned char>(byte)) & 0xFFU] ^ (crc >> 8);
+    crc = kMcapCrcTable[(crc ^ static_cast<unsigned char>(byte)) & 0xFFU] ^ (crc >> 8);
   return ~crc;
 }
 
@@ -76,9 +76,9 @@ McapWriter::McapWriter(std::string_view profile, std::string_view library, McapO
     : options_(options) {
   file_.append(kMcapMagic);
   std::string header;
-  put_string(header, profile);
-  put_string(header, library);
-  put_record(file_, McapOpcode::Header, header);
+  put_mcap_string(header, profile);
+  put_mcap_string(header, library);
+  put_mcap_record(file_, McapOpcode::Header, header);
 }
 
 std::uint16_t McapWriter::add_schema(std::string_view name,
@@ -88,12 +88,12 @@ std::uint16_t McapWriter::add_schema(std::string_view name,
     throw InputError("MCAP: too many schemas");
   const auto id = static_cast<std::uint16_t>(schemas_.size() + 1);  // 0 means "no schema"
   std::string content;
-  put(content, id);
-  put_string(content, name);
-  put_string(content, encoding);
-  put_string(content, data);  // uint32 length and bytes, as a string
+  mcap_put(content, id);
+  put_mcap_string(content, name);
+  put_mcap_string(content, encoding);
+  put_mcap_string(content, data);  // uint32 length and bytes, as a string
   std::string record;
-  put_record(record, McapOpcode::Schema, content);
+  put_mcap_record(record, McapOpcode::Schema, content);
   file_.append(record);  // in the data section, before any message may need it
   schemas_.push_back(std::move(record));
   return id;
@@ -106,13 +106,13 @@ std::uint16_t McapWriter::add_channel(std::uint16_t schema_id,
     throw InputError("MCAP: too many channels");
   const auto id = static_cast<std::uint16_t>(channels_.size());
   std::string content;
-  put(content, id);
-  put(content, schema_id);
-  put_string(content, topic);
-  put_string(content, message_encoding);
-  put(content, std::uint32_t{0});  // metadata: an empty map
+  mcap_put(content, id);
+  mcap_put(content, schema_id);
+  put_mcap_string(content, topic);
+  put_mcap_string(content, message_encoding);
+  mcap_put(content, std::uint32_t{0});  // metadata: an empty map
   std::string record;
-  put_record(record, McapOpcode::Channel, content);
+  put_mcap_record(record, McapOpcode::Channel, content);
   file_.append(record);
   channels_.push_back(std::move(record));
   sequences_.push_back(0);
@@ -132,19 +132,19 @@ void McapWriter::add_message(std::uint16_t channel, std::uint64_t log_time, std:
   ++message_counts_[channel];
   chunk_entries_[channel].push_back({log_time, chunk_.size()});  // offset in the chunk's records
   std::string content;
-  put(content, channel);
-  put(content, sequences_[channel]++);
-  put(content, log_time);
-  put(content, log_time);  // publish_time
+  mcap_put(content, channel);
+  mcap_put(content, sequences_[channel]++);
+  mcap_put(content, log_time);
+  mcap_put(content, log_time);  // publish_time
   content.append(data);
-  put_record(chunk_, McapOpcode::Message, content);
+  put_mcap_record(chunk_, McapOpcode::Message, content);
   if (chunk_.size() >= options_.chunk_size) flush_chunk();
 }
 
 void McapWriter::flush_chunk() {
   if (chunk_.empty()) return;
   const std::string compressed =
-      options_.compression == McapCompression::Zstd ? zstd_compress(chunk_) : std::string();
+      options_.compression == McapCompression::Zstd ? zstd_compressed(chunk_) : std::string();
   const std::string_view records = options_.compression == McapCompression::Zstd
                                        ? std::string_view(compressed)
                                        : std::string_view(chunk_);
@@ -155,26 +155,26 @@ void McapWriter::flush_chunk() {
   index.compressed_size = records.size();
   index.uncompressed_size = chunk_.size();
   std::string content;
-  put(content, chunk_start_);
-  put(content, chunk_end_);
-  put(content, static_cast<std::uint64_t>(chunk_.size()));
-  put(content, mcap_crc32(chunk_));  // of the uncompressed records
-  put_string(content, compression_field(options_.compression));
-  put(content, static_cast<std::uint64_t>(records.size()));
+  mcap_put(content, chunk_start_);
+  mcap_put(content, chunk_end_);
+  mcap_put(content, static_cast<std::uint64_t>(chunk_.size()));
+  mcap_put(content, mcap_crc32(chunk_));  // of the uncompressed records
+  put_mcap_string(content, mcap_compression_field(options_.compression));
+  mcap_put(content, static_cast<std::uint64_t>(records.size()));
   content.append(records);
-  put_record(file_, McapOpcode::Chunk, content);
+  put_mcap_record(file_, McapOpcode::Chunk, content);
   index.length = file_.size() - index.offset;
   const std::uint64_t indexes_start = file_.size();
   for (const auto& [channel, entries] : chunk_entries_) {  // by channel id
     index.message_index_offsets[channel] = file_.size();
     std::string message_index;
-    put(message_index, channel);
-    put(message_index, static_cast<std::uint32_t>(entries.size() * 16));
+    mcap_put(message_index, channel);
+    mcap_put(message_index, static_cast<std::uint32_t>(entries.size() * 16));
     for (const Entry& entry : entries) {
-      put(message_index, entry.log_time);
-      put(message_index, entry.offset);
+      mcap_put(message_index, entry.log_time);
+      mcap_put(message_index, entry.offset);
     }
-    put_record(file_, McapOpcode::MessageIndex, message_index);
+    put_mcap_record(file_, McapOpcode::MessageIndex, message_index);
   }
   index.message_index_length = file_.size() - indexes_start;
   chunk_indexes_.push_back(std::move(index));
@@ -185,8 +185,8 @@ void McapWriter::flush_chunk() {
 std::string McapWriter::finish() {
   flush_chunk();
   std::string data_end;
-  put(data_end, mcap_crc32(file_));  // every byte before the Data End record, magic included
-  put_record(file_, McapOpcode::DataEnd, data_end);
+  mcap_put(data_end, mcap_crc32(file_));  // every byte before the Data End record, magic included
+  put_mcap_record(file_, McapOpcode::DataEnd, data_end);
 
   const std::uint64_t summary_start = file_.size();
   struct Group {
@@ -207,54 +207,54 @@ std::string McapWriter::finish() {
   });
   group(McapOpcode::Statistics, [&] {
     std::string content;
-    put(content, message_count_);
-    put(content, static_cast<std::uint16_t>(schemas_.size()));
-    put(content, static_cast<std::uint32_t>(channels_.size()));
-    put(content, std::uint32_t{0});  // attachments
-    put(content, std::uint32_t{0});  // metadata
-    put(content, static_cast<std::uint32_t>(chunk_indexes_.size()));
-    put(content, start_time_);
-    put(content, end_time_);
-    put(content, static_cast<std::uint32_t>(message_counts_.size() * 10));
+    mcap_put(content, message_count_);
+    mcap_put(content, static_cast<std::uint16_t>(schemas_.size()));
+    mcap_put(content, static_cast<std::uint32_t>(channels_.size()));
+    mcap_put(content, std::uint32_t{0});  // attachments
+    mcap_put(content, std::uint32_t{0});  // metadata
+    mcap_put(content, static_cast<std::uint32_t>(chunk_indexes_.size()));
+    mcap_put(content, start_time_);
+    mcap_put(content, end_time_);
+    mcap_put(content, static_cast<std::uint32_t>(message_counts_.size() * 10));
     for (const auto& [channel, count] : message_counts_) {
-      put(content, channel);
-      put(content, count);
+      mcap_put(content, channel);
+      mcap_put(content, count);
     }
-    put_record(file_, McapOpcode::Statistics, content);
+    put_mcap_record(file_, McapOpcode::Statistics, content);
   });
   group(McapOpcode::ChunkIndex, [&] {
     for (const ChunkIndex& index : chunk_indexes_) {
       std::string content;
-      put(content, index.start_time);
-      put(content, index.end_time);
-      put(content, index.offset);
-      put(content, index.length);
-      put(content, static_cast<std::uint32_t>(index.message_index_offsets.size() * 10));
+      mcap_put(content, index.start_time);
+      mcap_put(content, index.end_time);
+      mcap_put(content, index.offset);
+      mcap_put(content, index.length);
+      mcap_put(content, static_cast<std::uint32_t>(index.message_index_offsets.size() * 10));
       for (const auto& [channel, offset] : index.message_index_offsets) {
-        put(content, channel);
-        put(content, offset);
+        mcap_put(content, channel);
+        mcap_put(content, offset);
       }
-      put(content, index.message_index_length);
-      put_string(content, compression_field(options_.compression));
-      put(content, index.compressed_size);
-      put(content, index.uncompressed_size);
-      put_record(file_, McapOpcode::ChunkIndex, content);
+      mcap_put(content, index.message_index_length);
+      put_mcap_string(content, mcap_compression_field(options_.compression));
+      mcap_put(content, index.compressed_size);
+      mcap_put(content, index.uncompressed_size);
+      put_mcap_record(file_, McapOpcode::ChunkIndex, content);
     }
   });
   const std::uint64_t summary_offset_start = file_.size();
   for (const Group& g : groups) {
     std::string content;
-    put(content, static_cast<std::uint8_t>(g.opcode));
-    put(content, g.start);
-    put(content, g.length);
-    put_record(file_, McapOpcode::SummaryOffset, content);
+    mcap_put(content, static_cast<std::uint8_t>(g.opcode));
+    mcap_put(content, g.start);
+    mcap_put(content, g.length);
+    put_mcap_record(file_, McapOpcode::SummaryOffset, content);
   }
   // Footer: its CRC covers the summary section, the summary offsets and the footer up to the CRC.
-  put(file_, static_cast<std::uint8_t>(McapOpcode::Footer));
-  put(file_, std::uint64_t{20});
-  put(file_, summary_start);
-  put(file_, summary_offset_start);
-  put(file_, mcap_crc32(std::string_view(file_).substr(summary_start)));
+  mcap_put(file_, static_cast<std::uint8_t>(McapOpcode::Footer));
+  mcap_put(file_, std::uint64_t{20});
+  mcap_put(file_, summary_start);
+  mcap_put(file_, summary_offset_start);
+  mcap_put(file_, mcap_crc32(std::string_view(file_).substr(summary_start)));
   file_.append(kMcapMagic);
   std::string out = std::move(file_);
   file_.clear();

@@ -42,7 +42,7 @@ void per_field(PcdHeader& header,
                             std::string(words[k + 1]) + "'");
 }
 
-PcdHeader read_header(std::string_view bytes, const std::string& name) {
+PcdHeader read_pcd_header(std::string_view bytes, const std::string& name) {
   LineCursor lines(bytes);
   std::string_view line;
   PcdHeader header;
@@ -130,10 +130,10 @@ std::array<std::size_t, 3> xyz_fields(const PcdHeader& header, const std::string
   return at;
 }
 
-std::vector<Eigen::Vector3d> read_ascii(std::string_view bytes,
-                                        const PcdHeader& header,
-                                        const std::array<std::size_t, 3>& xyz,
-                                        const std::string& name) {
+std::vector<Eigen::Vector3d> read_pcd_ascii(std::string_view bytes,
+                                            const PcdHeader& header,
+                                            const std::array<std::size_t, 3>& xyz,
+                                            const std::string& name) {
   // Each field's first value's position among a line's values.
   std::vector<std::size_t> first;
   std::size_t values = 0;
@@ -165,10 +165,10 @@ std::vector<Eigen::Vector3d> read_ascii(std::string_view bytes,
   return points;
 }
 
-std::vector<Eigen::Vector3d> read_binary(std::string_view bytes,
-                                         const PcdHeader& header,
-                                         const std::array<std::size_t, 3>& xyz,
-                                         const std::string& name) {
+std::vector<Eigen::Vector3d> read_pcd_binary(std::string_view bytes,
+                                             const PcdHeader& header,
+                                             const std::array<std::size_t, 3>& xyz,
+                                             const std::string& name) {
   std::vector<std::size_t> at;
   std::size_t stride = 0;
   for (const PcdField& field : header.fields) {
@@ -196,10 +196,10 @@ std::vector<Eigen::Vector3d> read_binary(std::string_view bytes,
 }  // namespace
 
 std::vector<Eigen::Vector3d> parse_pcd(std::string_view bytes, const std::string& name) {
-  const PcdHeader header = read_header(bytes, name);
+  const PcdHeader header = read_pcd_header(bytes, name);
   const std::array<std::size_t, 3> xyz = xyz_fields(header, name);
-  if (header.binary) return read_binary(bytes, header, xyz, name);
-  return read_ascii(bytes, header, xyz, name);
+  if (header.binary) return read_pcd_binary(bytes, header, xyz, name);
+  return read_pcd_ascii(bytes, header, xyz, name);
 }
 
 }  // namespace rodshape::io_detail

@@ -17,12 +17,12 @@ namespace rodshape {
 
 namespace {
 
-constexpr std::string_view kWorld = "world";
+constexpr std::string_view kMcapWorldFrame = "world";
 
 /// The messages of a file, collected and written in log-time order (stable: a topic's order kept).
-class Recording {
+class McapRecording {
  public:
-  explicit Recording(const McapOptions& options)
+  explicit McapRecording(const McapOptions& options)
       : writer_("ros2", generator_signature(), options) {}
 
   template <typename Message>
@@ -61,13 +61,13 @@ class Recording {
   std::vector<Entry> messages_;
 };
 
-RosHeader header(double t, std::string_view frame = kWorld) {
+RosHeader ros_header(double t, std::string_view frame = kMcapWorldFrame) {
   return {RosTime::from_seconds(t), std::string(frame)};
 }
 
-RosTransformStamped transform(double t, std::string_view child, const Pose& world_T_child) {
+RosTransformStamped ros_transform(double t, std::string_view child, const Pose& world_T_child) {
   RosTransformStamped out;
-  out.header = header(t);
+  out.header = ros_header(t);
   out.child_frame_id = std::string(child);
   out.translation = world_T_child.position;
   out.rotation = Eigen::Quaterniond(world_T_child.rotation).normalized();
@@ -76,7 +76,7 @@ RosTransformStamped transform(double t, std::string_view child, const Pose& worl
 
 /// The clock of the path's samples: the arm's joint trajectory's (re-timed when slowed) when it
 /// has every sample, else the path's own.
-std::vector<double> sample_times(const PlanResult& plan) {
+std::vector<double> mcap_sample_times(const PlanResult& plan) {
   std::vector<double> t;
   const std::vector<TimedPose>& path = plan.end_effector_path;
   if (plan.arm && plan.arm->joints.complete() && plan.arm->joints.t.size() == path.size())
@@ -86,7 +86,7 @@ std::vector<double> sample_times(const PlanResult& plan) {
 }
 
 /// The samples of `count` kept: all, or kMaxJointStateMessages spread evenly, ends included.
-std::vector<std::size_t> kept_samples(std::size_t count) {
+std::vector<std::size_t> mcap_kept_samples(std::size_t count) {
   std::vector<std::size_t> kept;
   if (count <= kMaxJointStateMessages) {
     for (std::size_t i = 0; i < count; ++i) kept.push_back(i);
@@ -100,7 +100,7 @@ std::vector<std::size_t> kept_samples(std::size_t count) {
 
 /// The path sample of each step's waypoint: the first nearest to it (position, and rotation
 /// angle times the rod's length), searched forward from the step before's.
-std::vector<std::size_t> waypoint_samples(const PlanResult& plan, double length) {
+std::vector<std::size_t> mcap_waypoint_samples(const PlanResult& plan, double length) {
   std::vector<std::size_t> samples;
   const std::vector<TimedPose>& path = plan.end_effector_path;
   std::size_t from = 0;
@@ -121,9 +121,9 @@ std::vector<std::size_t> waypoint_samples(const PlanResult& plan, double length)
   return samples;
 }
 
-RosMarker marker(double t, std::string_view ns, int id, RosMarker::Type type, RosColor color) {
+RosMarker ros_marker(double t, std::string_view ns, int id, RosMarker::Type type, RosColor color) {
   RosMarker m;
-  m.header = header(t);
+  m.header = ros_header(t);
   m.ns = std::string(ns);
   m.id = id;
   m.type = type;
@@ -132,13 +132,13 @@ RosMarker marker(double t, std::string_view ns, int id, RosMarker::Type type, Ro
 }
 
 /// The rotation taking z to `axis` (a unit vector).
-Eigen::Quaterniond z_to(const Eigen::Vector3d& axis) {
+Eigen::Quaterniond z_axis_to(const Eigen::Vector3d& axis) {
   return Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis);
 }
 
 RosMarker obstacle_marker(double t, int id, const Obstacle& obstacle, const Pose& clamp) {
   const RosColor grey{0.55F, 0.55F, 0.6F, 0.5F};
-  RosMarker m = marker(t, "obstacles", id, RosMarker::Cube, grey);
+  RosMarker m = ros_marker(t, "obstacles", id, RosMarker::Cube, grey);
   m.text = obstacle.name;
   std::visit(
       [&](const auto& shape) {
@@ -156,14 +156,14 @@ RosMarker obstacle_marker(double t, int id, const Obstacle& obstacle, const Pose
           m.type = RosMarker::Cylinder;  // its end caps not drawn
           m.position = 0.5 * (shape.from + shape.to);
           m.orientation =
-              axis.norm() > 0.0 ? z_to(axis.normalized()) : Eigen::Quaterniond::Identity();
+              axis.norm() > 0.0 ? z_axis_to(axis.normalized()) : Eigen::Quaterniond::Identity();
           m.scale = {2.0 * shape.radius, 2.0 * shape.radius, axis.norm()};
         } else {  // a half-space: a 4 m square slab 1 cm thick on its boundary, under the clamp
           const Eigen::Vector3d n = shape.normal.normalized();
           const double offset = shape.offset / shape.normal.norm();
           const Eigen::Vector3d on_plane = clamp.position - (n.dot(clamp.position) - offset) * n;
           m.position = on_plane + 0.005 * n;  // inside the obstacle, n·p > offset
-          m.orientation = z_to(n);
+          m.orientation = z_axis_to(n);
           m.scale = {4.0, 4.0, 0.01};
         }
       },
@@ -178,16 +178,16 @@ RosMarkerArray rod_markers(double t,
                            const PlanProblem& problem) {
   RosMarkerArray array;
   const double radius = problem.scene.rod_radius > 0.0 ? problem.scene.rod_radius : 0.0025;
-  RosMarker rod = marker(t, "rod", 0, RosMarker::LineStrip, {0.12F, 0.47F, 0.71F, 1.0F});
+  RosMarker rod = ros_marker(t, "rod", 0, RosMarker::LineStrip, {0.12F, 0.47F, 0.71F, 1.0F});
   rod.points = nodes;
   rod.scale = {2.0 * radius, 0.0, 0.0};  // a line strip's width is scale.x
   array.markers.push_back(std::move(rod));
   const double point_size = std::max(4.0 * radius, 0.005);
-  RosMarker target = marker(t, "target", 0, RosMarker::SphereList, {0.84F, 0.15F, 0.16F, 1.0F});
+  RosMarker target = ros_marker(t, "target", 0, RosMarker::SphereList, {0.84F, 0.15F, 0.16F, 1.0F});
   target.points = problem.target.points;
   target.scale = Eigen::Vector3d::Constant(point_size);
   array.markers.push_back(std::move(target));
-  RosMarker goal = marker(t, "objective", 0, RosMarker::SphereList, {1.0F, 0.5F, 0.05F, 0.8F});
+  RosMarker goal = ros_marker(t, "objective", 0, RosMarker::SphereList, {1.0F, 0.5F, 0.05F, 0.8F});
   goal.points = objective;
   goal.scale = Eigen::Vector3d::Constant(0.6 * point_size);
   array.markers.push_back(std::move(goal));
@@ -212,10 +212,10 @@ RosJointTrajectory joint_trajectory_message(const JointTrajectoryResult& joints)
   return message;
 }
 
-void add_joint_states(Recording& file, const JointTrajectoryResult& joints) {
-  for (const std::size_t i : kept_samples(std::min(joints.t.size(), joints.q.size()))) {
+void add_joint_states(McapRecording& file, const JointTrajectoryResult& joints) {
+  for (const std::size_t i : mcap_kept_samples(std::min(joints.t.size(), joints.q.size()))) {
     RosJointState state;
-    state.header = header(joints.t[i], "");
+    state.header = ros_header(joints.t[i], "");
     state.name = joints.joint_names;
     state.position.assign(joints.q[i].data(), joints.q[i].data() + joints.q[i].size());
     if (i < joints.qdot.size())
@@ -224,33 +224,34 @@ void add_joint_states(Recording& file, const JointTrajectoryResult& joints) {
   }
 }
 
-void add_plan(Recording& file, const PlanResult& plan, const PlanProblem& problem) {
+void add_plan_topics(McapRecording& file, const PlanResult& plan, const PlanProblem& problem) {
   const std::vector<TimedPose>& path = plan.end_effector_path;
   if (path.empty())
     throw InputError("plan.mcap: the plan has no end-effector path (" + plan.message + ")");
-  const std::vector<double> times = sample_times(plan);
+  const std::vector<double> times = mcap_sample_times(plan);
   const bool moving_base = !plan.base_end_effector_path.empty();
-  for (const std::size_t i : kept_samples(path.size())) {
+  for (const std::size_t i : mcap_kept_samples(path.size())) {
     const double t = times[i];
     RosTfMessage tf;
     const Pose clamp = moving_base
                            ? compose(plan.base_end_effector_path[i].pose,
                                      inverse(problem.moving_base->grasp.tip_to_end_effector))
                            : problem.rod.clamp;
-    tf.transforms.push_back(transform(t, "clamp", clamp));
+    tf.transforms.push_back(ros_transform(t, "clamp", clamp));
     tf.transforms.push_back(
-        transform(t, "tip", compose(path[i].pose, inverse(problem.grasp.tip_to_end_effector))));
+        ros_transform(t, "tip", compose(path[i].pose, inverse(problem.grasp.tip_to_end_effector))));
     if (problem.arm) {
-      tf.transforms.push_back(transform(t, "base", problem.arm->placement.world_T_base));
-      tf.transforms.push_back(transform(
+      tf.transforms.push_back(ros_transform(t, "base", problem.arm->placement.world_T_base));
+      tf.transforms.push_back(ros_transform(
           t, "flange", compose(path[i].pose, inverse(problem.arm->placement.flange_T_ee))));
     }
     if (problem.base_arm && moving_base) {
       tf.transforms.push_back(
-          transform(t, "base_arm/base", problem.base_arm->placement.world_T_base));
-      tf.transforms.push_back(transform(t, "base_arm/flange",
-                                        compose(plan.base_end_effector_path[i].pose,
-                                                inverse(problem.base_arm->placement.flange_T_ee))));
+          ros_transform(t, "base_arm/base", problem.base_arm->placement.world_T_base));
+      tf.transforms.push_back(
+          ros_transform(t, "base_arm/flange",
+                        compose(plan.base_end_effector_path[i].pose,
+                                inverse(problem.base_arm->placement.flange_T_ee))));
     }
     file.add("/tf", t, tf);
   }
@@ -266,7 +267,8 @@ void add_plan(Recording& file, const PlanResult& plan, const PlanProblem& proble
   }
   file.add("/rodshape/rod", times.front(),
            rod_markers(times.front(), plan.initial_configuration.p, plan.initial_points, problem));
-  const std::vector<std::size_t> waypoints = waypoint_samples(plan, problem.rod.properties.length);
+  const std::vector<std::size_t> waypoints =
+      mcap_waypoint_samples(plan, problem.rod.properties.length);
   for (std::size_t k = 0; k < plan.steps.size(); ++k) {
     const double t = times[waypoints[k]];
     file.add("/rodshape/rod", t,
@@ -280,8 +282,8 @@ void add_plan(Recording& file, const PlanResult& plan, const PlanProblem& proble
 std::string plan_mcap(const PlanResult& plan,
                       const PlanProblem& problem,
                       const McapOptions& options) {
-  Recording file(options);
-  add_plan(file, plan, problem);
+  McapRecording file(options);
+  add_plan_topics(file, plan, problem);
   return file.finish();
 }
 
@@ -289,17 +291,17 @@ std::string validation_mcap(const ValidationResult& result,
                             const PlanResult& plan,
                             const PlanProblem& problem,
                             const McapOptions& options) {
-  Recording file(options);
-  add_plan(file, plan, problem);
+  McapRecording file(options);
+  add_plan_topics(file, plan, problem);
   for (std::size_t r = 0; r < result.runs.size(); ++r) {
     const ValidationRun& run = result.runs[r];
     if (!run.last_cloud.points.empty())
       file.add("/camera/points", run.last_cloud.t,
-               RosPointCloud2::xyz(header(run.last_cloud.t), run.last_cloud.points));
+               RosPointCloud2::xyz(ros_header(run.last_cloud.t), run.last_cloud.points));
     if (!run.last_seen.markers.empty()) {
       RosMarkerArray seen;
-      RosMarker m = marker(run.last_seen.t, "run " + std::to_string(r + 1), static_cast<int>(r),
-                           RosMarker::SphereList, {0.17F, 0.63F, 0.17F, 1.0F});
+      RosMarker m = ros_marker(run.last_seen.t, "run " + std::to_string(r + 1), static_cast<int>(r),
+                               RosMarker::SphereList, {0.17F, 0.63F, 0.17F, 1.0F});
       m.scale = Eigen::Vector3d::Constant(0.008);
       for (const std::optional<Eigen::Vector3d>& p : run.last_seen.markers)
         if (p) m.points.push_back(*p);

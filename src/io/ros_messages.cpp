@@ -21,7 +21,7 @@ struct MsgDefinition {
 };
 
 /// The .msg texts (ROS 2 Humble and Jazzy), field for field, constants included.
-const std::vector<MsgDefinition>& definitions() {
+const std::vector<MsgDefinition>& msg_definitions() {
   static const std::vector<MsgDefinition> table = {
       {"builtin_interfaces/msg/Time", "int32 sec\nuint32 nanosec\n", {}},
       {"builtin_interfaces/msg/Duration", "int32 sec\nuint32 nanosec\n", {}},
@@ -92,76 +92,76 @@ const std::vector<MsgDefinition>& definitions() {
   return table;
 }
 
-const MsgDefinition& definition(std::string_view type) {
-  for (const MsgDefinition& d : definitions())
+const MsgDefinition& msg_definition(std::string_view type) {
+  for (const MsgDefinition& d : msg_definitions())
     if (d.type == type) return d;
   throw InputError("ROS 2 message type " + std::string(type) + ": not one rodshape writes");
 }
 
 /// The types `type` uses, each once, depth first in field order.
-void dependencies(std::string_view type,
-                  std::vector<std::string_view>& order,
-                  std::set<std::string_view>& seen) {
-  for (std::string_view used : definition(type).uses) {
+void msg_dependencies(std::string_view type,
+                      std::vector<std::string_view>& order,
+                      std::set<std::string_view>& seen) {
+  for (std::string_view used : msg_definition(type).uses) {
     if (!seen.insert(used).second) continue;
     order.push_back(used);
-    dependencies(used, order, seen);
+    msg_dependencies(used, order, seen);
   }
 }
 
-void write(CdrWriter& out, const RosTime& time) {
+void cdr_write(CdrWriter& out, const RosTime& time) {
   out.write_int32(time.sec);
   out.write_uint32(time.nanosec);
 }
 
-void write(CdrWriter& out, const RosHeader& header) {
-  write(out, header.stamp);
+void cdr_write(CdrWriter& out, const RosHeader& header) {
+  cdr_write(out, header.stamp);
   out.write_string(header.frame_id);
 }
 
-void write_strings(CdrWriter& out, const std::vector<std::string>& values) {
+void cdr_write_strings(CdrWriter& out, const std::vector<std::string>& values) {
   out.write_length(values.size());
   for (const std::string& value : values) out.write_string(value);
 }
 
-void write_xyz(CdrWriter& out, const Eigen::Vector3d& v) {
+void cdr_write_xyz(CdrWriter& out, const Eigen::Vector3d& v) {
   out.write_float64(v.x());
   out.write_float64(v.y());
   out.write_float64(v.z());
 }
 
-void write_xyzw(CdrWriter& out, const Eigen::Quaterniond& q) {
+void cdr_write_xyzw(CdrWriter& out, const Eigen::Quaterniond& q) {
   out.write_float64(q.x());
   out.write_float64(q.y());
   out.write_float64(q.z());
   out.write_float64(q.w());
 }
 
-void write(CdrWriter& out, const RosColor& c) {
+void cdr_write(CdrWriter& out, const RosColor& c) {
   out.write_float32(c.r);
   out.write_float32(c.g);
   out.write_float32(c.b);
   out.write_float32(c.a);
 }
 
-void write(CdrWriter& out, const RosMarker& m) {
-  write(out, m.header);
+void cdr_write(CdrWriter& out, const RosMarker& m) {
+  cdr_write(out, m.header);
   out.write_string(m.ns);
   out.write_int32(m.id);
   out.write_int32(m.type);
   out.write_int32(m.action);
-  write_xyz(out, m.position);
-  write_xyzw(out, m.orientation);
-  write_xyz(out, m.scale);
-  write(out, m.color);
-  write(out, m.lifetime);
+  cdr_write_xyz(out, m.position);
+  cdr_write_xyzw(out, m.orientation);
+  cdr_write_xyz(out, m.scale);
+  cdr_write(out, m.color);
+  cdr_write(out, m.lifetime);
   out.write_bool(m.frame_locked);
   out.write_length(m.points.size());
-  for (const Eigen::Vector3d& p : m.points) write_xyz(out, p);
+  for (const Eigen::Vector3d& p : m.points) cdr_write_xyz(out, p);
   out.write_length(m.colors.size());
-  for (const RosColor& c : m.colors) write(out, c);
-  out.write_string("");     // texture_resource
-  write(out, RosHeader{});  // texture: sensor_msgs/CompressedImage, empty
+  for (const RosColor& c : m.colors) cdr_write(out, c);
+  out.write_string("");         // texture_resource
+  cdr_write(out, RosHeader{});  // texture: sensor_msgs/CompressedImage, empty
   out.write_string("");
   out.write_uint8_sequence("");
   out.write_length(0);  // uv_coordinates
@@ -204,23 +204,23 @@ RosPointCloud2 RosPointCloud2::xyz(RosHeader header, const std::vector<Eigen::Ve
 
 std::string ros_cdr(const RosJointTrajectory& message) {
   CdrWriter out;
-  write(out, message.header);
-  write_strings(out, message.joint_names);
+  cdr_write(out, message.header);
+  cdr_write_strings(out, message.joint_names);
   out.write_length(message.points.size());
   for (const RosJointTrajectoryPoint& point : message.points) {
     out.write_float64_sequence(point.positions);
     out.write_float64_sequence(point.velocities);
     out.write_float64_sequence(point.accelerations);
     out.write_float64_sequence(point.effort);
-    write(out, point.time_from_start);
+    cdr_write(out, point.time_from_start);
   }
   return out.take();
 }
 
 std::string ros_cdr(const RosJointState& message) {
   CdrWriter out;
-  write(out, message.header);
-  write_strings(out, message.name);
+  cdr_write(out, message.header);
+  cdr_write_strings(out, message.name);
   out.write_float64_sequence(message.position);
   out.write_float64_sequence(message.velocity);
   out.write_float64_sequence(message.effort);
@@ -231,10 +231,10 @@ std::string ros_cdr(const RosTfMessage& message) {
   CdrWriter out;
   out.write_length(message.transforms.size());
   for (const RosTransformStamped& t : message.transforms) {
-    write(out, t.header);
+    cdr_write(out, t.header);
     out.write_string(t.child_frame_id);
-    write_xyz(out, t.translation);
-    write_xyzw(out, t.rotation);
+    cdr_write_xyz(out, t.translation);
+    cdr_write_xyzw(out, t.rotation);
   }
   return out.take();
 }
@@ -242,13 +242,13 @@ std::string ros_cdr(const RosTfMessage& message) {
 std::string ros_cdr(const RosMarkerArray& message) {
   CdrWriter out;
   out.write_length(message.markers.size());
-  for (const RosMarker& marker : message.markers) write(out, marker);
+  for (const RosMarker& marker : message.markers) cdr_write(out, marker);
   return out.take();
 }
 
 std::string ros_cdr(const RosPointCloud2& message) {
   CdrWriter out;
-  write(out, message.header);
+  cdr_write(out, message.header);
   out.write_uint32(message.height);
   out.write_uint32(message.width);
   out.write_length(message.fields.size());
@@ -267,17 +267,17 @@ std::string ros_cdr(const RosPointCloud2& message) {
 }
 
 std::string ros_schema(std::string_view type) {
-  std::string text(definition(type).text);
+  std::string text(msg_definition(type).text);
   std::vector<std::string_view> order;
   std::set<std::string_view> seen{type};
-  dependencies(type, order, seen);
+  msg_dependencies(type, order, seen);
   for (std::string_view used : order) {
     // "MSG: std_msgs/Header": the name as the .msg texts' fields spell it (rosbag2's form), so
     // that a parser resolves each field's type to its heading.
     std::string name(used);
     name.erase(name.find("/msg/"), 4);
     text += std::string(80, '=') + "\nMSG: " + name + "\n";
-    text += definition(used).text;
+    text += msg_definition(used).text;
   }
   return text;
 }

@@ -73,7 +73,7 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task);
 struct FigureFiles {
   bool html = true;
   /// plan.mcap, validation.mcap (`--mcap`; plan_mcap.hpp, docs/ros.md): written when set.
-  std::optional<McapOptions> mcap;
+  std::optional<McapOptions> mcap = std::nullopt;  // (initialised: {.html = h} stays warning-free)
 };
 
 /// InputError when `directory` exists but is not a directory (to check before planning, which may
@@ -96,8 +96,8 @@ void remove_plan_files(const std::string& directory);
 /// infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html; with a
 /// complete joint trajectory, joint_trajectory.csv and joint_trajectory.json; with a base arm's
 /// complete joint trajectory, base_joint_trajectory.csv and base_joint_trajectory.json (same
-/// forms); with figures.mcap and an end-effector path, plan.mcap. The others of plan_file_names() are stale: an earlier
-/// run's would not match plan.json.
+/// forms); with figures.mcap and an end-effector path, plan.mcap. The others of plan_file_names()
+/// are stale: an earlier run's would not match plan.json.
 OutputSet plan_outputs(const PlanResult& plan,
                        const PlanTask& task,
                        const FigureFiles& figures = {});
