@@ -212,7 +212,9 @@ RosJointTrajectory joint_trajectory_message(const JointTrajectoryResult& joints)
   return message;
 }
 
-void add_joint_states(McapRecording& file, const JointTrajectoryResult& joints) {
+void add_joint_states(McapRecording& file,
+                      std::string_view topic,
+                      const JointTrajectoryResult& joints) {
   for (const std::size_t i : mcap_kept_samples(std::min(joints.t.size(), joints.q.size()))) {
     RosJointState state;
     state.header = ros_header(joints.t[i], "");
@@ -220,7 +222,7 @@ void add_joint_states(McapRecording& file, const JointTrajectoryResult& joints) 
     state.position.assign(joints.q[i].data(), joints.q[i].data() + joints.q[i].size());
     if (i < joints.qdot.size())
       state.velocity.assign(joints.qdot[i].data(), joints.qdot[i].data() + joints.qdot[i].size());
-    file.add("/joint_states", joints.t[i], state);
+    file.add(topic, joints.t[i], state);
   }
 }
 
@@ -258,12 +260,12 @@ void add_plan_topics(McapRecording& file, const PlanResult& plan, const PlanProb
   if (plan.arm && plan.arm->joints.complete()) {
     file.add("/rodshape/joint_trajectory", times.front(),
              joint_trajectory_message(plan.arm->joints));
-    add_joint_states(file, plan.arm->joints);
+    add_joint_states(file, "/joint_states", plan.arm->joints);
   }
   if (plan.base_arm && plan.base_arm->joints.complete()) {
     file.add("/rodshape/base_joint_trajectory", times.front(),
              joint_trajectory_message(plan.base_arm->joints));
-    add_joint_states(file, plan.base_arm->joints);
+    add_joint_states(file, "/base_arm/joint_states", plan.base_arm->joints);  // same joint names
   }
   file.add("/rodshape/rod", times.front(),
            rod_markers(times.front(), plan.initial_configuration.p, plan.initial_points, problem));

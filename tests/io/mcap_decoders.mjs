@@ -8,7 +8,8 @@
 //     data section's CRC (Data End) is that of the bytes before it;
 //   - every message deserialises, with no byte left over, and serialises back to the same bytes;
 //   - /rodshape/joint_trajectory (with joint_trajectory.csv) equals the CSV to the digits written
-//     (12 significant), its times to the nanosecond; /joint_states has a message per sample;
+//     (12 significant), its times to the nanosecond, and /joint_states has a message per sample;
+//     likewise /rodshape/base_joint_trajectory, base_joint_trajectory.csv, /base_arm/joint_states;
 //   - /rodshape/rod has the initial shape and each step's, whose rod points equal plan.json's
 //     shapes (initial.nodes.position, steps[k].configuration.nodes.position) exactly;
 //   - validation.mcap: /camera/points clouds are whole (data = width × point_step bytes).
@@ -165,36 +166,44 @@ async function checkFile(directory) {
   for (const topic of ["/tf", "/rodshape/rod"])
     check(byTopic.has(topic), where, `no ${topic} messages`);
 
-  // The joint trajectory against joint_trajectory.csv, to the digits written.
+  // The joint trajectories against joint_trajectory.csv (base_joint_trajectory.csv), to the
+  // digits written, and a joint state per sample.
   const notes = [];
-  const csvPath = join(directory, "joint_trajectory.csv");
-  if (existsSync(csvPath)) {
-    const csv = readCsv(csvPath);
-    const trajectories = byTopic.get("/rodshape/joint_trajectory") ?? [];
-    if (check(trajectories.length === 1, where, `${trajectories.length} joint trajectories`)) {
-      const trajectory = trajectories[0].message;
-      check(JSON.stringify(trajectory.joint_names) === JSON.stringify(csv.header.slice(1)), where,
-            `joint names ${trajectory.joint_names} against the CSV's ${csv.header.slice(1)}`);
-      check(trajectory.points.length === csv.rows.length, where,
-            `${trajectory.points.length} points, the CSV has ${csv.rows.length} rows`);
-      const t0 = csv.rows[0][0];
-      let worst = 0;
-      trajectory.points.forEach((point, i) => {
-        const row = csv.rows[i] ?? [];
-        const t = point.time_from_start.sec + point.time_from_start.nanosec * 1e-9 + t0;
-        worst = Math.max(worst, Math.abs(t - row[0]));
-        check(Math.abs(t - row[0]) <= 1e-9 + 1e-12 * Math.abs(row[0]), where,
-              `point ${i}: time ${t} against the CSV's ${row[0]}`);
-        point.positions.forEach((q, j) =>
-          check(digits12(q) === row[j + 1], where,
-                `point ${i}, ${csv.header[j + 1]}: ${q} against the CSV's ${row[j + 1]}`));
-      });
-      const states = byTopic.get("/joint_states") ?? [];
-      check(states.length === csv.rows.length, where,
-            `${states.length} joint states for ${csv.rows.length} samples`);
-      notes.push(`joint trajectory = joint_trajectory.csv (${csv.rows.length} samples, times within ` +
-                 `${worst.toExponential(1)} s)`);
+  for (const [file, topic, states] of [
+    ["joint_trajectory.csv", "/rodshape/joint_trajectory", "/joint_states"],
+    ["base_joint_trajectory.csv", "/rodshape/base_joint_trajectory", "/base_arm/joint_states"],
+  ]) {
+    const csvPath = join(directory, file);
+    if (!existsSync(csvPath)) {
+      check(!byTopic.has(topic), where, `${topic} without ${file}`);
+      continue;
     }
+    const csv = readCsv(csvPath);
+    const trajectories = byTopic.get(topic) ?? [];
+    if (!check(trajectories.length === 1, where, `${trajectories.length} messages on ${topic}`))
+      continue;
+    const trajectory = trajectories[0].message;
+    check(JSON.stringify(trajectory.joint_names) === JSON.stringify(csv.header.slice(1)), where,
+          `${topic}: joint names ${trajectory.joint_names} against ${file}'s ${csv.header.slice(1)}`);
+    check(trajectory.points.length === csv.rows.length, where,
+          `${topic}: ${trajectory.points.length} points, ${file} has ${csv.rows.length} rows`);
+    const t0 = csv.rows[0][0];
+    let worst = 0;
+    trajectory.points.forEach((point, i) => {
+      const row = csv.rows[i] ?? [];
+      const t = point.time_from_start.sec + point.time_from_start.nanosec * 1e-9 + t0;
+      worst = Math.max(worst, Math.abs(t - row[0]));
+      check(Math.abs(t - row[0]) <= 1e-9 + 1e-12 * Math.abs(row[0]), where,
+            `${topic} point ${i}: time ${t} against ${file}'s ${row[0]}`);
+      point.positions.forEach((q, j) =>
+        check(digits12(q) === row[j + 1], where,
+              `${topic} point ${i}, ${csv.header[j + 1]}: ${q} against ${file}'s ${row[j + 1]}`));
+    });
+    const stateCount = (byTopic.get(states) ?? []).length;
+    check(stateCount === csv.rows.length, where,
+          `${stateCount} messages on ${states} for ${csv.rows.length} samples`);
+    notes.push(`${topic} = ${file} (${csv.rows.length} samples, times within ` +
+               `${worst.toExponential(1)} s)`);
   }
 
   // The rod's shapes against plan.json's.

@@ -86,7 +86,7 @@ TEST(McapCrc, IsTheIsoHdlcCrc32) {
   EXPECT_EQ(mcap_crc32("56789", mcap_crc32("1234")), 0xCBF43926U);  // continued
 }
 
-class McapLayout : public testing::TestWithParam<McapCompression> {};
+class McapLayout : public ::testing::TestWithParam<McapCompression> {};
 
 TEST_P(McapLayout, EveryRecordIsWhereTheSummaryAndIndexesSay) {
   const int messages = 25;
@@ -249,7 +249,7 @@ TEST_P(McapLayout, EveryRecordIsWhereTheSummaryAndIndexesSay) {
 
 INSTANTIATE_TEST_SUITE_P(Compressions,
                          McapLayout,
-                         testing::Values(McapCompression::None, McapCompression::Zstd));
+                         ::testing::Values(McapCompression::None, McapCompression::Zstd));
 
 TEST(McapWithoutMessages, HasNoChunkButAWholeSummary) {
   McapWriter writer("ros2", "rodshape test");

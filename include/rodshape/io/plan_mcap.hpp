@@ -6,6 +6,7 @@
 //   /rodshape/joint_trajectory  trajectory_msgs/msg/JointTrajectory   the arm's, once, at t = 0
 //   /rodshape/base_joint_trajectory   the base arm's, likewise (with a base arm)
 //   /joint_states               sensor_msgs/msg/JointState   at the joint trajectory's samples
+//   /base_arm/joint_states      the base arm's (its joints may have the tip arm's names)
 //   /tf                         tf2_msgs/msg/TFMessage       clamp, tip (and base, flange) there
 //   /rodshape/rod               visualization_msgs/msg/MarkerArray   at t = 0 the initial shape,
 //                               then each step's shape at the time its waypoint is reached: the
