@@ -98,8 +98,9 @@ std::vector<std::size_t> mcap_kept_samples(std::size_t count) {
   return kept;
 }
 
-/// The path sample of each step's waypoint: the first nearest to it (position, and rotation
-/// angle times the rod's length), searched forward from the step before's.
+/// The path sample of each step's waypoint, searched forward from the step before's: the first
+/// that is the waypoint (the path stops on each, rest to rest: time_parameterize() samples it),
+/// else the first nearest to it (distance: position, and rotation angle times the rod's length).
 std::vector<std::size_t> mcap_waypoint_samples(const PlanResult& plan, double length) {
   std::vector<std::size_t> samples;
   const std::vector<TimedPose>& path = plan.end_effector_path;
@@ -111,10 +112,14 @@ std::vector<std::size_t> mcap_waypoint_samples(const PlanResult& plan, double le
           Eigen::AngleAxisd(p.rotation.transpose() * step.end_effector.rotation).angle();
       return (p.position - step.end_effector.position).norm() + length * angle;
     };
-    double least = distance(from);
-    for (std::size_t i = from + 1; i < path.size(); ++i) least = std::min(least, distance(i));
+    constexpr double kSame = 1e-9;  // m
     std::size_t at = from;
-    while (at + 1 < path.size() && distance(at) > least + 1e-12) ++at;
+    while (at < path.size() && distance(at) > kSame) ++at;
+    if (at == path.size()) {
+      at = from;
+      for (std::size_t i = from + 1; i < path.size(); ++i)
+        if (distance(i) < distance(at)) at = i;
+    }
     samples.push_back(at);
     from = at;
   }
