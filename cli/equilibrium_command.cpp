@@ -1,5 +1,5 @@
 // equilibrium_command.cpp: solve the rod a task file describes and write the result as JSON.
-//   task file -> EquilibriumTask (io) -> analyse_equilibrium (solvers) -> JSON (io)
+//   task file -> EquilibriumTask (io) -> answer_equilibrium_task (io: free or resting) -> JSON (io)
 #include "equilibrium_command.hpp"
 
 #include <iostream>
@@ -7,12 +7,10 @@
 
 #include "exit_code.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/equilibrium_answer.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
-#include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
-#include "rodshape/solvers/contact_equilibrium.hpp"
-#include "rodshape/solvers/equilibrium_analysis.hpp"
 
 namespace rodshape::cli {
 
@@ -49,30 +47,15 @@ class EquilibriumCommand final : public Command {
       check_output_path(output_path_);
     }
 
-    EquilibriumAnalysis analysis;
-    ContactEquilibriumResult contact;
-    const bool resting = !task.scene.empty();
-    try {
-      if (resting)
-        contact = solve_contact_equilibrium(task.rod, task.tip, task.scene, task.initial_wrench,
-                                            task.options);
-      else
-        analysis = analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options);
-    } catch (const InputError& error) {  // a held pose beyond the model's validity or in a solid
-      throw InputError(task_path_ + ": " + in_task_names(error));
-    }
-    const ShootingSummary& summary = resting ? contact.shooting.summary : analysis.solution.summary;
-    const std::string json = resting
-                                 ? contact_equilibrium_result_json(contact, task.rod, task.scene)
-                                 : equilibrium_result_json(analysis);
-    const std::string brief =
-        resting ? contact.shooting.brief() + "; " + contact.brief() : analysis.brief();
+    const EquilibriumAnswer answer = answer_equilibrium_task(task);
+    const ShootingSummary& summary = answer.solution().summary;
+    const std::string json = equilibrium_answer_json(answer, task);
     if (!to_file) {
       if (!quiet_) write_to_standard_output(json);
     } else {
       write_file_atomically(output_path_, json);
       if (!quiet_) {
-        std::cout << task_path_ << ": " << brief << "; wrote " << output_path_ << "\n";
+        std::cout << task_path_ << ": " << answer.brief() << "; wrote " << output_path_ << "\n";
       }
     }
 

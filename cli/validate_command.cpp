@@ -18,6 +18,7 @@
 
 #include "exit_code.hpp"
 #include "mcap_option.hpp"
+#include "number_option.hpp"
 #include "progress_line.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
@@ -60,6 +61,7 @@ constexpr double kPixelSeconds = 4.4e-9;      // per pixel, frame and run (the c
 constexpr double kCloudFitSeconds = 1.75e-7;  // per interval and pooled point, checkpoint and run
 constexpr double kMargin = 1.5;
 constexpr double kAnnouncedSeconds = 10.0;  // an estimate this long is said on standard error
+constexpr double kMaxMaxSeconds = 1.0e6;    // --max-seconds' bound (docs/limits.md), 11.6 days
 
 /// "0.42", "4.2", "683": two significant digits below 10 s, whole seconds above.
 std::string seconds_text(double seconds) {
@@ -158,28 +160,26 @@ class ValidateCommand final : public Command {
         ->type_name("OUTDIR");
     command
         ->add_option(
-            "--runs", options_.runs,
+            "--runs", runs_,
             "Repeats with the sensor's noise drawn anew (1 to 1000; the plant is the same)")
-        ->check(CLI::Range(1, ValidationOptions::kMaxRuns));
+        ->type_name("N");
     command
         ->add_option("--seed", seed_,
                      "Seed of the first run (run k: seed + k - 1), a whole number in [0, 2^64 - "
                      "runs]")
         ->type_name("S");
-    options_.jobs = default_jobs();
+    jobs_ = std::to_string(default_jobs());
     command
-        ->add_option("--jobs", options_.jobs,
+        ->add_option("--jobs", jobs_,
                      "Closed loop: runs carried out at once, 1 to 256 (default: the cores, here " +
                          std::to_string(default_jobs()) +
                          "); the results are the same for every value")
-        ->check(CLI::Range(1, ValidationOptions::kMaxJobs))
         ->type_name("N");
     command
-        ->add_option("--max-seconds", max_seconds_,
+        ->add_option("--max-seconds", max_seconds_text_,
                      "Refuse a validation estimated to take longer (default " +
                          seconds_text(kMaxEstimatedPlanSeconds) +
-                         " s, as for plan; docs/limits.md)")
-        ->check(CLI::PositiveNumber)
+                         " s, as for plan; at most 1e6; docs/limits.md)")
         ->type_name("S");
     command->add_flag("--closed-loop", options_.closed_loop,
                       "Close the loop: at each waypoint, estimate the rod from the sensors and "
@@ -202,6 +202,12 @@ class ValidateCommand final : public Command {
 
   int run() override {
     ValidationOptions options = options_;
+    options.runs = whole_option("--runs", runs_, 1, ValidationOptions::kMaxRuns);
+    options.jobs = whole_option("--jobs", jobs_, 1, ValidationOptions::kMaxJobs);
+    const double max_seconds =
+        max_seconds_text_.empty()
+            ? kMaxEstimatedPlanSeconds
+            : positive_option("--max-seconds", max_seconds_text_, kMaxMaxSeconds);
     options.seed = parse_seed(seed_);
     try {
       options.validate();
@@ -219,7 +225,7 @@ class ValidateCommand final : public Command {
     // Before planning, a lower bound (the path's frames are not known yet); after, the estimate.
     check_validation_cost(task_path_,
                           estimated_validation_cost(task, options, task.options.steps, 0.0),
-                          max_seconds_, true);
+                          max_seconds, true);
     PlanResult plan;
     ValidationResult result;
     try {
@@ -241,7 +247,7 @@ class ValidateCommand final : public Command {
         std::visit([](const auto& model) { return model.frame_rate; }, task.sensor_model());
     const ValidationCost cost = estimated_validation_cost(
         task, options, static_cast<double>(plan.steps.size()), std::floor(duration * rate) + 2.0);
-    check_validation_cost(task_path_, cost, max_seconds_, false);
+    check_validation_cost(task_path_, cost, max_seconds, false);
     if (!quiet_ && cost.seconds >= kAnnouncedSeconds)
       std::cerr << "validate: about " << seconds_text(cost.seconds) << " s estimated (" << cost.from
                 << ")\n";
@@ -278,7 +284,8 @@ class ValidateCommand final : public Command {
   std::string output_directory_;
   ValidationOptions options_;
   std::string seed_ = "1";
-  double max_seconds_ = kMaxEstimatedPlanSeconds;
+  std::string runs_ = "1", jobs_;  // read by whole_option() (number_option.hpp)
+  std::string max_seconds_text_;   // "": kMaxEstimatedPlanSeconds
   bool quiet_ = false;
   bool no_html_ = false;
   McapOption mcap_;

@@ -10,6 +10,7 @@ a wanted shape, and check the plan in simulation.
 Arrays are numpy float64 in SI units: positions (N+1, 3), rotations (N+1, 3, 3), wrenches (3,).
 Bad input raises rodshape.InputError (a ValueError) with the library's one-line message.
 """
+import difflib
 import os
 import re
 import sys
@@ -55,7 +56,7 @@ def load_task(path):
 # ---- errors that name the field -----------------------------------------------------------------
 
 def _short_repr(value, limit=60):
-    text = repr(value)
+    text = " ".join(repr(value).split())  # one line: a numpy array's repr has several
     return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
@@ -87,6 +88,74 @@ def _name_setter_errors(module):
 _name_setter_errors(_rodshape)
 
 
+# ---- misspelt attributes -------------------------------------------------------------------------
+# The task classes take dynamic attributes (the package's own, such as _changed_in_code): without a
+# check `task.optionz = ...` or `task.rod.intervalls = 5` would be taken and change nothing.
+
+def _attribute_names(owner):
+    return sorted(name for name in dir(owner) if not name.startswith("_"))
+
+
+def _checked_setattr(owner):
+    """owner.__setattr__, refusing a public name the class does not have: AttributeError naming the
+    nearest attribute. Names starting with '_' are the package's own and pass."""
+    assign = owner.__setattr__
+
+    def __setattr__(self, name, value):
+        if not name.startswith("_") and not hasattr(type(self), name):
+            names = _attribute_names(type(self))
+            nearest = difflib.get_close_matches(name, names, n=1, cutoff=0.6)
+            hint = (f"did you mean '{nearest[0]}'?" if nearest else
+                    "its attributes are " + ", ".join(names))
+            raise AttributeError(f"{type(self).__name__} has no attribute '{name}': {hint}")
+        assign(self, name, value)
+    return __setattr__
+
+
+def _refuse_misspelt_attributes(module):
+    for owner in vars(module).values():
+        if isinstance(owner, type) and owner.__module__ == module.__name__:
+            owner.__setattr__ = _checked_setattr(owner)
+
+
+_refuse_misspelt_attributes(_rodshape)
+
+
+# ---- a plan's task -------------------------------------------------------------------------------
+# plan.task is a copy of the task the plan answers, read-only: assigning it, or a part of it, would
+# change neither the plan nor the task it was made from.
+
+def _read_only_task(prop):
+    def fget(self):
+        task = prop.fget(self)  # a copy (bind_io.cpp)
+        task._read_only = True
+        return task
+
+    def fset(self, value):
+        raise AttributeError("Plan.task is read-only: it is a copy of the task the plan answers; "
+                             "to plan another task, change your task and call "
+                             "rodshape.plan(task) again")
+    return property(fget, fset, None, prop.__doc__)
+
+
+_rodshape.Plan.task = _read_only_task(vars(_rodshape.Plan)["task"])
+
+
+def _refuse_on_read_only(owner):
+    assign = owner.__setattr__
+
+    def __setattr__(self, name, value):
+        if not name.startswith("_") and getattr(self, "_read_only", False):
+            raise AttributeError(f"plan.task.{name}: plan.task is a read-only copy of the task "
+                                 f"the plan answers (changing it changes nothing); change your "
+                                 f"task and call rodshape.plan(task) again")
+        assign(self, name, value)
+    owner.__setattr__ = __setattr__
+
+
+_refuse_on_read_only(_rodshape.PlanTask)
+
+
 # ---- a task changed in code ----------------------------------------------------------------------
 # A task read from a file reports bad input at the file's line. Once a part of it has been taken to
 # be changed in code (task.problem, task.options, ...), a bad value may not be the file's: its
@@ -94,7 +163,7 @@ _name_setter_errors(_rodshape)
 
 _TASK_PARTS = {_rodshape.PlanTask: ("rod", "problem", "options", "plant", "sensor", "depth_sensor",
                                          "closed_loop"),
-               _rodshape.EquilibriumTask: ("rod",)}
+               _rodshape.EquilibriumTask: ("rod", "scene")}
 
 
 def _marking_access(prop):

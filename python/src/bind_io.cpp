@@ -9,6 +9,7 @@
 #include "rodshape/error.hpp"
 #include "rodshape/feedback/cloud_estimator.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/equilibrium_answer.hpp"
 #include "rodshape/io/estimate_task.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
@@ -25,10 +26,12 @@ namespace rodshape::python {
 
 namespace {
 
-/// An equilibrium task's result: what `rodshape equilibrium` computes and writes.
+/// An equilibrium task's result, with the task it answers: what `rodshape equilibrium` computes
+/// and writes.
 struct Equilibrium {
-  EquilibriumAnalysis analysis;
-  std::string to_json() const { return equilibrium_result_json(analysis); }
+  EquilibriumAnswer answer;
+  EquilibriumTask task;
+  std::string to_json() const { return equilibrium_answer_json(answer, task); }
 };
 
 /// A plan task's result, with the task it answers (the writers need both).
@@ -60,11 +63,7 @@ struct Validation {
 };
 
 Equilibrium solve_task(const EquilibriumTask& task) {
-  try {
-    return {analyse_equilibrium(task.rod, task.tip, task.initial_wrench, task.options)};
-  } catch (const InputError& error) {  // a held pose beyond the model's validity
-    throw InputError(task.source + ": " + in_task_names(error));
-  }
+  return {answer_equilibrium_task(task), task};
 }
 
 /// The (n × 3) rows of `points` (camera frame); InputError naming `points` for another shape.
@@ -143,9 +142,11 @@ Validation validate_task(const PlanTask& task,
 
 void bind_tasks(py::module_& m) {
   // dynamic_attr: the package marks a task whose parts were taken to be changed in code.
-  py::class_<EquilibriumTask>(m, "EquilibriumTask", py::dynamic_attr(),
-                              "An equilibrium task file, read and checked.")
-      .def_readwrite("rod", &EquilibriumTask::rod)
+  py::class_<EquilibriumTask> equilibrium_task_class(m, "EquilibriumTask", py::dynamic_attr(),
+                                                     "An equilibrium task file, read and checked.");
+  def_part(equilibrium_task_class, "scene", &EquilibriumTask::scene,
+           "the obstacles the rod rests on (contact: touch)");
+  equilibrium_task_class.def_readwrite("rod", &EquilibriumTask::rod)
       .def_readonly("source", &EquilibriumTask::source)
       .def_property_readonly("kind", [](const EquilibriumTask&) { return "equilibrium"; });
   py::class_<PlanTask> plan_task_class(m, "PlanTask", py::dynamic_attr(),
@@ -212,25 +213,40 @@ void bind_outcomes(py::module_& m) {
           "why not (\"\" when explained)")
       .def("to_json", &Estimate::to_json, "The JSON document `rodshape estimate` writes.");
   py::class_<Equilibrium>(m, "Equilibrium", "What `rodshape equilibrium` computes for a task.")
-      .def_readonly("analysis", &Equilibrium::analysis)
+      .def_property_readonly(
+          "analysis", [](const Equilibrium& e) { return e.answer.analysis; },
+          "the EquilibriumAnalysis (stability, ...) of a task without a scene, else None")
+      .def_property_readonly(
+          "contact", [](const Equilibrium& e) { return e.answer.contact; },
+          "the ContactEquilibriumResult of a task with a scene, else None")
+      .def_property_readonly(
+          "contacts",
+          [](const Equilibrium& e) {
+            return e.answer.contact ? e.answer.contact->contacts : std::vector<RodContact>{};
+          },
+          "the RodContact list (empty without a scene or when the rod clears it)")
       .def_property_readonly("configuration",
-                             [](const Equilibrium& e) { return e.analysis.solution.configuration; })
+                             [](const Equilibrium& e) { return e.answer.solution().configuration; })
       .def_property_readonly("base_wrench",
-                             [](const Equilibrium& e) { return e.analysis.solution.base_wrench; })
+                             [](const Equilibrium& e) { return e.answer.solution().base_wrench; })
       .def_property_readonly(
           "status",
-          [](const Equilibrium& e) { return to_string(e.analysis.solution.summary.status); })
-      .def_property_readonly("stable",
-                             [](const Equilibrium& e) -> py::object {
-                               if (!e.analysis.stability) return py::none();
-                               return py::bool_(e.analysis.stability->stable);
-                             })
-      .def("converged", [](const Equilibrium& e) { return e.analysis.converged(); })
-      .def("brief", [](const Equilibrium& e) { return e.analysis.brief(); })
+          [](const Equilibrium& e) { return to_string(e.answer.solution().summary.status); })
+      .def_property_readonly(
+          "stable",
+          [](const Equilibrium& e) -> py::object {
+            if (!e.answer.analysis || !e.answer.analysis->stability) return py::none();
+            return py::bool_(e.answer.analysis->stability->stable);
+          },
+          "the stability verdict; None when not converged or resting on a scene (not assessed)")
+      .def("converged", [](const Equilibrium& e) { return e.answer.converged(); })
+      .def("brief", [](const Equilibrium& e) { return e.answer.brief(); })
       .def("to_json", &Equilibrium::to_json, "The JSON document `rodshape equilibrium` writes.");
   py::class_<Plan>(m, "Plan", "What `rodshape plan` computes for a task.")
       .def_readonly("result", &Plan::result)
-      .def_readonly("task", &Plan::task)
+      .def_property_readonly(
+          "task", [](const Plan& p) { return p.task; },
+          "a read-only copy of the task the plan answers (python/rodshape/__init__.py)")
       .def_property_readonly("status", [](const Plan& p) { return to_string(p.result.status); })
       .def_property_readonly("steps", [](const Plan& p) { return p.result.steps; })
       .def_property_readonly(

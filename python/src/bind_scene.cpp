@@ -46,6 +46,11 @@ void bind_scene(py::module_& m) {
            py::arg("normal"), py::arg("offset"))
       .def_readwrite("offset", &HalfSpaceObstacle::offset, "m");
   def_part(half_space, "normal", &HalfSpaceObstacle::normal);
+  py::enum_<ContactMode>(m, "ContactMode",
+                         "What the rod may do with an obstacle: Avoid (keep the scene's "
+                         "clearance) or Touch (rest on it: the gap >= 0, a reaction where it is 0)")
+      .value("Avoid", ContactMode::Avoid)
+      .value("Touch", ContactMode::Touch);
   py::class_<Obstacle> obstacle(m, "Obstacle");
   def_part(obstacle, "shape", &Obstacle::shape,
            "the obstacle's own SphereObstacle, BoxObstacle, CapsuleObstacle or HalfSpaceObstacle");
@@ -55,6 +60,13 @@ void bind_scene(py::module_& m) {
            }),
            py::arg("shape"), py::arg("name") = "")
       .def_readwrite("name", &Obstacle::name)
+      .def_readwrite("contact", &Obstacle::contact,
+                     "ContactMode.Avoid (plans keep clear) or ContactMode.Touch (equilibria rest "
+                     "on it; plans refuse it)")
+      .def_readwrite("friction", &Obstacle::friction,
+                     "Coulomb's mu of a touchable obstacle; only 0 (frictionless) is solved")
+      .def("validate", &Obstacle::validate, py::arg("field") = "obstacle",
+           "Throws ValueError naming `field` for a bad shape, contact or friction")
       .def_property_readonly("kind", &Obstacle::kind)
       .def(
           "distance",

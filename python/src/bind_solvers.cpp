@@ -1,5 +1,7 @@
-// bind_solvers.cpp: tip conditions, the shooting solver, stability, and the analysed equilibrium.
+// bind_solvers.cpp: tip conditions, the shooting solver, stability, the analysed equilibrium and
+// the equilibrium resting on obstacles.
 #include "bindings.hpp"
+#include "rodshape/solvers/contact_equilibrium.hpp"
 #include "rodshape/solvers/equilibrium_analysis.hpp"
 #include "rodshape/solvers/shooting_solver.hpp"
 #include "rodshape/solvers/solve_status.hpp"
@@ -57,6 +59,24 @@ void bind_results(py::module_& m) {
       .def_readonly("tip_singular_value", &StabilityResult::tip_singular_value)
       .def_readonly("degenerate", &StabilityResult::degenerate)
       .def("brief", &StabilityResult::brief);
+  py::class_<RodContact>(m, "RodContact", "One patch of contact: an interval of s on an obstacle.")
+      .def_readonly("obstacle", &RodContact::obstacle, "index into the scene's obstacles")
+      .def_readonly("s_start", &RodContact::s_start, "m")
+      .def_readonly("s_end", &RodContact::s_end, "m (s_start for a point contact)")
+      .def_readonly("force", &RodContact::force, "the whole reaction on the rod, N, world")
+      .def_readonly("max_line_force", &RodContact::max_line_force, "N/m (0 at a point)")
+      .def_readonly("start_force", &RodContact::start_force, "concentrated reaction at s_start, N")
+      .def_readonly("end_force", &RodContact::end_force, "concentrated reaction at s_end, N")
+      .def("point", &RodContact::point);
+  py::class_<ContactEquilibriumResult>(m, "ContactEquilibriumResult",
+                                       "An equilibrium resting on touchable obstacles.")
+      .def_readonly("shooting", &ContactEquilibriumResult::shooting,
+                    "the ShootingResult (summary, base wrench, configuration)")
+      .def_readonly("contacts", &ContactEquilibriumResult::contacts, "the RodContact list")
+      .def_readonly("least_gap", &ContactEquilibriumResult::least_gap, "m")
+      .def_readonly("active_set_iterations", &ContactEquilibriumResult::active_set_iterations)
+      .def_readonly("newton_iterations", &ContactEquilibriumResult::newton_iterations)
+      .def("brief", &ContactEquilibriumResult::brief);
 }
 
 void bind_functions(py::module_& m) {
@@ -68,6 +88,16 @@ void bind_functions(py::module_& m) {
       py::arg("options") = ShootingOptions{}, py::call_guard<py::gil_scoped_release>(),
       "The base wrench that puts the rod in equilibrium with `tip` (FreeTip, ClampedTip or "
       "GraspedTip), by shooting: a ShootingResult.");
+  m.def(
+      "solve_contact_equilibrium",
+      [](const ClampedRod& rod, const TipCondition& tip, const Scene& scene,
+         const BaseWrench& guess, const ShootingOptions& options) {
+        return solve_contact_equilibrium(rod, tip, scene, guess, options);
+      },
+      py::arg("rod"), py::arg("tip"), py::arg("scene"), py::arg("guess") = BaseWrench{},
+      py::arg("options") = ShootingOptions{}, py::call_guard<py::gil_scoped_release>(),
+      "The equilibrium of the rod held by `tip` resting on the scene's obstacles whose contact "
+      "is ContactMode.Touch (frictionless): a ContactEquilibriumResult.");
   m.def(
       "assess_stability",
       [](const ClampedRod& rod, const RodConfiguration& c, const TipCondition& tip) {

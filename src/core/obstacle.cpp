@@ -324,7 +324,14 @@ std::vector<ObstacleField> shape_fields(const HalfSpaceObstacle& h) {
 
 void validate_shape(const HalfSpaceObstacle& h, const std::string& field) {
   detail::require_finite(field + ".normal", h.normal);
-  if (!(h.normal.norm() > 1e-12)) throw InputError(field + ".normal", " must not be zero");
+  const double norm = h.normal.stableNorm();  // |[1e300, 0, 0]| is 1e300, not inf
+  if (norm == 0.0) throw InputError(field + ".normal", " must not be zero");
+  if (norm < Obstacle::kMinNormal || norm > Obstacle::kMaxNormal)
+    throw InputError(field + ".normal", " has magnitude " + detail::format_value(norm) +
+                                            "; it must be in [" +
+                                            detail::format_value(Obstacle::kMinNormal) + ", " +
+                                            detail::format_value(Obstacle::kMaxNormal) +
+                                            "] (it is normalised; docs/task-file.md)");
   detail::require_finite(field + ".offset", h.offset);
   if (std::abs(h.offset) > Obstacle::kMaxSize * h.normal.norm())
     throw InputError(field + ".offset",

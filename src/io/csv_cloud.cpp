@@ -1,5 +1,7 @@
 // csv_cloud.cpp: a cloud as CSV: x,y,z per line, an optional header line (the first line, when it
-// is not three numbers), blank lines skipped (cloud_reader.hpp).
+// is not three numbers), blank lines skipped, a NaN or infinite value refused: unlike a camera's
+// organised PLY or PCD, a CSV has no invalid pixels to skip (cloud_reader.hpp).
+#include <cmath>
 #include <string>
 
 #include "io/cloud_text.hpp"
@@ -51,6 +53,10 @@ std::vector<Eigen::Vector3d> parse_csv(std::string_view bytes, const std::string
           cloud_error(name, where + ": field " + std::to_string(k + 1) + " (" + "xyz"[k] +
                                 ") is not a number");
     }
+    for (std::size_t k = 0; k < 3; ++k)
+      if (!std::isfinite(xyz[k]))
+        cloud_error(name, where + ": field " + std::to_string(k + 1) + " (" + "xyz"[k] + ") is " +
+                              std::string(fields[k]) + ", not a finite number");
     add_point(points, xyz[0], xyz[1], xyz[2], name);
   }
   return points;

@@ -134,6 +134,7 @@ const std::unordered_map<std::string_view, std::string_view>& table() {
       {"EstimateTask.tip", "tip"},
       {"CloudFrame", "--cloud"},
       {"GraspedTip.pose", "tip"},
+      {"GraspedTip.released", "tip.released"},
       // solvers
       {"ShootingOptions.max_iterations", "solver.max_iterations"},
       {"ShootingOptions.residual_tolerance", "solver.tolerance"},

@@ -149,6 +149,7 @@ void OutputSet::append(OutputSet other) {
 }
 
 std::vector<std::string> write_output_set(const std::string& directory, OutputSet set) {
+  check_output_directory(directory);
   std::error_code error;
   fs::create_directories(directory, error);
   if (error)

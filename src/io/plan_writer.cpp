@@ -30,7 +30,14 @@ void remove_plan_files(const std::string& directory) {
 
 void check_output_directory(const std::string& directory) {
   namespace fs = std::filesystem;
+  std::string path = directory;  // "DIR/": lstat would follow a link named DIR
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
   std::error_code error;
+  if (fs::is_symlink(fs::symlink_status(path, error)))
+    throw InputError(path +
+                     ": cannot write into it: the output directory is a symbolic link; outputs "
+                     "are never written through a symbolic link (docs/limits.md): give the "
+                     "directory it names or another output directory");
   if (fs::exists(directory, error) && !fs::is_directory(directory, error))
     throw InputError(directory + ": cannot create the output directory: it is not a directory");
 }

@@ -4,6 +4,7 @@
 #include "io/task_sections.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -209,9 +210,22 @@ Eigen::Matrix3d read_rotation(const YamlField& rotation) {
   return Eigen::Quaterniond(R).normalized().toRotationMatrix();
 }
 
+/// `value` (read from `field`) when |value| ≤ `max`; else fails naming the field, "has magnitude
+/// 1e+300 m; at most 10000 m (docs/limits.md)" (as require_magnitude_at_most()).
+Eigen::Vector3d at_most(const YamlField& field,
+                        const Eigen::Vector3d& value,
+                        double max,
+                        const char* unit) {
+  if (value.stableNorm() > max)  // stableNorm: |[1e300, 0, 0]| is 1e300, not inf
+    field.fail_value("has magnitude " + detail::format_value(value.stableNorm()) + " " + unit +
+                     "; at most " + detail::format_value(max) + " " + unit + " (docs/limits.md)");
+  return value;
+}
+
 Pose read_pose_fields(const YamlField& pose) {
   Pose result;
-  result.position = pose.require("position").vector3();
+  const YamlField position = pose.require("position");
+  result.position = at_most(position, position.vector3(), bounds::kMaxPosition, "m");
   if (const YamlField rotation = pose.get("rotation"); rotation.present()) {
     result.rotation = read_rotation(rotation);
   }
@@ -267,12 +281,22 @@ TipCondition read_tip_condition(const YamlField& tip) {
   }
   const Pose pose = read_pose_fields(tip);
   if (const YamlField released = tip.get("released"); released.present()) {
-    return GraspedTip{pose, read_wrench_axes(released)};
+    const std::array<bool, 6> axes = read_wrench_axes(released);
+    if (std::all_of(axes.begin(), axes.end(), [](bool axis) { return axis; }))
+      released.fail(released.path() +
+                    " releases all six axes: the grasp would hold nothing; a tip held by nothing "
+                    "is a free tip (tip: {wrench: {}})");
+    return GraspedTip{pose, axes};
   }
   return ClampedTip{pose};
 }
 
 // ---- solver -------------------------------------------------------------------------------------
+
+/// solver.tolerance (m, rad, N, N·m) and integration_tolerance (relative) at most: beyond, a
+/// tip a metre or a radian off would be "converged" (.inf, which turns the library's accuracy
+/// check off, is out of range in a task file).
+constexpr double kMaxTolerance = 1.0;
 
 void read_solver_section(const YamlField& solver,
                          ShootingOptions& options,
@@ -284,7 +308,7 @@ void read_solver_section(const YamlField& solver,
     options.max_iterations = field.integer_in(1, ShootingOptions::kMaxIterations);
   }
   if (const YamlField field = solver.get("tolerance"); field.present()) {
-    options.residual_tolerance = field.positive_number();
+    options.residual_tolerance = field.positive_number_at_most(kMaxTolerance);
   }
   if (const YamlField field = solver.get("continuation"); field.present()) {
     options.continuation = field.boolean();
@@ -293,10 +317,12 @@ void read_solver_section(const YamlField& solver,
     options.max_continuation_steps = field.integer_in(1, ShootingOptions::kMaxContinuationSteps);
   }
   if (const YamlField field = solver.get("initial_wrench"); field.present()) {
-    initial_wrench = read_wrench(field);
+    initial_wrench = read_wrench(field);  // the guess: as a wrench, at most kMaxForce
+    at_most(field.get("force"), initial_wrench.force, bounds::kMaxForce, "N");
+    at_most(field.get("moment"), initial_wrench.moment, bounds::kMaxForce, "N*m");
   }
   if (const YamlField field = solver.get("integration_tolerance"); field.present()) {
-    options.integration_tolerance = field.positive_number();
+    options.integration_tolerance = field.positive_number_at_most(kMaxTolerance);
   }
   if (const YamlField field = solver.get("max_substeps"); field.present()) {
     options.max_substeps = field.integer();

@@ -9,6 +9,7 @@
 
 #include "io/did_you_mean.hpp"
 #include "io/yaml_document.hpp"
+#include "validation.hpp"
 
 namespace rodshape::io_detail {
 
@@ -265,6 +266,14 @@ double YamlField::positive_number() const {
   const double value = number();
   if (!(value > 0.0)) fail_value("must be > 0");
   return value;
+}
+
+double YamlField::positive_number_at_most(double max) const {
+  expect_scalar("a number");
+  const std::optional<double> value =
+      node_.Tag() == "!" ? std::nullopt : parse_number(node_.Scalar());
+  if (value && *value > max) fail_value("must be <= " + detail::format_value(max));  // and .inf
+  return positive_number();  // the other failures, as positive_number() says them
 }
 
 int YamlField::integer() const {

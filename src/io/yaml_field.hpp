@@ -80,6 +80,9 @@ class YamlField {
   double number() const;
   /// A finite number > 0.
   double positive_number() const;
+  /// A finite number in (0, max], said as written when not; .inf is beyond max:
+  /// "solver.integration_tolerance = .inf must be <= 1".
+  double positive_number_at_most(double max) const;
   /// A whole number representable as int.
   int integer() const;
   /// A whole number in [min, max], said as written when not: "trajectory.steps = 1e9 must be <=

@@ -29,11 +29,11 @@ std::vector<double> frames_within(double t0, double t1, double rate, bool includ
   return times;
 }
 
-class Driver {
+class ClosedLoopDriver {
  public:
-  Driver(ShapeController controller,
-         Plant& plant,
-         const std::function<sim_detail::SensorView(const PlanProblem&)>& view)
+  ClosedLoopDriver(ShapeController controller,
+                   Plant& plant,
+                   const std::function<sim_detail::SensorView(const PlanProblem&)>& view)
       : controller_(std::move(controller)),
         problem_(controller_.problem()),
         plant_(plant),
@@ -208,8 +208,9 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               Plant& plant,
                               MarkerSensor& sensor) {
   const double length = plant.setup().rod.properties.length;
-  Driver driver(std::move(controller), plant,
-                [&](const PlanProblem&) { return sim_detail::SensorView(sensor, length); });
+  ClosedLoopDriver driver(std::move(controller), plant, [&](const PlanProblem&) {
+    return sim_detail::SensorView(sensor, length);
+  });
   return driver.run(plan);
 }
 
@@ -217,7 +218,7 @@ ClosedLoopRun run_closed_loop(const PlanResult& plan,
                               ShapeController controller,
                               Plant& plant,
                               DepthCamera& camera) {
-  Driver driver(std::move(controller), plant, [&](const PlanProblem& problem) {
+  ClosedLoopDriver driver(std::move(controller), plant, [&](const PlanProblem& problem) {
     return sim_detail::SensorView(camera, problem);
   });
   return driver.run(plan);

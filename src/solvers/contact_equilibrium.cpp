@@ -21,10 +21,12 @@ namespace {
 
 /// One patch of the contact set on one obstacle: a point contact at s = a (reaction Pa), or a
 /// segment [a, b] lying on a plane of the obstacle (normal ν), with point reactions Pa, Pb at
-/// its ends inside the rod.
+/// its ends inside the rod. A point contact at a free tip (at_tip, a = b = L) rests the tip on
+/// the obstacle at an angle: its reaction joins the tip's wrench and only g(L) = 0 is asked.
 struct Patch {
   int obstacle = -1;
   bool point = false;
+  bool at_tip = false;      // a point contact at the free tip
   bool from_clamp = false;  // a = 0: the clamp lies on the plane (it takes the end's reaction)
   bool to_tip = false;      // b = L: the tip lies on it (a held tip takes the end's reaction)
   double a = 0.0, b = 0.0, Pa = 0.0, Pb = 0.0;
@@ -40,6 +42,7 @@ struct Setup {
   const Scene& scene;
   double radius;  // the section's radius when it is not known
   bool free_tip;
+  int* integrations;  // the solve's count of rod integrations
 };
 
 RodPoint node_point(const RodConfiguration& c, int i) {
@@ -95,16 +98,16 @@ double lying_reaction(const ClampedRod& rod, const Patch& p) {
 /// from the clamp, (b, Pb) unless to the tip).
 int unknowns_of(const std::vector<Patch>& patches) {
   int n = 6;
-  for (const Patch& p : patches) n += p.point ? 2 : 2 * p.free_a() + 2 * p.free_b();
+  for (const Patch& p : patches) n += p.at_tip ? 1 : p.point ? 2 : 2 * p.free_a() + 2 * p.free_b();
   return n;
 }
 
-/// The conditions' count: the tip's six, a point's two (g, g'), a segment's four at a free a
-/// (g, g', n·ν and m·(ν × t) after a) or two at the clamp (n·ν, m·(ν × t)). A segment to a held
-/// tip repeats two of the tip's: the system is then solved in least squares.
+/// The conditions' count: the tip's six, a point's two (g, g'; at the tip g), a segment's four at a
+/// free a (g, g', n·ν and m·(ν × t) after a) or two at the clamp (n·ν, m·(ν × t)). A segment to a
+/// held tip repeats two of the tip's: the system is then solved in least squares.
 int conditions_of(const std::vector<Patch>& patches) {
   int n = 6;
-  for (const Patch& p : patches) n += p.point ? 2 : (p.from_clamp ? 2 : 4);
+  for (const Patch& p : patches) n += p.at_tip ? 1 : p.point ? 2 : (p.from_clamp ? 2 : 4);
   return n;
 }
 
@@ -113,7 +116,10 @@ Eigen::VectorXd pack(const BaseWrench& w, const std::vector<Patch>& patches) {
   z << w.force, w.moment, Eigen::VectorXd::Zero(z.size() - 6);
   int k = 6;
   for (const Patch& p : patches) {
-    if (p.point || p.free_a()) z[k++] = p.a, z[k++] = p.Pa;
+    if (p.at_tip)
+      z[k++] = p.Pa;
+    else if (p.point || p.free_a())
+      z[k++] = p.a, z[k++] = p.Pa;
     if (p.free_b()) z[k++] = p.b, z[k++] = p.Pb;
   }
   return z;
@@ -122,7 +128,10 @@ Eigen::VectorXd pack(const BaseWrench& w, const std::vector<Patch>& patches) {
 BaseWrench unpack(const Eigen::VectorXd& z, std::vector<Patch>& patches) {
   int k = 6;
   for (Patch& p : patches) {
-    if (p.point || p.free_a()) p.a = z[k++], p.Pa = z[k++];
+    if (p.at_tip)
+      p.Pa = z[k++];
+    else if (p.point || p.free_a())
+      p.a = z[k++], p.Pa = z[k++];
     if (p.free_b()) p.b = z[k++], p.Pb = z[k++];
     if (p.point) p.b = p.a;
   }
@@ -138,9 +147,16 @@ Eigen::VectorXd scales_of(const ClampedRod& rod,
   Eigen::VectorXd scale(unknowns_of(patches));
   place.assign(static_cast<std::size_t>(scale.size()), false);
   scale.head<6>() = rp.bending_wrench_units();
-  for (int k = 6; k < scale.size(); k += 2) {
-    place[static_cast<std::size_t>(k)] = true;
-    scale[k] = L, scale[k + 1] = EI / (L * L);
+  int k = 6;
+  const auto end = [&](bool with_place) {
+    if (with_place) place[static_cast<std::size_t>(k)] = true, scale[k++] = L;
+    scale[k++] = EI / (L * L);
+  };
+  for (const Patch& p : patches) {
+    if (p.at_tip) end(false);
+    if (p.at_tip) continue;
+    if (p.point || p.free_a()) end(true);
+    if (p.free_b()) end(true);
   }
   return scale;
 }
@@ -149,6 +165,7 @@ Eigen::VectorXd scales_of(const ClampedRod& rod,
 ContactLoads loads_of(const Setup& setup, const std::vector<Patch>& patches) {
   ContactLoads loads;
   for (const Patch& p : patches) {
+    if (p.at_tip) continue;  // in the tip's wrench (tip_with_reactions)
     const Obstacle* o = &setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
     const auto point = [&](double s, double P) {
       PointForce f;
@@ -171,6 +188,7 @@ ContactLoads loads_of(const Setup& setup, const std::vector<Patch>& patches) {
 std::vector<double> probes_of(const std::vector<Patch>& patches) {
   std::vector<double> s;
   for (const Patch& p : patches) {
+    if (p.at_tip) continue;  // read at the last node
     if (p.point || p.free_a()) s.push_back(p.a);
     if (p.free_b()) s.push_back(p.b);
   }
@@ -193,22 +211,41 @@ void on_plane(const RodPoint& x, const Eigen::Vector3d& nu, Eigen::VectorXd& r, 
   r[k++] = x.m.dot(nu.cross(t));  // N·m
 }
 
+/// The tip condition with the reactions of the point contacts at a free tip added to its wrench.
+TipCondition tip_with_reactions(const Setup& setup,
+                                const std::vector<Patch>& patches,
+                                const RodConfiguration& c) {
+  TipCondition tip = setup.tip;
+  for (const Patch& p : patches) {
+    if (!p.at_tip) continue;
+    const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+    std::get<FreeTip>(tip).wrench.force += p.Pa * o.distance(c.p.back()).gradient;
+  }
+  return tip;
+}
+
 Evaluation evaluate(const Setup& setup,
                     const std::vector<Patch>& layout,
                     const Eigen::VectorXd& z) {
   Evaluation e;
   e.patches = layout;
   e.w = unpack(z, e.patches);
+  ++*setup.integrations;
   integrate_with_contact_loads(setup.rod, e.w, loads_of(setup, e.patches), e.configuration,
                                probes_of(e.patches), &e.ends);
   e.r.resize(conditions_of(e.patches));
-  e.r.head<6>() = shooting_residual(setup.tip, e.configuration);
+  e.r.head<6>() =
+      shooting_residual(tip_with_reactions(setup, e.patches, e.configuration), e.configuration);
   const RodProperties& rp = setup.rod.properties;
   const double r = setup.radius;
   int k = 6;
   std::size_t probe = 0;
   for (const Patch& p : e.patches) {
     const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+    if (p.at_tip) {
+      e.r[k++] = contact_gap(o, node_point(e.configuration, e.configuration.nodes() - 1), rp, r);
+      continue;
+    }
     if (p.point) {
       const RodPointPair& x = e.ends[probe++];
       e.r[k++] = contact_gap(o, x.before, rp, r);
@@ -235,44 +272,83 @@ bool ordered(const std::vector<Patch>& patches, double L) {
   return true;
 }
 
-/// Gauss–Newton on the central-difference Jacobian in the scaled unknowns (square, or with more
-/// conditions than unknowns where a segment reaches a held tip), rows equilibrated by the first
-/// Jacobian, with backtracking on the scaled residual; each end moved at most one interval a step.
+/// The Jacobian of the conditions in the scaled unknowns and its row scales, kept from one Newton
+/// solve to the next while the contact set's layout stays (the load's steps) and updated by
+/// Broyden's rank-one formula between central-difference evaluations.
+struct JacobianMemory {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd row_scale;
+  std::vector<Patch> layout;
+
+  bool fits(const std::vector<Patch>& patches) const {
+    if (J.size() == 0 || patches.size() != layout.size()) return false;
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+      const Patch &p = patches[i], &q = layout[i];
+      if (p.obstacle != q.obstacle || p.point != q.point || p.at_tip != q.at_tip ||
+          p.from_clamp != q.from_clamp || p.to_tip != q.to_tip)
+        return false;
+    }
+    return true;
+  }
+};
+
+/// ∂r/∂z · diag(scale) by central differences (2 evaluations a column).
+Eigen::MatrixXd central_jacobian(const Setup& setup,
+                                 const std::vector<Patch>& layout,
+                                 const Eigen::VectorXd& z,
+                                 const Eigen::VectorXd& scale,
+                                 int m) {
+  Eigen::MatrixXd J(m, z.size());
+  for (int j = 0; j < z.size(); ++j) {
+    Eigen::VectorXd plus = z, minus = z;
+    const double dz = 1e-6 * scale[j];
+    plus[j] += dz, minus[j] -= dz;
+    J.col(j) = (evaluate(setup, layout, plus).r - evaluate(setup, layout, minus).r) / (2.0 * dz) *
+               scale[j];
+  }
+  return J;
+}
+
+/// Gauss–Newton in the scaled unknowns (square, or with more conditions than unknowns where a
+/// segment reaches a held tip), rows equilibrated by the first central-difference Jacobian, with
+/// backtracking on the scaled residual; each end moved at most one interval a step. The Jacobian
+/// is `memory`'s when it fits the layout, updated by Broyden's formula J += (Δr - J Δx) Δxᵀ/|Δx|²
+/// after each accepted step; a step it cannot make is retried with a fresh central-difference
+/// Jacobian.
 bool newton(const Setup& setup,
             const std::vector<Patch>& layout,
             Eigen::VectorXd& z,
             Evaluation& at,
             double tolerance,
             int max_iterations,
-            int& iterations) {
+            int& iterations,
+            JacobianMemory& memory) {
   std::vector<bool> place;
   const Eigen::VectorXd scale = scales_of(setup.rod, layout, place);
   const double L = setup.rod.properties.length, h = setup.rod.step();
   const int n = static_cast<int>(z.size());
   at = evaluate(setup, layout, z);
   const int m = static_cast<int>(at.r.size());
-  Eigen::VectorXd row_scale = Eigen::VectorXd::Ones(m);
+  bool fresh = false;
+  const auto refresh = [&] {
+    memory.J = central_jacobian(setup, layout, z, scale, m);
+    memory.row_scale.resize(m);
+    for (int i = 0; i < m; ++i)
+      memory.row_scale[i] = 1.0 / std::max(memory.J.row(i).cwiseAbs().maxCoeff(), 1e-300);
+    memory.layout = layout;
+    fresh = true;
+  };
+  if (!memory.fits(layout) || memory.J.rows() != m || memory.J.cols() != n) refresh();
   for (int it = 0; it < max_iterations; ++it) {
     if (!at.r.allFinite()) return false;
     if (at.r.lpNorm<Eigen::Infinity>() <= tolerance) return true;
-    Eigen::MatrixXd J(m, n);
-    for (int j = 0; j < n; ++j) {
-      Eigen::VectorXd plus = z, minus = z;
-      const double dz = 1e-6 * scale[j];
-      plus[j] += dz, minus[j] -= dz;
-      J.col(j) = (evaluate(setup, layout, plus).r - evaluate(setup, layout, minus).r) / (2.0 * dz) *
-                 scale[j];
-    }
-    if (it == 0)
-      for (int i = 0; i < m; ++i)
-        row_scale[i] = 1.0 / std::max(J.row(i).cwiseAbs().maxCoeff(), 1e-300);
-    const Eigen::VectorXd step =
-        (row_scale.asDiagonal() * J).colPivHouseholderQr().solve(-(row_scale.asDiagonal() * at.r));
+    const auto D = memory.row_scale.asDiagonal();
+    const Eigen::VectorXd step = (D * memory.J).colPivHouseholderQr().solve(-(D * at.r));
     Eigen::VectorXd dz = step.cwiseProduct(scale);
     if (!dz.allFinite()) return false;
     for (int j = 6; j < n; ++j)
       if (place[static_cast<std::size_t>(j)] && std::abs(dz[j]) > h) dz *= h / std::abs(dz[j]);
-    const double merit = (row_scale.asDiagonal() * at.r).squaredNorm();
+    const double merit = (D * at.r).squaredNorm();
     bool accepted = false;
     for (double t = 1.0; t > 1e-4; t *= 0.5) {
       Eigen::VectorXd trial = z + t * dz;
@@ -282,13 +358,18 @@ bool newton(const Setup& setup,
       unpack(trial, check);
       if (!ordered(check, L)) continue;
       Evaluation e = evaluate(setup, layout, trial);
-      if (e.r.allFinite() && (row_scale.asDiagonal() * e.r).squaredNorm() < merit) {
-        z = trial, at = std::move(e), accepted = true;
+      if (e.r.allFinite() && (D * e.r).squaredNorm() < merit) {
+        const Eigen::VectorXd dx = (trial - z).cwiseQuotient(scale);
+        memory.J += (e.r - at.r - memory.J * dx) * dx.transpose() / dx.squaredNorm();
+        z = trial, at = std::move(e), accepted = true, fresh = false;
         break;
       }
     }
     ++iterations;
-    if (!accepted) return at.r.lpNorm<Eigen::Infinity>() <= tolerance;
+    if (!accepted) {
+      if (fresh) return at.r.lpNorm<Eigen::Infinity>() <= tolerance;
+      refresh();
+    }
   }
   return at.r.lpNorm<Eigen::Infinity>() <= tolerance;
 }
@@ -334,11 +415,16 @@ Patch new_patch(const Setup& setup, int j, int i0, int i1, const RodConfiguratio
   // Jacobian is singular there); a quarter of the rod's weight, or 0.1 EI/L² weightless
   const double EI = 0.5 * (setup.rod.properties.K_rot.x() + setup.rod.properties.K_rot.y());
   p.Pa = p.Pb = std::max(0.25 * setup.rod.load.force.norm() * L, 0.1 * EI / (L * L));
+  int deepest = i0;
+  for (int i = i0; i <= i1; ++i)
+    if (node_gap(setup, c, j, i) < node_gap(setup, c, j, deepest)) deepest = i;
+  if (setup.free_tip && deepest == N) {  // the free tip rests on it, at an angle, first
+    p.point = p.at_tip = true;
+    p.a = p.b = L;
+    return p;
+  }
   const std::optional<Eigen::Vector3d> plane = plane_under(setup, j, std::max(i0, 1), i1, c);
   if (!plane) {
-    int deepest = i0;
-    for (int i = i0; i <= i1; ++i)
-      if (node_gap(setup, c, j, i) < node_gap(setup, c, j, deepest)) deepest = i;
     p.point = true;
     p.a = p.b = std::clamp(deepest, 1, N - 1) * h;
     return p;
@@ -378,6 +464,19 @@ bool add_penetrations(const Setup& setup,
   return added;
 }
 
+/// Whether a free tip resting on a plane at an angle has turned to lie on it: the rod rises
+/// towards the tip (g'(L) > 0), so that the nodes behind it would go under.
+bool lays_down(const Setup& setup, const Evaluation& e, Patch& p) {
+  const RodConfiguration& c = e.configuration;
+  const int N = c.nodes() - 1;
+  const std::optional<Eigen::Vector3d> plane = plane_under(setup, p.obstacle, N - 1, N, c);
+  if (!plane) return false;
+  const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
+  if (!(gap_rate(o, node_point(c, N), setup.rod.properties, setup.radius) > 0.0)) return false;
+  p.normal = *plane;
+  return true;
+}
+
 /// One update of the contact set; true when it changed: a reaction that pulls drops its patch (a
 /// segment becomes a point contact at its middle), an end that reaches the clamp or the tip
 /// stays there, and penetrations of the free spans add patches.
@@ -394,9 +493,20 @@ bool update_contact_set(const Setup& setup,
       changed = true;
       continue;
     }
+    if (p.at_tip && lays_down(setup, e, p)) {
+      p.point = p.at_tip = false, p.to_tip = true;
+      p.a = L - setup.rod.step();
+      changed = true;
+    }
     if (!p.point) {
       if (p.free_b() && p.b >= L * (1.0 - 1e-9)) p.to_tip = true, p.b = L, changed = true;
-      if ((p.free_a() && p.Pa < -force_tolerance) || (p.free_b() && p.Pb < -force_tolerance)) {
+      if (setup.free_tip && p.to_tip && p.free_a() && p.Pa < -force_tolerance) {
+        p.point = p.at_tip = true,
+        p.to_tip = false;  // the free tip rises off: it rests at an angle
+        p.a = p.b = L, p.Pa = std::abs(p.Pa);
+        changed = true;
+      } else if ((p.free_a() && p.Pa < -force_tolerance) ||
+                 (p.free_b() && p.Pb < -force_tolerance)) {
         p.point = true, p.from_clamp = p.to_tip = false;
         p.a = p.b = 0.5 * (p.a + p.b), p.Pa = 0.0;
         changed = true;
@@ -420,7 +530,10 @@ std::vector<RodContact> contacts_of(const Setup& setup, const Evaluation& e) {
     c.obstacle = p.obstacle;
     c.s_start = p.a;
     c.s_end = p.b;
-    if (p.point) {
+    if (p.at_tip) {
+      c.start_force = p.Pa;
+      c.force = p.Pa * o.distance(e.configuration.p.back()).gradient;
+    } else if (p.point) {
       c.start_force = p.Pa;
       c.force = p.Pa * o.distance(e.ends[probe++].before.p).gradient;
     } else {
@@ -454,6 +567,7 @@ double integration_error(const Setup& setup, const Evaluation& e) {
   ClampedRod fine = setup.rod;
   fine.substeps *= 2;
   RodConfiguration c;
+  ++*setup.integrations;
   integrate_with_contact_loads(fine, e.w, loads_of(setup, e.patches), c);
   double error = 0.0;
   for (int i = 0; i < c.nodes(); ++i)
@@ -499,12 +613,13 @@ bool settle(const Setup& setup,
             Evaluation& at,
             const ShootingOptions& options,
             const ContactOptions& contact,
-            ContactEquilibriumResult& result) {
+            ContactEquilibriumResult& result,
+            JacobianMemory& memory) {
   for (int pass = 0; pass < contact.max_active_set_iterations; ++pass) {
     ++result.active_set_iterations;
     Eigen::VectorXd z = pack(at.w, patches);
     if (!newton(setup, patches, z, at, options.residual_tolerance, contact.max_newton_iterations,
-                result.newton_iterations))
+                result.newton_iterations, memory))
       return false;
     if (!update_contact_set(setup, at, patches, contact.gap_tolerance)) return true;
   }
@@ -520,16 +635,19 @@ bool follow_load(const Setup& full,
                  const ContactOptions& contact,
                  ContactEquilibriumResult& result) {
   ClampedRod scaled = full.rod;
+  JacobianMemory memory;
   double alpha = 0.0, step = 1.0 / 16.0;
   while (alpha < 1.0) {
     const double next = std::min(1.0, alpha + step);
     scaled.load.force = next * full.rod.load.force;
     scaled.load.moment = next * full.rod.load.moment;
-    const Setup setup{scaled, full.tip, full.scene, full.radius, full.free_tip};
+    const Setup setup{scaled, full.tip, full.scene, full.radius, full.free_tip, full.integrations};
     std::vector<Patch> trial_patches = patches;
     Evaluation trial = at;
-    if (settle(setup, trial_patches, trial, options, contact, result)) {
+    JacobianMemory trial_memory = memory;
+    if (settle(setup, trial_patches, trial, options, contact, result, trial_memory)) {
       alpha = next, patches = std::move(trial_patches), at = std::move(trial);
+      memory = std::move(trial_memory);
       step = std::min(2.0 * step, 0.5);
     } else if ((step *= 0.5) < 1.0 / 1024.0) {
       at = std::move(trial);
@@ -616,7 +734,9 @@ ContactEquilibriumResult solve_contact_equilibrium(const ClampedRod& rod,
     result.shooting = solve_equilibrium(rod, tip, guess, options);
     return result;
   }
-  const Setup setup{rod, tip, scene, scene.rod_radius, std::holds_alternative<FreeTip>(tip)};
+  int integrations = 0;
+  const Setup setup{
+      rod, tip, scene, scene.rod_radius, std::holds_alternative<FreeTip>(tip), &integrations};
   check_held_poses(setup);
   std::vector<Patch> patches;
   Evaluation at;
@@ -641,6 +761,8 @@ ContactEquilibriumResult solve_contact_equilibrium(const ClampedRod& rod,
     return result;
   }
   report(setup, at, followed, options, result);
+  summary.integrations = start.summary.integrations + integrations;
+  summary.jacobian_evaluations = start.summary.jacobian_evaluations;
   return result;
 }
 

@@ -72,7 +72,7 @@ double node_deviation(const RodConfiguration& a, const RodConfiguration& b) {
 namespace {
 
 /// Adds the work counts of one substep's solve to `total`.
-void add_counts(ShootingSummary& total, const ShootingSummary& part) {
+void add_substep_counts(ShootingSummary& total, const ShootingSummary& part) {
   total.iterations += part.iterations;
   total.chord_steps += part.chord_steps;
   total.integrations += part.integrations;
@@ -194,7 +194,7 @@ void follow_fixed(const ClampedRod& rod,
     predict(rod, path, sigma, result, secant);
     ShootingResult solved =
         solve_at(rod, path, sigma, guess, options.shooting, derivatives, carry ? &secant : nullptr);
-    add_counts(result.total, solved.summary);
+    add_substep_counts(result.total, solved.summary);
     if (!solved.summary.converged()) {
       result.event = FollowEvent::Lost;
       result.event_sigma = sigma;
@@ -227,7 +227,7 @@ void follow_adaptive(const ClampedRod& rod,
     ShootingResult solved =
         solve_at(rod, path, t_next, carried(path, t, t_next, Wrench::from_vector(w_step)),
                  options.shooting, derivatives);
-    add_counts(result.total, solved.summary);
+    add_substep_counts(result.total, solved.summary);
     if (solved.summary.converged()) {
       w_previous = w_solved;
       w_solved = solved.base_wrench.to_vector();

@@ -63,8 +63,20 @@ void validate_tip(const TipCondition& tip) {
                    require_magnitude_at_most("FreeTip.wrench.moment", t.wrench.moment,
                                              bounds::kMaxForce, "N*m");
                  },
-                 [](const ClampedTip& t) { detail::require_pose("ClampedTip.pose", t.pose); },
-                 [](const GraspedTip& t) { detail::require_pose("GraspedTip.pose", t.pose); },
+                 [](const ClampedTip& t) {
+                   detail::require_pose("ClampedTip.pose", t.pose);
+                   require_magnitude_at_most("ClampedTip.pose.position", t.pose.position,
+                                             bounds::kMaxPosition, "m");
+                 },
+                 [](const GraspedTip& t) {
+                   detail::require_pose("GraspedTip.pose", t.pose);
+                   require_magnitude_at_most("GraspedTip.pose.position", t.pose.position,
+                                             bounds::kMaxPosition, "m");
+                   if (std::all_of(t.released.begin(), t.released.end(), [](bool r) { return r; }))
+                     throw InputError("GraspedTip.released",
+                                      " releases all six axes: the grasp would hold nothing; a "
+                                      "tip held by nothing is a free tip (FreeTip)");
+                 },
              },
              tip);
 }
@@ -707,8 +719,8 @@ ShootingResult detail::solve_equilibrium(const ClampedRod& rod,
   validate_tip(tip);
   options.validate();
   check_solve_cost(rod, options);
-  detail::require_finite("guess.force", guess.force);
-  detail::require_finite("guess.moment", guess.moment);
+  require_magnitude_at_most("guess.force", guess.force, bounds::kMaxForce, "N");
+  require_magnitude_at_most("guess.moment", guess.moment, bounds::kMaxForce, "N*m");
 
   ShootingResult solution;
   ShootingSummary& summary = solution.summary;

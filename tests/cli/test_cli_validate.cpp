@@ -164,6 +164,37 @@ TEST_F(CliValidate, JobsOutsideItsRangeIsBadInput) {
   }
 }
 
+TEST_F(CliValidate, ABadRunsJobsOrMaxSecondsIsOneLineNamingTheOptionAndNothingRuns) {
+  // Issue 43: --max-seconds nan or inf was taken (no time bound at all), 1e400 and --runs 1e3 got
+  // CLI11's own messages.
+  const std::string runs = "must be a whole number in [1, 1000]";
+  const std::string seconds = "must be a number in (0, 1000000]";
+  const std::pair<const char*, std::string> cases[] = {
+      {" --runs -1", "error: --runs = -1 " + runs},
+      {" --runs 0", "error: --runs = 0 " + runs},
+      {" --runs 1.5", "error: --runs = 1.5 " + runs},
+      {" --runs 1e3", "error: --runs = 1e3 " + runs},
+      {" --runs +2", "error: --runs = +2 " + runs},
+      {" --runs nan", "error: --runs = nan " + runs},
+      {" --runs 99999999999999999999", "error: --runs = 99999999999999999999 " + runs},
+      {" --jobs -2", "error: --jobs = -2 must be a whole number in [1, 256]"},
+      {" --max-seconds -5", "error: --max-seconds = -5 " + seconds},
+      {" --max-seconds 0", "error: --max-seconds = 0 " + seconds},
+      {" --max-seconds nan", "error: --max-seconds = nan " + seconds},
+      {" --max-seconds inf", "error: --max-seconds = inf " + seconds},
+      {" --max-seconds 1e400", "error: --max-seconds = 1e400 " + seconds},
+      {" --max-seconds 1e300", "error: --max-seconds = 1e300 " + seconds},
+      {" --max-seconds ten", "error: --max-seconds = ten " + seconds},
+  };
+  for (const auto& [arguments, message] : cases) {
+    SCOPED_TRACE(arguments);
+    const Outcome result = validate(kTask, arguments);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.err, message + "\n");
+    EXPECT_FALSE(fs::exists(outdir()));
+  }
+}
+
 TEST_F(CliValidate, BadPlantSensorOrLoopIsOneLineNamingTheFieldAndNothingIsWritten) {
   const std::pair<const char*, const char*> cases[] = {
       {"plant: {stiffnes_scale: 0.85}\n", "plant.stiffnes_scale: unknown key"},

@@ -307,5 +307,25 @@ TEST(Scene, BadObstaclesNameTheirField) {
             "Scene.obstacles has 1001 entries; at most 1000");
 }
 
+// Issue 43: a half-space's normal is normalised; |n|² of 1e300 overflowed (every distance read 0)
+// and 1e-300 was said to be zero.
+TEST(Scene, AHalfSpaceNormalOfHugeOrTinyMagnitudeIsRefused) {
+  using rodshape::testing::input_error_message;
+  rodshape::Scene scene;
+  scene.obstacles = {{"", SphereObstacle{{0.0, 0.0, 0.0}, 0.1}},
+                     {"", HalfSpaceObstacle{{0.0, 0.0, -1e300}, 0.0}}};
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles[1].normal has magnitude 1e+300; it must be in [1e-06, 1e+06] (it is "
+            "normalised; docs/task-file.md)");
+  scene.obstacles[1] = {"", HalfSpaceObstacle{{1e-300, 0.0, 0.0}, 0.0}};
+  EXPECT_EQ(input_error_message([&] { scene.validate(); }),
+            "Scene.obstacles[1].normal has magnitude 1e-300; it must be in [1e-06, 1e+06] (it is "
+            "normalised; docs/task-file.md)");
+  for (const double norm : {1e-6, 1e6}) {
+    scene.obstacles[1] = {"", HalfSpaceObstacle{{0.0, 0.0, -norm}, 0.0}};
+    EXPECT_EQ(input_error_message([&] { scene.validate(); }), "") << norm;
+  }
+}
+
 }  // namespace
 }  // namespace test_obstacle

@@ -97,6 +97,19 @@ TEST(CloudReader, CsvWithOrWithoutAHeader) {
   expect_points(parse_cloud("0.5,-0.25,1\n0.125,0,0.75\n-1.5,2,3.25\n", CloudFormat::Csv, "b.csv"));
 }
 
+// A CSV is written by a script, not a camera: a NaN or infinity there is a mistake, refused with
+// the line and field (PLY and PCD skip such points: a camera's invalid pixels).
+TEST(CloudReader, CsvRefusesNaNAndInfinityNamingTheLine) {
+  EXPECT_EQ(error_of("x,y,z\n1,2,3\n1,nan,3\n", CloudFormat::Csv),
+            "cloud.x: line 3: field 2 (y) is nan, not a finite number");
+  EXPECT_EQ(error_of("1,2,-inf\n", CloudFormat::Csv),
+            "cloud.x: line 1: field 3 (z) is -inf, not a finite number");
+  EXPECT_EQ(error_of("NaN,NaN,NaN\n1,2,3\n", CloudFormat::Csv),
+            "cloud.x: line 1: field 1 (x) is NaN, not a finite number");
+  EXPECT_EQ(error_of("1, +INF ,3\n", CloudFormat::Csv),
+            "cloud.x: line 1: field 2 (y) is +INF, not a finite number");
+}
+
 TEST(CloudReader, BrokenFilesSayWhatIsWrongAndWhere) {
   struct Case {
     std::string bytes;

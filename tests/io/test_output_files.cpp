@@ -2,7 +2,7 @@
 // their signature (the JSON's first member, the CSV's header, the SVG's comment); an output that
 // is an input of the run is bad input; a file in the way that is not rodshape's is named and left
 // alone; only rodshape's files are removed; a link (dangling or not) or a FIFO at an output is
-// refused (issue 43).
+// refused, and so is an output directory that is a link (issue 43).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -130,6 +130,38 @@ TEST(OutputFiles, ALinkOrAFifoAtAnOutputIsRefusedNamedAndLeftAlone) {
   ASSERT_EQ(::mkfifo((d / "validation.csv").c_str(), 0600), 0);
   EXPECT_EQ(message(validation_file_names()), refusal(d / "validation.csv", "a FIFO"));
   EXPECT_TRUE(fs::is_fifo(fs::symlink_status(d / "validation.csv")));
+  fs::remove_all(d.parent_path());
+}
+
+TEST(OutputFiles, AnOutputDirectoryThatIsALinkIsRefusedAndNothingWritten) {
+  // Issue 43: `-o LINK` wrote through the link into the directory it names (another run's).
+  const fs::path d = fresh_directory("directory_link"), other = fresh_directory("linked_run");
+  const fs::path link = d / "out";
+  fs::create_symlink(other, link);
+  const std::string refusal =
+      link.string() +
+      ": cannot write into it: the output directory is a symbolic link; outputs are never written "
+      "through a symbolic link (docs/limits.md): give the directory it names or another output "
+      "directory";
+  for (const std::string& given : {link.string(), link.string() + "/"}) {
+    EXPECT_EQ(testing::input_error_message([&] { check_output_directory(given); }), refusal);
+    OutputSet set;
+    set.files.emplace_back("plan.json", "{}\n");
+    EXPECT_EQ(testing::input_error_message([&] { write_output_set(given, set); }), refusal);
+  }
+  EXPECT_TRUE(fs::is_empty(other)) << "written through the link";
+  // Dangling: the directory it names was created and written.
+  fs::remove(link);
+  fs::create_symlink(d / "nowhere", link);
+  OutputSet set;
+  set.files.emplace_back("plan.json", "{}\n");
+  EXPECT_EQ(testing::input_error_message([&] { write_output_set(link.string(), set); }), refusal);
+  EXPECT_FALSE(fs::exists(d / "nowhere"));
+  // A link above the directory is followed.
+  fs::create_symlink(other, d / "above");
+  EXPECT_EQ(write_output_set((d / "above" / "run").string(), set),
+            std::vector<std::string>{"plan.json"});
+  EXPECT_TRUE(fs::is_regular_file(other / "run" / "plan.json"));
   fs::remove_all(d.parent_path());
 }
 

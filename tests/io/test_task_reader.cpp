@@ -272,6 +272,53 @@ TEST(TaskReader, BadSolverOptionsAreNamed) {
             "task.yaml:9: solver.continuation = maybe must be true or false");
 }
 
+// Issue 43: a grasp that releases all six axes holds nothing (it was solved as a free tip).
+TEST(TaskReader, ATipThatReleasesAllSixAxesIsRefusedNamingTheField) {
+  EXPECT_EQ(error_of(kBandTask + "  released: [fx, fy, fz, mx, my, mz]\n"),
+            "task.yaml:9: tip.released releases all six axes: the grasp would hold nothing; a tip "
+            "held by nothing is a free tip (tip: {wrench: {}})");
+  EXPECT_EQ(error_of(kBandTask + "  released: [fx, fy, fz, mx, my]\n"), "");
+}
+
+// Issue 43: solver.integration_tolerance: .inf was documented to turn the accuracy check off; a
+// tolerance beyond 1 (a tip a metre off, an error of the rod's length) would pass anything.
+TEST(TaskReader, ToleranceOfInfinityOrBeyondOneIsOutOfRange) {
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: .inf}\n"),
+            "task.yaml:9: solver.integration_tolerance = .inf must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: 2}\n"),
+            "task.yaml:9: solver.integration_tolerance = 2 must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: .nan}\n"),
+            "task.yaml:9: solver.integration_tolerance = .nan is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {integration_tolerance: -.inf}\n"),
+            "task.yaml:9: solver.integration_tolerance = -.inf is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: 1e300}\n"),
+            "task.yaml:9: solver.tolerance = 1e300 must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: .inf}\n"),
+            "task.yaml:9: solver.tolerance = .inf must be <= 1");
+  EXPECT_EQ(error_of(kBandTask + "solver: {tolerance: 1, integration_tolerance: 1}\n"), "");
+}
+
+// Issue 43: a position's bound, |p| <= 1e4 m (docs/limits.md), for every pose of a task file.
+TEST(TaskReader, APositionBeyondTenKilometresIsRefusedNamingTheField) {
+  EXPECT_EQ(error_of(band_with("[0.12, 0.0, 0.22]", "[1e300, 0.0, 0.22]")),
+            "task.yaml:7: tip.position has magnitude 1e+300 m; at most 10000 m (docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "base: {position: [0, -2e4, 0]}\n"),
+            "task.yaml:9: base.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+}
+
+// Issue 43: the guess of an equilibrium's base wrench, bounded as a wrench and named as written.
+TEST(TaskReader, AnInitialWrenchBeyondItsBoundNamesTheField) {
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {force: [0, 1e300, 0]}}\n"),
+            "task.yaml:9: solver.initial_wrench.force has magnitude 1e+300 N; at most 1e+20 N "
+            "(docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "solver:\n  initial_wrench:\n    moment: [0, 0, -3e20]\n"),
+            "task.yaml:11: solver.initial_wrench.moment has magnitude 3e+20 N*m; at most 1e+20 "
+            "N*m (docs/limits.md)");
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {moment: [0, .nan, 0]}}\n"),
+            "task.yaml:9: solver.initial_wrench.moment[1] = .nan is not a finite number");
+  EXPECT_EQ(error_of(kBandTask + "solver: {initial_wrench: {force: [0, 0, 1e20]}}\n"), "");
+}
+
 TEST(TaskReader, MalformedYamlGivesTheLine) {
   const std::string message = error_of(band_with("height: 0.02}", "height: 0.02"));
   EXPECT_TRUE(StartsWith(message, "task.yaml:"));

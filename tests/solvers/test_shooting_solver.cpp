@@ -558,6 +558,38 @@ TEST(ShootingSolverInput, NanInTipPoseIsAnInputErrorNamingTheField) {
   EXPECT_NE(moment.find("FreeTip.wrench.moment"), std::string::npos) << moment;
 }
 
+// Issue 43: a grasp releasing all six axes holds nothing (it was solved as a free tip).
+TEST(ShootingSolverInput, AGraspReleasingAllSixAxesHoldsNothingAndIsRefused) {
+  GraspedTip grasp;
+  grasp.pose.position = Eigen::Vector3d(0.0, 0.0, 0.29);
+  grasp.released.fill(true);
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(testing::rubber_band(), grasp); }),
+            "GraspedTip.released releases all six axes: the grasp would hold nothing; a tip held "
+            "by nothing is a free tip (FreeTip)");
+}
+
+// Issue 43: a held tip's position has the bound of every position, |p| <= 1e4 m.
+TEST(ShootingSolverInput, AHeldTipBeyondThePositionBoundIsRefused) {
+  const ClampedRod rod = testing::rubber_band();
+  GraspedTip grasp;
+  grasp.pose.position = Eigen::Vector3d(2e4, 0.0, 0.29);
+  grasp.released[3] = true;
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(rod, grasp); }),
+            "GraspedTip.pose.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+  const ClampedTip clamped{grasp.pose};
+  EXPECT_EQ(input_error_message([&] { solve_equilibrium(rod, clamped); }),
+            "ClampedTip.pose.position has magnitude 20000 m; at most 10000 m (docs/limits.md)");
+}
+
+// Issue 43: the guess has the bound of a wrench (1e20 N, N·m), not only finiteness.
+TEST(ShootingSolverInput, AGuessBeyondTheForceBoundIsRefused) {
+  BaseWrench guess;
+  guess.moment.z() = 1e300;
+  EXPECT_EQ(
+      input_error_message([&] { solve_equilibrium(testing::rubber_band(), FreeTip{}, guess); }),
+      "guess.moment has magnitude 1e+300 N*m; at most 1e+20 N*m (docs/limits.md)");
+}
+
 TEST(ShootingSolverInput, NanInTheGuessIsAnInputErrorNamingTheField) {
   const ClampedRod rod = testing::rubber_band();
   BaseWrench guess;

@@ -61,11 +61,17 @@ struct Obstacle {
   /// The name, the kind and the shape's fields, as io's JSON and the figures write them.
   ObstacleDescription describe() const;
   /// Throws InputError naming `field` (e.g. "Scene.obstacles[2]") and the member: sizes and radii
-  /// finite and > 0 (at most kMaxSize), positions finite, a rotation, a non-zero normal.
+  /// finite and > 0 (at most kMaxSize), positions finite, a rotation, a normal of magnitude in
+  /// [kMinNormal, kMaxNormal].
   void validate(const std::string& field) const;
 
   /// The largest size or distance an obstacle may have (docs/limits.md): a cell is metres across.
   static constexpr double kMaxSize = 1e3;
+  /// A half-space's normal is normalised where it is used; its magnitude stays within these so
+  /// that n/|n| and offset/|n| are exact to round-off (|n|² of 1e300 overflowed: every distance
+  /// read 0, and 1e-300 underflowed to a "zero" normal).
+  static constexpr double kMinNormal = 1e-6;
+  static constexpr double kMaxNormal = 1e6;
 };
 
 /// The obstacle given in frame b, in frame a (same name): every point x_b maps to p + R x_b.

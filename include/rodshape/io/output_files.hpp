@@ -53,7 +53,8 @@ struct OutputSet {
   void append(OutputSet other);
 };
 
-/// Creates `directory` (and its parents) if missing, writes set.files into it as one set
+/// Refuses a `directory` that is a symbolic link or not a directory (check_output_directory(),
+/// plan_output.hpp), creates it (and its parents) if missing, writes set.files into it as one set
 /// (write_files_atomically(): every path checked before any is written, all written to
 /// temporaries, then renamed; a refused path or a failed write changes nothing), then removes the
 /// earlier run's files among set.stale (remove_earlier_outputs()). Returns the names written, in

@@ -76,8 +76,10 @@ struct FigureFiles {
   std::optional<McapOptions> mcap = std::nullopt;  // (initialised: {.html = h} stays warning-free)
 };
 
-/// InputError when `directory` exists but is not a directory (to check before planning, which may
-/// take a while).
+/// InputError when `directory` exists but is not a directory, or is a symbolic link, dangling or
+/// not (issue 43: followed, a link into another run's directory rewrote that run's files; links
+/// above it are followed). To check before planning, which may take a while; write_output_set()
+/// checks it again.
 void check_output_directory(const std::string& directory);
 
 /// The files write_plan() may write, in its order: plan.json, trajectory.csv, plan.svg,

@@ -12,7 +12,9 @@
 //    touch-down a, g = 0 and g' = 0 before it and the two plane conditions after it; at a lift-off
 //    b, nothing more (its s and P are fixed by the rest); at the clamp the two plane conditions on
 //    the base wrench; a segment to a held tip repeats two of the tip's conditions (least squares).
-//  * a point contact s_c on any shape: P ν with g = 0 and the mean of g'(s⁻), g'(s⁺) zero.
+//  * a point contact s_c on any shape: P ν with g = 0 and the mean of g'(s⁻), g'(s⁺) zero; at a
+//    free tip (the tip resting on the obstacle at an angle), P ν joins the tip's wrench and only
+//    g(L) = 0 is asked; it becomes a segment to the tip when the rod rises towards the tip.
 // This is the Kirchhoff rod's contact: its reaction is concentrated at a lift-off (a shearable
 // rod's line reaction peaks there in a layer of length √(EI/GA) instead; the two differ in the
 // lying length by about that, and a Cosserat rod dips into the surface behind a point force by
@@ -21,10 +23,10 @@
 // run becomes a point contact, and further penetrations further ones (docs/limits.md).
 //
 // The unknowns (the base wrench, each end's s and P) solve those conditions and the tip condition
-// by Gauss–Newton on a central-difference Jacobian; the contact set is then updated (a pulling
-// reaction drops its patch or turns a segment into a point, a penetration of the free span adds
-// one) until it is consistent. The load is applied in steps from the weightless rod's free
-// equilibrium, the contact set followed from step to step.
+// by Gauss–Newton on a central-difference Jacobian kept up to date by Broyden's updates; the
+// contact set is then updated (a pulling reaction drops its patch or turns a segment into a point,
+// a penetration of the free span adds one) until it is consistent. The load is applied in steps
+// from the weightless rod's free equilibrium, the contact set followed from step to step.
 #pragma once
 
 #include <string>

@@ -22,7 +22,8 @@ struct ClampedTip {
 /// Partial grasp: the tip pose is held except along `released` axes of the grasp frame R_d, which
 /// carry no wrench. Order: force x, y, z (translation free, n(L)·R_d e_i = 0), then moment x, y, z
 /// (rotation free, m(L)·R_d e_i = 0). Releasing moment x only is the paper's "m_x = 0" grasp: the
-/// tip may turn about the grasp's x axis, which stays aligned with R_d e_x.
+/// tip may turn about the grasp's x axis, which stays aligned with R_d e_x. Releasing all six is
+/// bad input (it holds nothing: that is a FreeTip).
 struct GraspedTip {
   Pose pose;
   std::array<bool, 6> released{};
