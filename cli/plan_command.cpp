@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exit_code.hpp"
+#include "mcap_option.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
@@ -74,6 +75,7 @@ class PlanCommand final : public Command {
     command->add_flag("-q,--quiet", quiet_, "Do not print the one-line summary on standard output");
     command->add_flag("--no-html", no_html_,
                       "Do not write plan.html (the 3D page, which inlines Debian's libjs-three)");
+    mcap_.add_to(command, "plan.mcap");
     return command;
   }
 
@@ -94,7 +96,7 @@ class PlanCommand final : public Command {
     if (result.status == PlanStatus::Infeasible) throw task.infeasible_target(result);
     warn_without_html(no_html_);
     const std::vector<std::string> written =
-        write_plan(output_directory_, result, task, {.html = !no_html_});
+        write_plan(output_directory_, result, task, {.html = !no_html_, .mcap = mcap_.options()});
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief()) << "; wrote";
       for (const std::string& name : written)
@@ -109,6 +111,7 @@ class PlanCommand final : public Command {
   std::string output_directory_;
   bool quiet_ = false;
   bool no_html_ = false;
+  McapOption mcap_;
 };
 
 }  // namespace

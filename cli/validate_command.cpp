@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exit_code.hpp"
+#include "mcap_option.hpp"
 #include "number_option.hpp"
 #include "progress_line.hpp"
 #include "rodshape/io/field_names.hpp"
@@ -188,6 +189,7 @@ class ValidateCommand final : public Command {
                       "standard error (drawn only when it is a terminal)");
     command->add_flag("--no-html", no_html_,
                       "Do not write plan.html and validation.html (the 3D pages)");
+    mcap_.add_to(command, "validation.mcap");
     command->footer(
         "Exit codes: 0 the plant followed the whole path; 2 bad input (task file, command line, "
         "output path, an infeasible target): nothing written or removed; 3 the plant snapped, was "
@@ -262,7 +264,8 @@ class ValidateCommand final : public Command {
     warn_without_html(no_html_);
     // The plan's files and the validation's as one set: all checked, all written, then renamed.
     OutputSet set = plan_outputs(plan, task, {.html = !no_html_});
-    set.append(validation_outputs(result, plan, task, {.html = !no_html_}));
+    set.append(
+        validation_outputs(result, plan, task, {.html = !no_html_, .mcap = mcap_.options()}));
     const std::vector<std::string> written = write_output_set(output_directory_, std::move(set));
     if (!quiet_) {
       std::cout << task_path_ << ": " << fields_in_task_names(result.brief()) << "; wrote";
@@ -285,6 +288,7 @@ class ValidateCommand final : public Command {
   std::string max_seconds_text_;   // "": kMaxEstimatedPlanSeconds
   bool quiet_ = false;
   bool no_html_ = false;
+  McapOption mcap_;
 };
 
 }  // namespace

@@ -20,6 +20,7 @@ packages=(
   python3-numpy python3-pytest python3-matplotlib  # its arrays, tests and figures
   python3-distributed      # docs/batch.md: many tasks on a Dask cluster (its test)
   libnanoflann-dev         # feedback/: nearest points of a cloud to the model rod (k-d tree)
+  libzstd-dev              # plan.mcap's compressed chunks (io/mcap_writer)
   libjs-three              # plan.html, validation.html: three.js, inlined when a page is written
   chromium chromium-driver python3-selenium  # the pages' test in a real browser (.ci/run, 3b)
   "$@"

@@ -13,6 +13,7 @@
 #include "rodshape/io/estimate_task.hpp"
 #include "rodshape/io/field_names.hpp"
 #include "rodshape/io/output_files.hpp"
+#include "rodshape/io/plan_mcap.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/io/result_json.hpp"
 #include "rodshape/io/task_reader.hpp"
@@ -39,6 +40,13 @@ struct Plan {
   PlanTask task;
   std::string to_json() const { return plan_result_json(result, task); }
 };
+
+/// McapOptions of `compression` ("zstd", "none"); InputError naming it for another.
+McapOptions mcap_options(const std::string& compression) {
+  const std::optional<McapCompression> value = value_of(kMcapCompressionNames, compression);
+  if (!value) throw InputError("compression", " = '" + compression + "': expected zstd or none");
+  return {.compression = *value};
+}
 
 /// An estimate task's result: what `rodshape estimate` computes and writes.
 struct Estimate {
@@ -253,7 +261,17 @@ void bind_outcomes(py::module_& m) {
           },
           py::arg("directory"), py::arg("html") = true,
           "Writes the files `rodshape plan` writes (plan.html unless html=False, and when three.js "
-          "is installed: rodshape.html_unavailable()); returns their names.");
+          "is installed: rodshape.html_unavailable()); returns their names.")
+      .def(
+          "write_mcap",
+          [](const Plan& p, const std::string& path, const std::string& compression) {
+            check_not_an_input(path, p.task.input_files);
+            write_file_atomically(path,
+                                  plan_mcap(p.result, p.task.problem, mcap_options(compression)));
+          },
+          py::arg("path"), py::arg("compression") = "zstd",
+          "Writes plan.mcap (ROS 2 messages, docs/ros.md) to `path`, whole or not at all, never "
+          "through a symbolic link; compression 'zstd' or 'none'.");
   py::class_<Validation>(m, "Validation", "What `rodshape validate` computes for a task.")
       .def_readonly("plan", &Validation::plan)
       .def_property_readonly("status",

@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string_view>
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/atomic_file.hpp"
+#include "rodshape/io/mcap_writer.hpp"
 #include "rodshape/io/plan_output.hpp"
 #include "rodshape/version.hpp"
 
@@ -48,6 +50,25 @@ bool has_json_signature(std::string_view text) {
          consume(text, ":") && consume(text, "\"rodshape");
 }
 
+/// An MCAP file (mcap_writer.hpp) whose Header record's library is "rodshape ...": magic, opcode
+/// 0x01, uint64 length, the profile and the library as uint32-length strings.
+bool has_mcap_signature(std::string_view text) {
+  if (!text.starts_with(kMcapMagic)) return false;
+  text.remove_prefix(kMcapMagic.size());
+  if (text.size() < 13 || text[0] != '\x01') return false;
+  text.remove_prefix(9);
+  for (int field = 0; field < 2; ++field) {
+    if (text.size() < 4) return false;
+    std::uint32_t size = 0;
+    for (int k = 3; k >= 0; --k) size = size << 8 | static_cast<unsigned char>(text[k]);
+    text.remove_prefix(4);
+    if (text.size() < size) return false;
+    if (field == 1) return text.substr(0, size).starts_with("rodshape ");
+    text.remove_prefix(size);
+  }
+  return false;
+}
+
 std::string_view first_line(std::string_view text) { return text.substr(0, text.find('\n')); }
 
 /// "t,<name>,<name>...": joint names of letters, digits, '_', '-', '/' and '.'.
@@ -71,6 +92,7 @@ bool is_rodshape_output(const std::string& path) {
   const std::string name = fs::path(path).filename().string();
   const std::string extension = fs::path(path).extension().string();
   if (extension == ".json") return has_json_signature(head);
+  if (extension == ".mcap") return has_mcap_signature(head);
   if (extension == ".svg" || extension == ".html")
     return head.find("<!-- generator: rodshape") != std::string::npos;
   const std::string_view header = first_line(head);

@@ -6,6 +6,7 @@
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/output_files.hpp"
+#include "rodshape/io/plan_mcap.hpp"
 #include "rodshape/io/plan_output.hpp"
 
 namespace rodshape {
@@ -18,7 +19,8 @@ const std::vector<std::string>& plan_file_names() {
                                                  "joint_trajectory.csv",
                                                  "joint_trajectory.json",
                                                  "base_joint_trajectory.csv",
-                                                 "base_joint_trajectory.json"};
+                                                 "base_joint_trajectory.json",
+                                                 "plan.mcap"};
   return names;
 }
 
@@ -85,6 +87,10 @@ OutputSet plan_outputs(const PlanResult& plan, const PlanTask& task, const Figur
     stale("base_joint_trajectory.csv");
     stale("base_joint_trajectory.json");
   }
+  if (figures.mcap && !plan.end_effector_path.empty())  // a plan without a path has nothing to play
+    add("plan.mcap", plan_mcap(plan, task.problem, *figures.mcap));
+  else
+    stale("plan.mcap");
   return set;
 }
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "rodshape/io/output_files.hpp"
+#include "rodshape/io/plan_mcap.hpp"
 #include "rodshape/io/validation_output.hpp"
 
 namespace rodshape {
@@ -22,8 +23,8 @@ std::string validation_csv(const ValidationResult& result) {
 }
 
 const std::vector<std::string>& validation_file_names() {
-  static const std::vector<std::string> names = {"validation.json", "validation.csv",
-                                                 "validation.svg", "validation.html"};
+  static const std::vector<std::string> names = {
+      "validation.json", "validation.csv", "validation.svg", "validation.html", "validation.mcap"};
   return names;
 }
 
@@ -41,6 +42,11 @@ OutputSet validation_outputs(const ValidationResult& result,
                                                               figure_caption(task), *library));
   else
     set.stale.emplace_back("validation.html");
+  if (figures.mcap)
+    set.files.emplace_back("validation.mcap",
+                           validation_mcap(result, plan, task.problem, *figures.mcap));
+  else
+    set.stale.emplace_back("validation.mcap");
   return set;
 }
 

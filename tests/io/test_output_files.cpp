@@ -168,7 +168,7 @@ TEST(OutputFiles, AnOutputDirectoryThatIsALinkIsRefusedAndNothingWritten) {
 TEST(OutputFiles, ValidationNamesItsFiles) {
   EXPECT_EQ(validation_file_names(),
             (std::vector<std::string>{"validation.json", "validation.csv", "validation.svg",
-                                      "validation.html"}));
+                                      "validation.html", "validation.mcap"}));
 }
 
 }  // namespace

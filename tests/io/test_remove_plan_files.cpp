@@ -69,7 +69,8 @@ TEST(RemovePlanFiles, NamesTheFilesWritePlanWrites) {
   EXPECT_EQ(plan_file_names(),
             (std::vector<std::string>{"plan.json", "trajectory.csv", "plan.svg", "plan.html",
                                       "joint_trajectory.csv", "joint_trajectory.json",
-                                      "base_joint_trajectory.csv", "base_joint_trajectory.json"}));
+                                      "base_joint_trajectory.csv", "base_joint_trajectory.json",
+                                      "plan.mcap"}));
 }
 
 }  // namespace

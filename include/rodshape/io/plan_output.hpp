@@ -7,10 +7,12 @@
 // docs/figures.md.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "rodshape/figures/figures.hpp"
+#include "rodshape/io/mcap_writer.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_task.hpp"
 #include "rodshape/trajectory/end_effector_path.hpp"
@@ -70,6 +72,8 @@ std::string plan_svg(const PlanResult& plan, const PlanTask& task);
 /// warn: the SVG figures are written as ever.
 struct FigureFiles {
   bool html = true;
+  /// plan.mcap, validation.mcap (`--mcap`; plan_mcap.hpp, docs/ros.md): written when set.
+  std::optional<McapOptions> mcap = std::nullopt;  // (initialised: {.html = h} stays warning-free)
 };
 
 /// InputError when `directory` exists but is not a directory, or is a symbolic link, dangling or
@@ -80,7 +84,7 @@ void check_output_directory(const std::string& directory);
 
 /// The files write_plan() may write, in its order: plan.json, trajectory.csv, plan.svg,
 /// plan.html, joint_trajectory.csv, joint_trajectory.json, base_joint_trajectory.csv,
-/// base_joint_trajectory.json.
+/// base_joint_trajectory.json, plan.mcap.
 const std::vector<std::string>& plan_file_names();
 
 /// Removes the plan files (plan_file_names()) of an earlier run from `directory`: those that are
@@ -94,7 +98,8 @@ void remove_plan_files(const std::string& directory);
 /// infeasible, trajectory.csv, plan.svg and (figures.html, three.js found) plan.html; with a
 /// complete joint trajectory, joint_trajectory.csv and joint_trajectory.json; with a base arm's
 /// complete joint trajectory, base_joint_trajectory.csv and base_joint_trajectory.json (same
-/// forms). The others of plan_file_names() are stale: an earlier run's would not match plan.json.
+/// forms); with figures.mcap and an end-effector path, plan.mcap. The others of plan_file_names()
+/// are stale: an earlier run's would not match plan.json.
 OutputSet plan_outputs(const PlanResult& plan,
                        const PlanTask& task,
                        const FigureFiles& figures = {});

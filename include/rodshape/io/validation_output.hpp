@@ -30,10 +30,11 @@ std::string validation_json(const ValidationResult& result,
 std::string validation_csv(const ValidationResult& result);
 // validation_svg() and validation_html(): rodshape/figures/figures.hpp.
 /// The files write_validation() may write: validation.json, validation.csv, validation.svg,
-/// validation.html.
+/// validation.html, validation.mcap.
 const std::vector<std::string>& validation_file_names();
 /// validation.json, validation.csv, validation.svg and (figures.html, three.js found:
-/// html_unavailable()) validation.html, for write_output_set(); without the page it is stale.
+/// html_unavailable()) validation.html, and with figures.mcap validation.mcap
+/// (validation_mcap(), plan_mcap.hpp), for write_output_set(); those not written are stale.
 OutputSet validation_outputs(const ValidationResult& result,
                              const PlanResult& plan,
                              const PlanTask& task,
