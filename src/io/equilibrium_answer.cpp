@@ -15,7 +15,25 @@ std::string EquilibriumAnswer::brief() const {
   return contact ? contact->shooting.brief() + "; " + contact->brief() : analysis->brief();
 }
 
+namespace {
+
+/// An equilibrium's scene is what the rod rests on (as the reader checks a file's; a task changed
+/// in code is checked here): every obstacle touchable, and the rod's section known.
+void check_resting_scene(const EquilibriumTask& task) {
+  for (std::size_t j = 0; j < task.scene.obstacles.size(); ++j)
+    if (!task.scene.obstacles[j].touchable())
+      throw InputError(task.source + ": scene.obstacles[" + std::to_string(j) +
+                       "].contact: an equilibrium rests on its obstacles: give contact: touch "
+                       "(avoid, the default, is for plans, which keep a clearance)");
+  if (!task.scene.empty() && !task.rod.properties.section)
+    throw InputError(task.source +
+                     ": scene needs rod.section: the rod's surface is what rests on an obstacle");
+}
+
+}  // namespace
+
 EquilibriumAnswer answer_equilibrium_task(const EquilibriumTask& task) {
+  check_resting_scene(task);
   EquilibriumAnswer answer;
   try {
     if (task.scene.empty())

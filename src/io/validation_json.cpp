@@ -15,7 +15,7 @@ namespace {
 using io_detail::Json;
 using io_detail::json_number;
 
-Json numbers(const std::vector<double>& values) {
+Json validation_numbers(const std::vector<double>& values) {
   Json list = Json::array();
   for (double v : values) list.push_back(json_number(v));
   return list;
@@ -120,10 +120,10 @@ Json run_object(const ValidationRun& run) {
   Json j;
   j["seed"] = run.seed;
   j["closed_loop"] = run.closed_loop;
-  j["time"] = numbers(run.time);
-  j["error_3d"] = numbers(run.error_3d);
-  j["error_2d"] = numbers(run.error_2d);
-  j["true_error"] = numbers(run.true_error);
+  j["time"] = validation_numbers(run.time);
+  j["error_3d"] = validation_numbers(run.error_3d);
+  j["error_2d"] = validation_numbers(run.error_2d);
+  j["true_error"] = validation_numbers(run.true_error);
   j["visible_markers"] = run.visible_markers;  // a depth camera: the points of each frame's cloud
   j["final"] = {{"error_3d", json_number(run.final.error_3d)},
                 {"error_2d", json_number(run.final.error_2d)},

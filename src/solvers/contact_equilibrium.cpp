@@ -418,7 +418,9 @@ Patch new_patch(const Setup& setup, int j, int i0, int i1, const RodConfiguratio
   int deepest = i0;
   for (int i = i0; i <= i1; ++i)
     if (node_gap(setup, c, j, i) < node_gap(setup, c, j, deepest)) deepest = i;
-  if (setup.free_tip && deepest == N) {  // the free tip rests on it, at an angle, first
+  const bool from_clamp = i0 <= 1 && std::abs(node_gap(setup, c, j, 0)) <= 1e-6 * L;
+  if (setup.free_tip && deepest == N && !(from_clamp && i1 == N)) {
+    // the free tip rests on it, at an angle, first (unless the whole rod goes under: it lies)
     p.point = p.at_tip = true;
     p.a = p.b = L;
     return p;
@@ -430,7 +432,7 @@ Patch new_patch(const Setup& setup, int j, int i0, int i1, const RodConfiguratio
     return p;
   }
   p.normal = *plane;
-  p.from_clamp = i0 <= 1 && std::abs(node_gap(setup, c, j, 0)) <= 1e-6 * L;
+  p.from_clamp = from_clamp;
   p.to_tip = i1 >= N - 1;
   p.a = p.from_clamp ? 0.0 : (i0 - 0.5) * h;
   p.b = p.to_tip ? L : (i1 + 0.5) * h;

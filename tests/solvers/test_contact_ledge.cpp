@@ -136,6 +136,22 @@ TEST(ContactLedge, TheHangingSpanMirrorsTheLiftedStrips) {
   }
 }
 
+TEST(ContactLedge, AStripClampedOnTheFloorWithAFreeTipLiesOnItsWholeLength) {
+  // The whole rod goes under at once: one segment [0, L] carrying the weight, nothing inside.
+  Scene floor = floor_and_ledge();
+  floor.obstacles.pop_back();
+  const ContactEquilibriumResult r = solve_contact_equilibrium(
+      strip(ConstitutiveModel::Cosserat, {0.0, 0.0, kRadius}), FreeTip{}, floor);
+  ASSERT_TRUE(r.shooting.summary.converged()) << r.shooting.summary.message;
+  ASSERT_EQ(r.contacts.size(), 1u) << r.brief();
+  EXPECT_EQ(r.contacts.front().s_start, 0.0);
+  EXPECT_EQ(r.contacts.front().s_end, kLength);
+  EXPECT_NEAR(r.contacts.front().max_line_force, kWeight, 1e-12);
+  const double tolerance = ShootingOptions{}.residual_tolerance;
+  for (const Eigen::Vector3d& n : r.shooting.configuration.n) EXPECT_LE(n.norm(), 2.0 * tolerance);
+  EXPECT_GE(r.least_gap, -ContactOptions{}.gap_tolerance);
+}
+
 }  // namespace
 }  // namespace test_contact_ledge
 }  // namespace rodshape
