@@ -1,9 +1,11 @@
 // bind_scene.cpp: the scene (core/obstacle.hpp, core/scene.hpp): the obstacle shapes, Obstacle,
 // Scene, and the SceneResult a plan reports.
+#include <algorithm>
 #include <string>
 
 #include "bindings.hpp"
 #include "rodshape/core/scene.hpp"
+#include "rodshape/error.hpp"
 #include "rodshape/trajectory/plan_result.hpp"
 
 namespace rodshape::python {
@@ -77,8 +79,43 @@ void bind_scene(py::module_& m) {
           py::arg("p"), "(signed distance m, its gradient) at p");
   // The scene's own list: append, del, [i] = ..., extend change the scene; a Python list or tuple
   // is taken where an ObstacleList is wanted.
-  py::bind_vector<std::vector<Obstacle>>(m, "ObstacleList",
-                                         "Scene.obstacles: the scene's own list of Obstacle");
+  // Its storage is reserved for Scene::kMaxObstacles when Python first takes the list, and adding
+  // beyond that is refused: an obstacle taken from it stays where it is when the list grows (an
+  // append that reallocated left it reading freed memory: a crash).
+  auto list = py::bind_vector<std::vector<Obstacle>>(
+      m, "ObstacleList", "Scene.obstacles: the scene's own list of Obstacle");
+  const auto refuse_growth = [](std::vector<Obstacle>& v, std::size_t more) {
+    if (v.size() + more > Scene::kMaxObstacles)
+      throw InputError("Scene.obstacles",
+                       ": at most " + std::to_string(Scene::kMaxObstacles) + " obstacles");
+    v.reserve(Scene::kMaxObstacles);  // a list made in Python: once, on its first growth
+  };
+  list.def(
+      "append",
+      [refuse_growth](std::vector<Obstacle>& v, const Obstacle& o) {
+        refuse_growth(v, 1);
+        v.push_back(o);
+      },
+      py::arg("x"), py::prepend(), "Add an obstacle at the end (at most 1000)");
+  list.def(
+      "insert",
+      [refuse_growth](std::vector<Obstacle>& v, py::ssize_t i, const Obstacle& o) {
+        refuse_growth(v, 1);
+        const py::ssize_t n = static_cast<py::ssize_t>(v.size());
+        if (i < 0) i += n;
+        v.insert(v.begin() + std::clamp<py::ssize_t>(i, 0, n), o);
+      },
+      py::arg("i"), py::arg("x"), py::prepend(),
+      "Insert an obstacle before index i (at most 1000)");
+  list.def(
+      "extend",
+      [refuse_growth](std::vector<Obstacle>& v, const py::iterable& items) {
+        std::vector<Obstacle> more;
+        for (const py::handle item : items) more.push_back(item.cast<Obstacle>());
+        refuse_growth(v, more.size());
+        v.insert(v.end(), more.begin(), more.end());
+      },
+      py::arg("L"), py::prepend(), "Add the obstacles of L at the end (at most 1000 in all)");
   py::implicitly_convertible<py::list, std::vector<Obstacle>>();
   py::implicitly_convertible<py::tuple, std::vector<Obstacle>>();
   py::class_<Scene> scene(m, "Scene");
@@ -86,8 +123,13 @@ void bind_scene(py::module_& m) {
       .def_readwrite("clearance", &Scene::clearance, "m, least gap of the rod's surface")
       .def_readwrite("rod_radius", &Scene::rod_radius, "m, the section's circumscribed radius")
       .def("validate", &Scene::validate);
-  def_part(scene, "obstacles", &Scene::obstacles,
-           "the ObstacleList, at most 1000 (assign a list, or change it in place)");
+  def_part(
+      scene, "obstacles",
+      [](Scene& owner) -> std::vector<Obstacle>& {
+        owner.obstacles.reserve(Scene::kMaxObstacles);  // see ObstacleList
+        return owner.obstacles;
+      },
+      "the ObstacleList, at most 1000 (assign a list, or change it in place)");
   py::class_<RobotGapResult>(m, "RobotGapResult",
                              "The least gap of an arm's links to the scene or the rod over the "
                              "joint trajectory's samples.")

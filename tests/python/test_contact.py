@@ -83,3 +83,18 @@ def test_an_avoided_obstacle_in_an_equilibrium_changed_in_code_is_refused():
     task.scene.obstacles[0].contact = rodshape.ContactMode.Avoid
     with pytest.raises(rodshape.InputError, match=r"scene.obstacles\[0\].contact"):
         rodshape.solve(task)
+
+
+def test_an_obstacle_taken_from_the_list_survives_the_list_growing():
+    # Found by the trial re-run: appending reallocated the list's storage under a kept obstacle,
+    # which then read freed memory (wrong kind, a SystemError, once a segfault).
+    task = rodshape.load_task(LIFTED)
+    table = task.scene.obstacles[0]
+    for i in range(50):
+        task.scene.obstacles.append(
+            rodshape.Obstacle(rodshape.SphereObstacle([5.0 + i, 0, 0], 0.01), f"o{i}"))
+    assert table.kind == "half_space" and table.name == "table"
+    table.name = "desk"  # still the scene's own
+    assert task.scene.obstacles[0].name == "desk"
+    with pytest.raises(rodshape.InputError, match="at most 1000"):
+        task.scene.obstacles.extend([task.scene.obstacles[1]] * 1000)
