@@ -414,8 +414,9 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     // Ten points, as the paper's markers, except the hook over part of the band.
     EXPECT_EQ(task.problem.target.points.size(), name == "plan_partial_hook.yaml" ? 5u : 10u);
     EXPECT_EQ(task.options.steps, name == "plan_cable_helix.yaml" ? 10 : 7);
-    EXPECT_EQ(task.problem.arm.has_value(),
-              name.starts_with("plan_panda_") || name == "plan_two_pandas.yaml");
+    EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_") ||
+                                                name.starts_with("plan_fr3_") ||
+                                                name == "plan_two_pandas.yaml");
     // The two with a moving base (issue 21), each with a base arm.
     const bool moving = name == "plan_two_pandas.yaml" || name == "plan_base_arm.yaml";
     EXPECT_EQ(task.problem.base_moves(), moving);
