@@ -162,7 +162,8 @@ TEST(Fr3, EveryLinkHasItsCapsules) {
   EXPECT_NEAR((link1.from - link1.to).norm(), 0.283, 1e-12);
   EXPECT_NEAR(0.5 * (link1.from + link1.to).z(), -0.1915, 1e-12);
   // The same geometry as the bundled Panda's, link for link.
-  const std::vector<LinkCapsule>& panda = rodshape::samples::panda().link_capsules();
+  const ArmModel panda_arm = rodshape::samples::panda();
+  const std::vector<LinkCapsule>& panda = panda_arm.link_capsules();
   ASSERT_EQ(panda.size(), arm.link_capsules().size());
   for (std::size_t i = 0; i < panda.size(); ++i) {
     const LinkCapsule& c = arm.link_capsules()[i];
