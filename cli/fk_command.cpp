@@ -2,18 +2,32 @@
 //   URDF -> ArmModel (robot) -> forward_kinematics -> pose_json (io)
 #include "fk_command.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "exit_code.hpp"
+#include "rodshape/error.hpp"
 #include "rodshape/io/kinematics_json.hpp"
 #include "rodshape/robot/arm_model.hpp"
+#include "rodshape/samples/bundled_arms.hpp"
 
 namespace rodshape::cli {
 
+ArmModel ArmArguments::load() const {
+  if (samples::is_bundled_arm(urdf_path))
+    return *samples::bundled_arm(urdf_path, base_link, tip_link);
+  if (urdf_path.find_first_of("/.") == std::string::npos && !std::filesystem::exists(urdf_path))
+    throw InputError("'" + urdf_path + "' is neither a bundled arm (" +
+                     samples::bundled_arm_names() + ") nor a URDF file");
+  return ArmModel::from_urdf_file(urdf_path, base_link, tip_link);
+}
+
 void ArmArguments::add_to(CLI::App& command) {
-  command.add_option("urdf", urdf_path, "The arm's URDF file, e.g. data/robots/panda.urdf")
+  command
+      .add_option("urdf", urdf_path,
+                  "The arm's URDF file, e.g. data/robots/panda.urdf, or a bundled arm: fr3, panda")
       ->required()
       ->type_name("URDF");
   command.add_option("--base", base_link, "Base link of the chain (default: the URDF's root)")

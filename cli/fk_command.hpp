@@ -20,8 +20,9 @@ struct ArmArguments {
   /// Adds the positional URDF argument (call before the command's other positionals) and the
   /// --base and --tip options.
   void add_to(CLI::App& command);
-  /// Reads the chain (InputError naming the URDF when it cannot).
-  ArmModel load() const { return ArmModel::from_urdf_file(urdf_path, base_link, tip_link); }
+  /// Reads the chain (InputError naming the URDF when it cannot): a bundled arm's name ("fr3",
+  /// "panda"), else the file.
+  ArmModel load() const;
 };
 
 }  // namespace rodshape::cli

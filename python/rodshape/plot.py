@@ -125,6 +125,8 @@ def plot_joints(outdir, urdf, waypoint_rows, path_samples):
     names, t, q = header[1:], rows[:, 0], rows[:, 1:]
     if len(t) < 2:
         raise InputError("joint_trajectory.csv has fewer than two samples")
+    if Path(urdf) == DEFAULT_URDF and names and names[0].startswith("fr3_"):
+        urdf = DEFAULT_URDF.with_name("fr3.urdf")  # the bundled FR3's joints
     limits = joint_limits(urdf, names)
     v = joint_velocities(outdir, t, q)
     # The rows of trajectory.csv and joint_trajectory.csv are the same samples (the joints' times

@@ -5,6 +5,7 @@
 #include "bindings.hpp"
 #include "rodshape/robot/arm_model.hpp"
 #include "rodshape/robot/inverse_kinematics.hpp"
+#include "rodshape/samples/fr3.hpp"
 #include "rodshape/samples/panda.hpp"
 
 namespace rodshape::python {
@@ -38,6 +39,10 @@ void bind_arm(py::module_& m) {
       .def_property_readonly("lower_limits", &ArmModel::lower_limits, "(n,) rad or m")
       .def_property_readonly("upper_limits", &ArmModel::upper_limits, "(n,) rad or m")
       .def_property_readonly("velocity_limits", &ArmModel::velocity_limits, "(n,) rad/s or m/s")
+      .def_property_readonly("acceleration_limits", &ArmModel::acceleration_limits,
+                             "(n,) rad/s² or m/s² (infinite unless set: a URDF holds none)")
+      .def_property_readonly("jerk_limits", &ArmModel::jerk_limits,
+                             "(n,) rad/s³ or m/s³ (infinite unless set)")
       .def(
           "forward_kinematics",
           [](const ArmModel& arm, const Eigen::VectorXd& q) { return arm.forward_kinematics(q); },
@@ -62,6 +67,8 @@ void bind_arm(py::module_& m) {
   m.def("panda", &samples::panda,
         "The Franka Emika Panda bundled with rodshape (panda_link0 to the flange panda_link8).");
   m.def("panda_ready_pose", &samples::panda_ready_pose, "(7,) the Panda's ready pose, rad");
+  m.def("fr3", &samples::fr3,
+        "The Franka Research 3 bundled with rodshape (fr3_link0 to the flange fr3_link8).");
 }
 
 void bind_ik(py::module_& m) {

@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "io/did_you_mean.hpp"
 #include "io/task_sections.hpp"
 #include "rodshape/error.hpp"
 #include "rodshape/io/field_names.hpp"
+#include "rodshape/samples/bundled_arms.hpp"
 #include "validation.hpp"
 
 namespace rodshape::io_detail {
@@ -270,17 +272,28 @@ PlanArm read_arm(const YamlField& robot,
        {"tool", "the end effector on the flange is " + name + ".flange_to_end_effector"},
        {"world_T_base", "the arm's base in the world is " + name + ".base"}});
   const YamlField urdf = robot.require("urdf");
-  std::filesystem::path path(urdf.text());
+  const std::string urdf_text = urdf.text();
+  std::filesystem::path path(urdf_text);
   if (path.is_relative() && !task_directory.empty())
     path = std::filesystem::path(task_directory) / path;
   const YamlField base_link = robot.get("base_link");
   const YamlField tip_link = robot.get("tip_link");
   const std::string base_name = base_link.present() ? base_link.text() : "";
   const std::string tip_name = tip_link.present() ? tip_link.text() : "";
+  // A bundled arm's name ("fr3", "panda"), else a file; a word that is neither is a misspelt name.
+  const bool word = urdf_text.find_first_of("/.") == std::string::npos;
+  const bool bundled = word && samples::is_bundled_arm(urdf_text);
+  if (word && !bundled && !std::filesystem::exists(path)) {
+    const std::optional<std::string> near = io_detail::closest_match(urdf_text, {"fr3", "panda"});
+    urdf.fail(urdf.path() + ": '" + urdf_text + "' is neither a bundled arm (" +
+              samples::bundled_arm_names() + ") nor a URDF file" +
+              (near ? "; did you mean '" + *near + "'?" : ""));
+  }
 
   std::optional<ArmModel> arm;
   try {
-    arm = ArmModel::from_urdf_file(path.string(), base_name, tip_name);
+    arm = bundled ? samples::bundled_arm(urdf_text, base_name, tip_name)
+                  : ArmModel::from_urdf_file(path.string(), base_name, tip_name);
   } catch (const InputError& error) {
     // Say which field the URDF's complaint is about.
     const std::string message = error.what();
@@ -293,7 +306,7 @@ PlanArm read_arm(const YamlField& robot,
     urdf.fail(urdf.path() + ": " + message);
   }
 
-  task.input_files.push_back(path.string());  // never an output of the run (issue 24)
+  if (!bundled) task.input_files.push_back(path.string());  // never an output of the run (issue 24)
   PlanArm result{std::move(*arm), {}};
   if (const YamlField base = robot.get("base"); base.present())
     result.placement.world_T_base = read_pose(base);

@@ -507,6 +507,41 @@ Eigen::VectorXd ArmModel::velocity_limits() const {
   return values;
 }
 
+Eigen::VectorXd ArmModel::acceleration_limits() const {
+  Eigen::VectorXd values(joints());
+  for (int i = 0; i < joints(); ++i) values(i) = impl_->joints[i].max_acceleration;
+  return values;
+}
+
+Eigen::VectorXd ArmModel::jerk_limits() const {
+  Eigen::VectorXd values(joints());
+  for (int i = 0; i < joints(); ++i) values(i) = impl_->joints[i].max_jerk;
+  return values;
+}
+
+ArmModel ArmModel::with_motion_limits(const Eigen::VectorXd& max_acceleration,
+                                      const Eigen::VectorXd& max_jerk,
+                                      const std::string& source) const {
+  for (const auto& [values, what] :
+       {std::pair{&max_acceleration, "acceleration"}, std::pair{&max_jerk, "jerk"}}) {
+    if (values->size() != joints())
+      throw InputError(source + ": " + std::to_string(values->size()) + " " + what +
+                       " limits for the " + std::to_string(joints()) + " joints of " +
+                       in_quotes(robot_name()));
+    for (int i = 0; i < joints(); ++i)
+      if (!((*values)(i) > 0.0))  // NaN too
+        throw InputError(source + ": joint " + in_quotes(impl_->joints[i].name) + ": " + what +
+                         " limit = " + detail::format_value((*values)(i)) + " must be > 0");
+  }
+  auto impl = std::make_shared<Impl>(*impl_);
+  impl->id = next_impl_id.fetch_add(1, std::memory_order_relaxed);
+  for (int i = 0; i < joints(); ++i) {
+    impl->joints[i].max_acceleration = max_acceleration(i);
+    impl->joints[i].max_jerk = max_jerk(i);
+  }
+  return ArmModel(std::move(impl));
+}
+
 void ArmModel::check_size(const Eigen::VectorXd& q, const std::string& what) const {
   if (q.size() != joints()) {
     throw InputError(what + " has " + std::to_string(q.size()) + " values but the chain from " +

@@ -3,6 +3,9 @@
 #include <numbers>
 #include <string>
 
+#include "rodshape/samples/franka_limits.hpp"
+#include "samples/franka_arm.hpp"
+
 namespace rodshape::samples {
 
 namespace detail {
@@ -12,8 +15,10 @@ extern const char* const kPandaUrdf;  // generated from data/robots/panda.urdf (
 std::string_view panda_urdf() { return detail::kPandaUrdf; }
 
 ArmModel panda() {
-  return ArmModel::from_urdf_string(std::string(panda_urdf()), "panda_link0", "panda_link8",
-                                    "the bundled Panda URDF");
+  return detail::with_franka_limits(
+      ArmModel::from_urdf_string(std::string(panda_urdf()), "panda_link0", "panda_link8",
+                                 "the bundled Panda URDF"),
+      panda_joint_limits(), "the Panda's published limits");
 }
 
 Eigen::VectorXd panda_ready_pose() {

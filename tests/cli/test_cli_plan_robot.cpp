@@ -1,11 +1,12 @@
-// test_cli_plan_robot.cpp: `rodshape plan` with a robot section. The bundled Panda example writes
-// joint_trajectory.csv and joint_trajectory.json (the shape of ROS trajectory_msgs/JointTrajectory)
-// whose last positions put the end effector where plan.json says; an unknown tip link is bad input
-// (exit 2) named with its line; an arm too far from the clamp to hold the rod where it starts is
-// bad input (exit 2) that gives the wrist's distance; without the reach shell it gives exit 3,
-// plan.json saying why; plan.json's robot section holds the shell and every step's joints. Bad
-// input the library finds (two bases in each other, a hand starting in a box, a base out of its
-// arm's reach, the plant's bounds) names the task file's fields, never the library's types.
+// test_cli_plan_robot.cpp: `rodshape plan` with a robot section. The bundled Panda examples (and
+// the FR3's, within its own limits) write joint_trajectory.csv and joint_trajectory.json (the shape
+// of ROS trajectory_msgs/JointTrajectory) whose last positions put the end effector where plan.json
+// says; an unknown tip link is bad input (exit 2) named with its line; an arm too far from the
+// clamp to hold the rod where it starts is bad input (exit 2) that gives the wrist's distance;
+// without the reach shell it gives exit 3, plan.json saying why; plan.json's robot section holds
+// the shell and every step's joints. Bad input the library finds (two bases in each other, a hand
+// starting in a box, a base out of its arm's reach, the plant's bounds) names the task file's
+// fields, never the library's types.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -13,6 +14,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +24,7 @@
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/robot/arm_model.hpp"
+#include "rodshape/samples/bundled_arms.hpp"
 #include "support/cli_runner.hpp"
 #include "support/eigen_compare.hpp"
 #include "support/task_text.hpp"
@@ -65,11 +68,12 @@ Eigen::Vector3d vector3(const Json& value) {
   return {value.at(0).get<double>(), value.at(1).get<double>(), value.at(2).get<double>()};
 }
 
-/// A bundled Panda example and where its arm's base stands (robot.base.position.x).
+/// A bundled Panda (or FR3) example and where its arm's base stands (robot.base.position.x).
 struct PandaExample {
   const char* file;
   double base_x;
   const char* name;
+  const char* robot = "panda";  // the bundled arm's name
 };
 
 void PrintTo(const PandaExample& example, std::ostream* out) { *out << example.file; }
@@ -95,8 +99,7 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
             plan.at("end_effector_path").at("duration").get<double>() - 1e-12);
 
   const Json trajectory = Json::parse(read_file(out / "joint_trajectory.json"));
-  const rodshape::ArmModel arm =
-      rodshape::ArmModel::from_urdf_file((kSource / "data" / "robots" / "panda.urdf").string());
+  const rodshape::ArmModel arm = *rodshape::samples::bundled_arm(GetParam().robot);
   EXPECT_EQ(trajectory.at("joint_names").get<std::vector<std::string>>(), arm.joint_names());
   const Json& points = trajectory.at("points");
   ASSERT_EQ(static_cast<int>(points.size()), samples);
@@ -132,6 +135,10 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
     for (std::string field; std::getline(fields, field, ',');) v.push_back(std::stod(field));
     ASSERT_EQ(v.size(), 8u) << row;
     for (int j = 0; j < 7; ++j) q(j) = point.at("positions").at(j).get<double>();
+    arm.check_joint_positions(q, "a sample", 1e-9);  // within this arm's limits (the FR3's own)
+    for (int j = 0; j < 7; ++j)
+      EXPECT_LE(std::abs(point.at("velocities").at(j).get<double>()),
+                arm.velocity_limits()(j) * (1 + 1e-9));
     const rodshape::Pose f = arm.forward_kinematics(q);
     const Eigen::Vector3d p = base + f.position + f.rotation * Eigen::Vector3d(0, 0, 0.1034);
     const Eigen::Quaterniond planned(v[4], v[5], v[6], v[7]);
@@ -176,19 +183,20 @@ TEST_P(CliPandaExamples, WriteJointTrajectoriesThatReplayOntoThePlannedPath) {
   std::istringstream csv(read_file(out / "joint_trajectory.csv"));
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header.rfind("t,panda_joint1,", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("t," + std::string(GetParam().robot) + "_joint1,", 0), 0u) << header;
   int lines = 0;
   for (std::string line; std::getline(csv, line);) ++lines;
   EXPECT_EQ(lines, samples);
 }
 
-INSTANTIATE_TEST_SUITE_P(BundledPandaExamples,
-                         CliPandaExamples,
-                         ::testing::Values(PandaExample{"plan_panda_s_curve.yaml", -0.45, "SCurve"},
-                                           PandaExample{"plan_panda_reach_limit.yaml", -0.58,
-                                                        "ReachLimit"},
-                                           PandaExample{"plan_panda_shelf.yaml", -0.45, "Shelf"}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    BundledPandaExamples,
+    CliPandaExamples,
+    ::testing::Values(PandaExample{"plan_panda_s_curve.yaml", -0.45, "SCurve"},
+                      PandaExample{"plan_panda_reach_limit.yaml", -0.58, "ReachLimit"},
+                      PandaExample{"plan_panda_shelf.yaml", -0.45, "Shelf"},
+                      PandaExample{"plan_fr3_s_curve.yaml", -0.45, "Fr3SCurve", "fr3"}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 // plan.json's scene with an arm: the least gap of the links over the joint trajectory and where;
 // the summary line says it. An obstacle on the hand's own way: exit 3, status collision, the step,

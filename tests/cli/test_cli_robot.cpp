@@ -54,6 +54,19 @@ TEST_F(CliRobot, FkPrintsTheFlangePoseAtTheReadyPose) {
   EXPECT_NEAR(json["rotation"][3].get<double>(), 0.0, 1e-12);
 }
 
+TEST_F(CliRobot, FkTakesABundledArmsName) {
+  const Outcome outcome = run("fk fr3 " + kReady);  // the FR3's chain is the Panda's
+  ASSERT_EQ(outcome.exit_code, 0) << outcome.err;
+  const Json json = Json::parse(outcome.out);
+  EXPECT_NEAR(json["position"][0].get<double>(), 0.306891, 1e-6);
+  EXPECT_NEAR(json["position"][2].get<double>(), 0.590282, 1e-6);
+  const Outcome misspelt = run("fk fr4 " + kReady);
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_NE(misspelt.err.find("'fr4' is neither a bundled arm (fr3, panda) nor a URDF file"),
+            std::string::npos)
+      << misspelt.err;
+}
+
 TEST_F(CliRobot, FkBaseAndTipChooseASubChain) {
   const Outcome outcome =
       run("fk " + quoted(kPanda) + " --base panda_link0 --tip panda_link2 0.3 -0.5");

@@ -414,8 +414,9 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     // Ten points, as the paper's markers, except the hook over part of the band.
     EXPECT_EQ(task.problem.target.points.size(), name == "plan_partial_hook.yaml" ? 5u : 10u);
     EXPECT_EQ(task.options.steps, name == "plan_cable_helix.yaml" ? 10 : 7);
-    EXPECT_EQ(task.problem.arm.has_value(),
-              name.starts_with("plan_panda_") || name == "plan_two_pandas.yaml");
+    EXPECT_EQ(task.problem.arm.has_value(), name.starts_with("plan_panda_") ||
+                                                name.starts_with("plan_fr3_") ||
+                                                name == "plan_two_pandas.yaml");
     // The two with a moving base (issue 21), each with a base arm.
     const bool moving = name == "plan_two_pandas.yaml" || name == "plan_base_arm.yaml";
     EXPECT_EQ(task.problem.base_moves(), moving);
@@ -436,6 +437,9 @@ TEST(PlanReader, BundledPlanExamplesRead) {
       EXPECT_DOUBLE_EQ(task.options.arm.link_influence, 0.03);
       EXPECT_EQ(task.problem.arm->model.link_capsules().size(), 14u);
     }
+    if (name == "plan_fr3_s_curve.yaml") {  // the bundled FR3, by name
+      EXPECT_EQ(task.problem.arm->model.robot_name(), "fr3");
+    }
     if (name == "plan_around_post.yaml") {  // the one with a scene
       ASSERT_EQ(task.problem.scene.obstacles.size(), 2u);
       EXPECT_EQ(task.problem.scene.obstacles[1].name, "post");
@@ -444,7 +448,7 @@ TEST(PlanReader, BundledPlanExamplesRead) {
     }
     ++count;
   }
-  EXPECT_EQ(count, 16);  // 15 plan_*.yaml and validate_depth_camera.yaml
+  EXPECT_EQ(count, 17);  // 16 plan_*.yaml and validate_depth_camera.yaml
 }
 
 // ---- the plant's weight (issue 24, item 2)

@@ -315,6 +315,19 @@ def test_arm_jacobian_matches_finite_differences_of_its_kinematics():
         assert np.allclose([W[2, 1], W[0, 2], W[1, 0]], J[3:, j], atol=1e-8)
 
 
+def test_the_bundled_fr3_carries_frankas_limits():
+    fr3 = rodshape.fr3()
+    assert fr3.robot_name == "fr3" and fr3.tip_link == "fr3_link8"
+    assert fr3.joint_names == [f"fr3_joint{i}" for i in range(1, 8)]
+    assert list(fr3.upper_limits) == [2.7437, 1.7837, 2.9007, -0.1518, 2.8065, 4.5169, 3.0159]
+    assert list(fr3.acceleration_limits) == [10.0] * 7 and list(fr3.jerk_limits) == [5000.0] * 7
+    assert list(rodshape.panda().jerk_limits) == [7500, 3750, 5000, 6250, 7500, 10000, 10000]
+    assert np.isinf(rodshape.ArmModel.from_urdf_file(str(SOURCE / "data/robots/fr3.urdf"))
+                    .acceleration_limits).all()  # a URDF holds none
+    task = rodshape.load_task(str(EXAMPLES / "plan_fr3_s_curve.yaml"))  # urdf: fr3
+    assert task is not None
+
+
 def test_inverse_kinematics_returns_to_a_reachable_pose():
     arm = rodshape.panda()
     goal_q = rodshape.panda_ready_pose() + np.array([0.2, -0.1, 0.1, 0.2, -0.1, 0.1, 0.2])

@@ -1,5 +1,6 @@
 // arm_model.hpp: a serial arm, read from a URDF file: the chain of joints between a base link and a
-// tip link, its joint limits (position and velocity), forward kinematics and the tip's Jacobian.
+// tip link, its joint limits (position and velocity from the URDF; acceleration and jerk, which a
+// URDF cannot hold, set by with_motion_limits()), forward kinematics and the tip's Jacobian.
 // The chain is held by Orocos KDL and the URDF is read by urdfdom; neither appears here (pimpl).
 //
 // The links' collision geometry (<collision> boxes, spheres, cylinders) is read as capsules
@@ -10,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,13 +22,17 @@
 namespace rodshape {
 
 /// One moving joint of the chain. Continuous joints have infinite position limits; a joint whose
-/// URDF gives no velocity limit (continuous joints may omit it) has an infinite one.
+/// URDF gives no velocity limit (continuous joints may omit it) has an infinite one. A URDF has no
+/// acceleration or jerk limits: they are infinite unless set (ArmModel::with_motion_limits; the
+/// bundled arms carry Franka's, samples/franka.hpp).
 struct JointInfo {
   std::string name;
   bool prismatic = false;     // false: revolute or continuous (rad); true: prismatic (m)
   double lower = 0.0;         // rad or m
   double upper = 0.0;         // rad or m
   double max_velocity = 0.0;  // rad/s or m/s
+  double max_acceleration = std::numeric_limits<double>::infinity();  // rad/s² or m/s²
+  double max_jerk = std::numeric_limits<double>::infinity();          // rad/s³ or m/s³
 };
 
 /// A moving joint's axis at some joint positions, in the base frame: the line through `origin`
@@ -80,6 +86,14 @@ class ArmModel {
   Eigen::VectorXd lower_limits() const;
   Eigen::VectorXd upper_limits() const;
   Eigen::VectorXd velocity_limits() const;
+  Eigen::VectorXd acceleration_limits() const;
+  Eigen::VectorXd jerk_limits() const;
+
+  /// This arm with each joint's acceleration and jerk limits set (n entries each, every one > 0;
+  /// infinity: none), else InputError naming `source`. The other limits and the geometry are kept.
+  ArmModel with_motion_limits(const Eigen::VectorXd& max_acceleration,
+                              const Eigen::VectorXd& max_jerk,
+                              const std::string& source = "motion limits") const;
 
   /// Throws InputError unless `q` has n finite entries within the position limits (a margin of
   /// `tolerance` is allowed). `what` names the vector in the message, e.g. "q" or "--seed".

@@ -1,6 +1,7 @@
 // The Franka Emika Panda as a sample arm: the kinematic URDF bundled in data/robots/panda.urdf
 // (compiled into the library, so an installed program needs no data files), its chain from
-// panda_link0 to the flange panda_link8, and its ready pose. The paper's experiments used this arm.
+// panda_link0 to the flange panda_link8 with Franka's acceleration and jerk limits
+// (franka_limits.hpp), and its ready pose. The paper's experiments used this arm.
 #pragma once
 
 #include <Eigen/Core>
