@@ -42,6 +42,9 @@ ObstacleShape read_obstacle_shape(const YamlField& obstacle, const std::string& 
 
 Obstacle read_obstacle(const YamlField& obstacle, int index) {
   if (!obstacle.present()) obstacle.fail(obstacle.path() + " is empty");
+  // Any shape's keys first, so that a misspelt `shape` is named as such, not as missing.
+  obstacle.expect_mapping(
+      keys({"center", "radius", "size", "rotation", "from", "to", "normal", "offset"}));
   const std::string shape =
       obstacle.require("shape").choice({"sphere", "box", "capsule", "half_space"});
   Obstacle result;

@@ -1,7 +1,8 @@
 // test_cli_validate_time.cpp: issue 43, part 6. `rodshape validate` estimates its time before any
 // work and refuses beyond 300 s (--max-seconds raises it): a thousand closed-loop runs are refused
 // within a second with the estimate and the option, and the estimate of a small validation is
-// within a factor of 3 of its real time (docs/limits.md, "Sizes of a validation").
+// not under a third of its real time nor over 5 times it (docs/limits.md, "Sizes of a
+// validation": the estimate is fitted on one machine and high on faster ones).
 #include <gtest/gtest.h>
 
 #include "support/cli_runner.hpp"
@@ -49,7 +50,7 @@ TEST_F(CliValidateTime, AThousandClosedLoopRunsAreRefusedUpFrontWithTheEstimate)
   EXPECT_FALSE(fs::exists(directory_ / "out")) << "written or created before the refusal";
 }
 
-TEST_F(CliValidateTime, TheEstimateOfASmallValidationIsWithinAFactorOfThreeOfItsTime) {
+TEST_F(CliValidateTime, TheEstimateOfASmallValidationIsNeitherUnderNorFarOverItsTime) {
   // The estimate is fitted to CPU seconds (times a margin of 1.5); on 2 shared cores the wall time
   // was 0.9-1.9 times the CPU time (docs/limits.md): estimate / time within [1/3, 3].
   // Before planning the estimate is a lower bound (the path's frames unknown): refused below it,
@@ -73,8 +74,12 @@ TEST_F(CliValidateTime, TheEstimateOfASmallValidationIsWithinAFactorOfThreeOfIts
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(done.exit_code, 0) << done.err;
+  // Not under: the refusal relies on it (a machine up to 2 × slower than the fitted one within
+  // the margin's 1.5 and the wall time's 1.9). Over by at most 5: the margin's 1.5 on a machine up
+  // to 3.3 × faster than the fitted one (this case took 2.5 s of CPU there, 1.6 s of wall time on
+  // an AMD family 26 machine in 2026-12: 3.5 × under the estimate, where 3 was asserted before).
   EXPECT_GT(estimate, seconds / 3.0) << "estimated " << estimate << " s, took " << seconds << " s";
-  EXPECT_LT(estimate, seconds * 3.0) << "estimated " << estimate << " s, took " << seconds << " s";
+  EXPECT_LT(estimate, seconds * 5.0) << "estimated " << estimate << " s, took " << seconds << " s";
 }
 
 }  // namespace

@@ -51,6 +51,15 @@ TEST(ContactFields, AMisspeltContactNamesTheFieldAndTheChoice) {
   EXPECT_NE(message.find("touch"), std::string::npos) << message;
 }
 
+TEST(ContactFields, AMisspeltShapeKeyIsNamedAsUnknownNotAsAMissingShape) {
+  // Found by this session's trial re-run: it read "scene.obstacles[0].shape is required".
+  const std::string message = error_of(cable_with(
+      "{name: table, shpae: half_space, normal: [0, 0, -1], offset: 0, contact: touch}"));
+  EXPECT_NE(message.find("shpae"), std::string::npos) << message;
+  EXPECT_NE(message.find("shape"), std::string::npos) << message;
+  EXPECT_EQ(message.find("is required"), std::string::npos) << message;
+}
+
 TEST(ContactFields, FrictionOutOfRangeOrNotYetSolvedIsRefusedNamingIt) {
   for (const std::string mu : {"-1", ".nan", "11", "0.3"}) {
     const std::string message = error_of(cable_with(

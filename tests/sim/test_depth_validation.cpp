@@ -37,8 +37,10 @@ TEST(DepthValidation, TheExamplesBoardHidesAboutAThirdOfTheBand) {
   ASSERT_TRUE(e.plan.complete()) << e.plan.message;
   ASSERT_TRUE(e.task.depth_sensor.has_value());
   const PlanStep& last = e.plan.steps.back();
-  const PlantFrame frame{0.0, last.end_effector, last.solution.base_wrench,
-                         last.solution.configuration};
+  PlantFrame frame;
+  frame.end_effector = last.end_effector;
+  frame.base_wrench = last.solution.base_wrench;
+  frame.configuration = last.solution.configuration;
   const double radius = e.task.problem.scene.rod_radius;
   EXPECT_NEAR(radius, 0.01 * std::sqrt(2.0), 1e-12);  // the 2 × 2 cm section's half diagonal
   DepthCamera camera(*e.task.depth_sensor, 1);

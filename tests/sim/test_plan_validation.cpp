@@ -144,7 +144,9 @@ TEST(ShapeError, NoMarkerSeenIsNoMeasuredError) {
   model.dropout = 1.0;
   model.wrist = WristNoise{0.0, 0.0};
   MarkerSensor sensor(model, 1);
-  const SensorFrame seen = sensor.observe({0.0, Pose{}, BaseWrench{}, straight}, 0.29);
+  PlantFrame frame;
+  frame.configuration = straight;
+  const SensorFrame seen = sensor.observe(frame, 0.29);
   ASSERT_EQ(seen.visible(), 0);
   const ShapeError error =
       shape_error({{0.003, 0.0, 0.1}}, rod.clamp.position, seen, straight, model.camera);
@@ -202,7 +204,8 @@ TEST(ShapeError, StraightRodSeenWithoutNoise) {
   // (x–z) too, since the offset is in it.
   const ClampedRod rod = samples::rubber_band();
   const RodConfiguration straight = integrate(rod, BaseWrench{});
-  PlantFrame frame{0.0, Pose{}, BaseWrench{}, straight};
+  PlantFrame frame;
+  frame.configuration = straight;
   MarkerSensor sensor(noiseless(), 1);
   const SensorFrame seen = sensor.observe(frame, rod.properties.length);
   ASSERT_EQ(seen.visible(), 10);
