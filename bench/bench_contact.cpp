@@ -13,6 +13,7 @@
 
 #include "rodshape/samples/rubber_band.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/contact_cases.hpp"
 
 namespace {
 
@@ -26,12 +27,7 @@ double thread_seconds() {
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-/// d3 (the tangent) along world x, d2 up.
-Eigen::Matrix3d along_x() {
-  Eigen::Matrix3d R;
-  R << 0, 0, 1, 0, 1, 0, -1, 0, 0;
-  return R;
-}
+using testing::along_x;
 
 /// The example's cable: EI = E π r⁴/4, GJ = EI/(1 + ν), EA = E π r², GA = G A (Cosserat).
 ClampedRod nylon_cable(int intervals) {
@@ -47,16 +43,6 @@ ClampedRod nylon_cable(int intervals) {
   rod.clamp = {Eigen::Vector3d(0.0, 0.0, kRadius), along_x()};
   rod.intervals = intervals;
   return rod;
-}
-
-Scene table() {
-  Scene scene;
-  Obstacle top;
-  top.name = "table";
-  top.shape = HalfSpaceObstacle{Eigen::Vector3d(0.0, 0.0, -1.0), 0.0};
-  top.contact = ContactMode::Touch;
-  scene.obstacles.push_back(top);
-  return scene;
 }
 
 ShootingOptions bench_options() {
@@ -89,7 +75,7 @@ void BM_SolveLiftedCable(benchmark::State& state) {
   GraspedTip tip;
   tip.pose = {Eigen::Vector3d(1.0, 0.0, kRadius + 0.02), along_x()};
   tip.released[2] = true;
-  const Scene scene = table();
+  const Scene scene = testing::table_scene();
   const ShootingOptions options = bench_options();
   ContactEquilibriumResult result;
   const double start = thread_seconds();

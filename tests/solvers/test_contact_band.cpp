@@ -16,6 +16,7 @@
 
 #include "rodshape/core/rod_properties.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/contact_cases.hpp"
 
 namespace rodshape {
 namespace test_contact_band {
@@ -48,12 +49,7 @@ ContactEquilibriumResult lift_band(double phi) {
   rod.load.force = Eigen::Vector3d(0.0, 0.0, -kWeight);
   rod.clamp = {Eigen::Vector3d(0.0, 0.0, support(phi)), turned(phi)};
   rod.intervals = 200;
-  Scene scene;
-  Obstacle table;
-  table.name = "table";
-  table.shape = HalfSpaceObstacle{-Eigen::Vector3d::UnitZ(), 0.0};
-  table.contact = ContactMode::Touch;
-  scene.obstacles.push_back(table);
+  const Scene scene = testing::table_scene();
   GraspedTip tip;
   tip.pose = {Eigen::Vector3d(kLength, 0.0, support(phi) + kLift), turned(phi)};
   tip.released[2] = true;

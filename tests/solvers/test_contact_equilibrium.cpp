@@ -20,6 +20,7 @@
 
 #include "rodshape/core/rod_properties.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/contact_cases.hpp"
 
 namespace rodshape {
 namespace test_contact_equilibrium {
@@ -30,35 +31,15 @@ constexpr double kEI = 1e-3;     // N·m²
 constexpr double kWeight = 0.5;  // N/m
 constexpr double kRadius = 0.002;
 
-/// d3 = x, d1 = y, d2 = z: the strip's tangent along the table.
-Eigen::Matrix3d along_x() {
-  Eigen::Matrix3d R;
-  R.col(0) = Eigen::Vector3d::UnitY();
-  R.col(1) = Eigen::Vector3d::UnitZ();
-  R.col(2) = Eigen::Vector3d::UnitX();
-  return R;
-}
+using testing::along_x;
 
 ClampedRod heavy_strip(ConstitutiveModel model, int intervals) {
-  ClampedRod rod;
-  rod.properties.length = kLength;
-  rod.properties.model = model;
-  rod.properties.K_rot = Eigen::Vector3d(kEI, kEI, 0.8 * kEI);
-  rod.properties.K_tra = Eigen::Vector3d(1e6, 1e6, 1e6);
-  rod.properties.section = CrossSection::circle(kRadius);
-  rod.load.force = Eigen::Vector3d(0.0, 0.0, -kWeight);
-  rod.clamp = {Eigen::Vector3d(0.0, 0.0, kRadius), along_x()};
-  rod.intervals = intervals;
-  return rod;
+  return testing::heavy_strip({kLength, kEI, kWeight, kRadius}, model, {0.0, 0.0, kRadius},
+                              intervals);
 }
 
 Scene table() {
-  Scene scene;
-  Obstacle top;
-  top.name = "table";
-  top.shape = HalfSpaceObstacle{Eigen::Vector3d(0.0, 0.0, -1.0), 0.0};
-  top.contact = ContactMode::Touch;
-  scene.obstacles.push_back(top);
+  Scene scene = testing::table_scene();
   scene.rod_radius = kRadius;
   return scene;
 }

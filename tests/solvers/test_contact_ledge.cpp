@@ -20,6 +20,7 @@
 
 #include "rodshape/core/rod_properties.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/contact_cases.hpp"
 
 namespace rodshape {
 namespace test_contact_ledge {
@@ -31,34 +32,11 @@ constexpr double kWeight = 0.5;  // N/m
 constexpr double kRadius = 0.002;
 constexpr double kHeight = 0.004;  // of the ledge's edge above where the strip lies, m
 
-/// d3 = x, d1 = y, d2 = z: the strip's tangent along +x.
-Eigen::Matrix3d along_x() {
-  Eigen::Matrix3d R;
-  R.col(0) = Eigen::Vector3d::UnitY();
-  R.col(1) = Eigen::Vector3d::UnitZ();
-  R.col(2) = Eigen::Vector3d::UnitX();
-  return R;
-}
+using testing::along_x;
+using testing::touchable;
 
 ClampedRod strip(ConstitutiveModel model, const Eigen::Vector3d& clamp) {
-  ClampedRod rod;
-  rod.properties.length = kLength;
-  rod.properties.model = model;
-  rod.properties.K_rot = Eigen::Vector3d(kEI, kEI, 0.8 * kEI);
-  rod.properties.K_tra = Eigen::Vector3d(1e6, 1e6, 1e6);
-  rod.properties.section = CrossSection::circle(kRadius);
-  rod.load.force = Eigen::Vector3d(0.0, 0.0, -kWeight);
-  rod.clamp = {clamp, along_x()};
-  rod.intervals = 200;
-  return rod;
-}
-
-Obstacle touchable(const std::string& name, const ObstacleShape& shape) {
-  Obstacle o;
-  o.name = name;
-  o.shape = shape;
-  o.contact = ContactMode::Touch;
-  return o;
+  return testing::heavy_strip({kLength, kEI, kWeight, kRadius}, model, clamp, 200);
 }
 
 /// The floor (z < 0) and the ledge (x in [-0.2, 0], its top at the strip's underside).

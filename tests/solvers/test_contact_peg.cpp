@@ -19,6 +19,7 @@
 
 #include "rodshape/core/rod_properties.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/contact_cases.hpp"
 
 namespace rodshape {
 namespace test_contact_peg {
@@ -27,13 +28,7 @@ namespace {
 constexpr double kLength = 0.5, kEI = 1.0, kWeight = 0.1;  // m, N·m², N/m
 constexpr double kRadius = 0.002, kPegRadius = 0.005, kPegAt = 0.3;
 
-Eigen::Matrix3d along_x() {
-  Eigen::Matrix3d R;
-  R.col(0) = Eigen::Vector3d::UnitY();
-  R.col(1) = Eigen::Vector3d::UnitZ();
-  R.col(2) = Eigen::Vector3d::UnitX();
-  return R;
-}
+using testing::along_x;
 
 ClampedRod cantilever() {
   ClampedRod rod;
@@ -50,12 +45,9 @@ ClampedRod cantilever() {
 
 Scene peg() {
   const double z = -(kPegRadius + kRadius);
-  Obstacle o;
-  o.name = "peg";
-  o.shape = CapsuleObstacle{{kPegAt, -0.1, z}, {kPegAt, 0.1, z}, kPegRadius};
-  o.contact = ContactMode::Touch;
   Scene scene;
-  scene.obstacles.push_back(o);
+  scene.obstacles.push_back(
+      testing::touchable("peg", CapsuleObstacle{{kPegAt, -0.1, z}, {kPegAt, 0.1, z}, kPegRadius}));
   return scene;
 }
 
