@@ -37,9 +37,10 @@ std::vector<Eigen::Vector3d> parse_cloud(std::string_view bytes,
 }
 
 std::vector<Eigen::Vector3d> read_cloud(const std::string& path) {
-  const CloudFormat format = cloud_format_of(path);
   constexpr detail::FileCap kCap{kMaxCloudFileBytes, "a cloud file", "cannot read"};
-  return parse_cloud(detail::read_capped_file(path, kCap), format, path);
+  // Read first: a directory, a missing file or one beyond the cap says so, whatever its name.
+  const std::string bytes = detail::read_capped_file(path, kCap);
+  return parse_cloud(bytes, cloud_format_of(path), path);
 }
 
 }  // namespace rodshape

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -153,6 +154,21 @@ TEST(CloudReader, BrokenFilesSayWhatIsWrongAndWhere) {
         << "expected '" << c.expected << "' in '" << message << "'";
     EXPECT_EQ(message.rfind("cloud.x: ", 0), 0u) << message;
   }
+}
+
+TEST(CloudReader, ADirectoryWithoutAnExtensionIsNamedAsADirectory) {
+  // Found by this session's trial re-run: it said "unknown cloud format" (docs/limits.md promises
+  // "cannot read: it is a directory", which a directory named dir.ply did get).
+  const std::string directory = ::testing::TempDir() + "cloud_dir_without_extension";
+  std::filesystem::create_directories(directory);
+  try {
+    read_cloud(directory);
+    ADD_FAILURE() << "a directory was read as a cloud";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("it is a directory"), std::string::npos)
+        << error.what();
+  }
+  std::filesystem::remove(directory);
 }
 
 TEST(CloudReader, AFileBeyondThePointCapIsRefused) {
