@@ -2,12 +2,14 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rodshape/error.hpp"
 #include "rodshape/io/output_files.hpp"
 #include "rodshape/io/plan_mcap.hpp"
 #include "rodshape/io/plan_output.hpp"
+#include "rodshape/io/validation_output.hpp"
 
 namespace rodshape {
 
@@ -98,7 +100,10 @@ std::vector<std::string> write_plan(const std::string& directory,
                                     const PlanResult& plan,
                                     const PlanTask& task,
                                     const FigureFiles& figures) {
-  return write_output_set(directory, plan_outputs(plan, task, figures));
+  OutputSet set = plan_outputs(plan, task, figures);
+  // An earlier validation's files in the directory answer another plan: taken out with the rest.
+  for (const std::string& name : validation_file_names()) set.stale.push_back(name);
+  return write_output_set(directory, std::move(set));
 }
 
 }  // namespace rodshape
