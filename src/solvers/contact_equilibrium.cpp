@@ -466,17 +466,18 @@ bool add_penetrations(const Setup& setup,
   return added;
 }
 
-/// Whether a free tip resting on a plane at an angle has turned to lie on it: the rod rises
+/// The plane a free tip resting on it at an angle has turned to lie on, if it has: the rod rises
 /// towards the tip (g'(L) > 0), so that the nodes behind it would go under.
-bool lays_down(const Setup& setup, const Evaluation& e, Patch& p) {
+std::optional<Eigen::Vector3d> plane_the_tip_lies_on(const Setup& setup,
+                                                     const Evaluation& e,
+                                                     const Patch& p) {
   const RodConfiguration& c = e.configuration;
   const int N = c.nodes() - 1;
   const std::optional<Eigen::Vector3d> plane = plane_under(setup, p.obstacle, N - 1, N, c);
-  if (!plane) return false;
   const Obstacle& o = setup.scene.obstacles[static_cast<std::size_t>(p.obstacle)];
-  if (!(gap_rate(o, node_point(c, N), setup.rod.properties, setup.radius) > 0.0)) return false;
-  p.normal = *plane;
-  return true;
+  if (plane && gap_rate(o, node_point(c, N), setup.rod.properties, setup.radius) > 0.0)
+    return plane;
+  return std::nullopt;
 }
 
 /// One update of the contact set; true when it changed: a reaction that pulls drops its patch (a
@@ -495,9 +496,9 @@ bool update_contact_set(const Setup& setup,
       changed = true;
       continue;
     }
-    if (p.at_tip && lays_down(setup, e, p)) {
+    if (const auto plane = p.at_tip ? plane_the_tip_lies_on(setup, e, p) : std::nullopt) {
       p.point = p.at_tip = false, p.to_tip = true;
-      p.a = L - setup.rod.step();
+      p.a = L - setup.rod.step(), p.normal = *plane;
       changed = true;
     }
     if (!p.point) {

@@ -2,12 +2,11 @@
 // and .friction, scene in equilibrium tasks. Each bad input is one line naming the field.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "rodshape/io/task_reader.hpp"
 #include "rodshape/solvers/contact_equilibrium.hpp"
+#include "support/cli_runner.hpp"
 #include "support/input_error.hpp"
 #include "support/task_text.hpp"
 
@@ -16,10 +15,7 @@ namespace test_contact_fields {
 namespace {
 
 std::string example(const std::string& name) {
-  std::ifstream in(std::string(RODSHAPE_SOURCE_DIR) + "/examples/" + name);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return testing::read_file(std::string(RODSHAPE_SOURCE_DIR) + "/examples/" + name);
 }
 
 const std::string kTable =
